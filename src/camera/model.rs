@@ -1,0 +1,69 @@
+//! The camera's intrinsics, the target object and the meaning of a reading.
+
+use nalgebra::{Point3, Vector3};
+
+/// Why the object is not seen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, thiserror::Error)]
+pub enum NotSeen {
+    /// The object's centre is behind or less than the minimum depth in front of the camera.
+    #[error("the object is behind the camera or too close to it")]
+    TooClose,
+    /// The object's image is cut by the frame's border or lies outside it.
+    #[error("the object's image is not wholly inside the frame")]
+    OutsideFrame,
+}
+
+/// A pinhole camera looking along its frame's +z axis at a sphere (SI units, pixels).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CameraModel {
+    /// Image width (px); default 512.
+    pub width: f64,
+    /// Image height (px); default 512.
+    pub height: f64,
+    /// Focal length (px); default 256 (a 90° field of view).
+    pub focal: f64,
+    /// Radius of the target sphere (m); default 0.02.
+    pub object_radius: f64,
+    /// Height of the camera above the sphere's centre at the target (m); default 0.20.
+    pub standoff: f64,
+    /// The sphere's centre must be at least this far in front of the camera (m); default 0.05.
+    pub min_depth: f64,
+}
+
+impl Default for CameraModel {
+    fn default() -> Self {
+        CameraModel {
+            width: 512.0,
+            height: 512.0,
+            focal: 256.0,
+            object_radius: 0.02,
+            standoff: 0.20,
+            min_depth: 0.05,
+        }
+    }
+}
+
+impl CameraModel {
+    /// The blob area (px²) of the sphere seen on axis from the standoff distance.
+    pub fn reference_area(&self) -> f64 {
+        let sin = self.object_radius / self.standoff;
+        let tan = sin / (1.0 - sin * sin).sqrt();
+        std::f64::consts::PI * self.focal * self.focal * tan * tan
+    }
+
+    /// cz for a blob of `area` px²: 100·(√(A_ref/A) − 1), zero at the reference size.
+    pub fn cz_from_area(&self, area: f64) -> f64 {
+        100.0 * ((self.reference_area() / area).sqrt() - 1.0)
+    }
+
+    /// The blob area (px²) that gives `cz`.
+    pub fn area_from_cz(&self, cz: f64) -> f64 {
+        self.reference_area() / (1.0 + cz / 100.0).powi(2)
+    }
+
+    /// Where the camera centre must be to be at the target: straight above the object's
+    /// centre by the standoff (world, m).
+    pub fn goal_point(&self, object: &Point3<f64>) -> Point3<f64> {
+        object + Vector3::z() * self.standoff
+    }
+}

@@ -1,0 +1,141 @@
+//! Typed values of config entries: how each kind is parsed and written back.
+
+use crate::learn::Method;
+use std::fmt;
+use std::str::FromStr;
+
+/// A value a config entry can hold.
+pub trait ConfigValue: Sized {
+    /// Parses the text after the entry's name; the error says why it is not a value.
+    fn parse_value(raw: &str) -> Result<Self, String>;
+    /// The value as it is written in a config file.
+    fn render(&self) -> String;
+}
+
+fn parse_integer<T: FromStr>(raw: &str) -> Result<T, String> {
+    raw.parse().map_err(|_| {
+        if raw.parse::<f64>().is_ok() {
+            format!("`{raw}` is a real number, but this entry takes an integer")
+        } else {
+            format!("`{raw}` is not an integer in this entry's range")
+        }
+    })
+}
+
+macro_rules! integer_value {
+    ($($t:ty),*) => {$(
+        impl ConfigValue for $t {
+            fn parse_value(raw: &str) -> Result<Self, String> {
+                parse_integer(raw)
+            }
+            fn render(&self) -> String {
+                self.to_string()
+            }
+        }
+    )*};
+}
+integer_value!(usize, u64, i64);
+
+impl ConfigValue for f64 {
+    fn parse_value(raw: &str) -> Result<Self, String> {
+        match raw.parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            _ => Err(format!("`{raw}` is not a finite real number")),
+        }
+    }
+    fn render(&self) -> String {
+        format!("{self:?}")
+    }
+}
+
+macro_rules! named_value {
+    ($($t:ty),*) => {$(
+        impl ConfigValue for $t {
+            fn parse_value(raw: &str) -> Result<Self, String> {
+                raw.parse()
+            }
+            fn render(&self) -> String {
+                self.to_string()
+            }
+        }
+    )*};
+}
+named_value!(Method, SimKind, CameraKind);
+
+/// Which simulator moves the arm.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SimKind {
+    /// Forward kinematics straight from the URDF, no dynamics.
+    Kinematic,
+    /// The URDF as a Rapier multibody with motors and gravity.
+    Dynamic,
+}
+
+/// How the camera produces its reading.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum CameraKind {
+    /// Exact analytic projection of the sphere.
+    Projection,
+    /// Rays through every pixel against the object's collider.
+    Raycast,
+}
+
+macro_rules! choice_names {
+    ($t:ty, $what:literal, $($variant:ident => $name:literal),*) => {
+        impl fmt::Display for $t {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str(match self { $(Self::$variant => $name),* })
+            }
+        }
+        impl FromStr for $t {
+            type Err = String;
+            fn from_str(s: &str) -> Result<Self, String> {
+                match s {
+                    $($name => Ok(Self::$variant),)*
+                    _ => Err(format!(
+                        concat!("unknown ", $what, " `{}` (expected one of {})"),
+                        s,
+                        [$($name),*].join(", ")
+                    )),
+                }
+            }
+        }
+    };
+}
+choice_names!(SimKind, "simulator", Kinematic => "kinematic", Dynamic => "dynamic");
+choice_names!(CameraKind, "camera", Projection => "projection", Raycast => "raycast");
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_real_number_for_an_integer_says_so() {
+        let err = usize::parse_value("2.5").unwrap_err();
+        assert!(err.contains("real number"), "{err}");
+        assert!(usize::parse_value("-3")
+            .unwrap_err()
+            .contains("not an integer"));
+        assert_eq!(i64::parse_value("-3"), Ok(-3));
+        assert_eq!(usize::parse_value("42"), Ok(42));
+    }
+
+    #[test]
+    fn reals_round_trip_and_reject_nan() {
+        for v in [0.05, 1e-5, -200.0, 3.0] {
+            assert_eq!(f64::parse_value(&v.render()), Ok(v));
+        }
+        assert!(f64::parse_value("nan").is_err());
+        assert!(f64::parse_value("inf").is_err());
+    }
+
+    #[test]
+    fn choices_parse_their_names_only() {
+        assert_eq!("dynamic".parse::<SimKind>(), Ok(SimKind::Dynamic));
+        assert_eq!(CameraKind::Raycast.render(), "raycast");
+        assert!("Projection"
+            .parse::<CameraKind>()
+            .unwrap_err()
+            .contains("projection, raycast"));
+    }
+}

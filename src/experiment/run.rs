@@ -1,0 +1,216 @@
+//! A run: the robot from its URDF, a simulator, a camera and a learner put together, the
+//! trial loop driven through every trial and event, and the run folder filled as it goes.
+
+use super::output::DataFiles;
+use super::summary::{RunSummary, StepFigures};
+use super::{
+    allocate_run_folder, peak_rss_kb, resident_kb, CameraKind, Config, Event, RunFolderError,
+    SimKind,
+};
+use crate::camera::{Camera, CameraModel, ProjectionCamera};
+use crate::control::{TrialLoop, TrialSettings};
+use crate::learn::{build_learner, LearnError, LearnerStats};
+use crate::robot::{
+    load_urdf, ArmModel, KinematicSim, MoveSettings, RobotError, Simulator, UrdfError,
+};
+use std::io::{self, Write};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Everything a run needs besides the config's entries.
+#[derive(Debug, Clone)]
+pub struct RunOptions {
+    /// The run's settings (flags already applied).
+    pub config: Config,
+    /// Where the config came from, for the `info` file.
+    pub config_name: String,
+    /// The URDF to load; `None` for the shipped `urdf/oscar6.urdf`.
+    pub urdf: Option<PathBuf>,
+    /// The data folder; runs land in `<data>/<method>/<id>/`.
+    pub data_dir: PathBuf,
+    /// Events given on the command line, on top of the config's.
+    pub events: Vec<Event>,
+}
+
+/// Why a run could not start or go on.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum RunError {
+    /// The URDF is broken or not an OSCAR-6.
+    #[error(transparent)]
+    Urdf(#[from] UrdfError),
+    /// No run folder could be made.
+    #[error(transparent)]
+    Folder(#[from] RunFolderError),
+    /// The learner could not be built or failed.
+    #[error(transparent)]
+    Learner(#[from] LearnError),
+    /// A simulator or camera this build does not have yet.
+    #[error("{0}")]
+    Unavailable(String),
+    /// An event the robot cannot undergo.
+    #[error("event {event}: {source}")]
+    Event {
+        /// The event.
+        event: Event,
+        /// Why it failed.
+        source: RobotError,
+    },
+    /// Writing the run's files failed; what was written before stays.
+    #[error("writing the run's files: {0}")]
+    Io(#[from] io::Error),
+}
+
+/// A finished run: where its files are, and its summary.
+#[derive(Debug, Clone)]
+pub struct RunResult {
+    /// The run folder.
+    pub folder: PathBuf,
+    /// What `summary.json` says.
+    pub summary: RunSummary,
+}
+
+/// Runs every trial of a run and fills its folder.
+pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
+    let config = &options.config;
+    let model = match &options.urdf {
+        Some(path) => load_urdf(path)?,
+        None => ArmModel::oscar6(),
+    };
+    let sim = build_simulator(config, model.clone())?;
+    let camera = build_camera(config)?;
+    let folder = allocate_run_folder(&options.data_dir, config.method.name())?;
+    let mut learner = build_learner(config, &model, Some(&folder))?;
+    let mut events = Event::from_config(config);
+    events.extend(options.events.iter().copied());
+    events.sort_by_key(Event::trial);
+    write_info_header(&folder, options, &events)?;
+
+    let settings = TrialSettings {
+        feedback_steps: config.feedback_steps,
+        min_feedback_steps: config.min_feedback_steps,
+        epsilon: config.min_target_distance / 100.0,
+        minimal_joint_move_deg: config.minimal_joint_move,
+    };
+    let mut trials = TrialLoop::new(sim, camera, settings, config.seed);
+    let mut files = DataFiles::create(&folder)?;
+    let mut figures = StepFigures::new(config.trials);
+    let mut failures = 0;
+    let started = Instant::now();
+    trials.prelearn(learner.as_mut());
+    for trial in 1..=config.trials {
+        for event in events.iter().filter(|e| e.trial() == trial) {
+            event
+                .apply(trials.sim_mut())
+                .map_err(|source| RunError::Event {
+                    event: *event,
+                    source,
+                })?;
+        }
+        if learner.take_relearn_request() {
+            trials.prelearn(learner.as_mut());
+        }
+        let outcome = trials.run_trial(learner.as_mut());
+        failures += usize::from(outcome.failure.is_some());
+        figures.record(trial, &outcome.distances_mm);
+        let stats = learner.stats();
+        files.record_trial(trial, &outcome, &stats)?;
+        if trial % config.depth_info == 0 || trial == config.trials {
+            files.record_depth_info(trial, resident_kb(), &stats)?;
+        }
+    }
+    files.flush()?;
+    let wall_seconds = started.elapsed().as_secs_f64();
+    let stats = learner.stats();
+    let summary = RunSummary {
+        method: config.method.to_string(),
+        sim: config.sim.to_string(),
+        camera: config.camera.to_string(),
+        seed: config.seed,
+        trials: config.trials,
+        wall_seconds,
+        trials_per_second: config.trials as f64 / wall_seconds.max(1e-9),
+        peak_rss_kb: peak_rss_kb(),
+        nodes: stats.nodes,
+        bins: stats.bins,
+        patterns: stats.patterns,
+        failures,
+        window: figures.window(),
+        mean_distance_mm: figures.means(),
+        median_distance_mm: figures.medians(),
+    };
+    write_info_tail(&folder, &summary, &stats)?;
+    let json = serde_json::to_string_pretty(&summary).map_err(io::Error::other)?;
+    std::fs::write(folder.join("summary.json"), json + "\n")?;
+    Ok(RunResult { folder, summary })
+}
+
+fn build_simulator(config: &Config, model: ArmModel) -> Result<Box<dyn Simulator>, RunError> {
+    let settings = MoveSettings::from_degrees(config.robot_speed, config.robot_accel);
+    match config.sim {
+        SimKind::Kinematic => Ok(Box::new(KinematicSim::new(model, settings))),
+        SimKind::Dynamic => Err(RunError::Unavailable(
+            "the dynamic (Rapier) simulator is not available in this build yet; use --sim kinematic".into(),
+        )),
+    }
+}
+
+fn build_camera(config: &Config) -> Result<Box<dyn Camera>, RunError> {
+    match config.camera {
+        CameraKind::Projection => Ok(Box::new(ProjectionCamera::new(CameraModel::default()))),
+        CameraKind::Raycast => Err(RunError::Unavailable(
+            "the raycast camera is not available in this build yet; use --camera projection".into(),
+        )),
+    }
+}
+
+fn host_name() -> String {
+    std::fs::read_to_string("/proc/sys/kernel/hostname")
+        .map(|h| h.trim().to_string())
+        .unwrap_or_else(|_| "unknown".into())
+}
+
+fn write_info_header(folder: &Path, options: &RunOptions, events: &[Event]) -> io::Result<()> {
+    let mut info = std::fs::File::create(folder.join("info"))?;
+    let config = &options.config;
+    writeln!(info, "# eyehand {} run", env!("CARGO_PKG_VERSION"))?;
+    writeln!(info, "host {}", host_name())?;
+    writeln!(info, "config_file {}", options.config_name)?;
+    let urdf = options
+        .urdf
+        .as_ref()
+        .map_or(crate::robot::DEFAULT_URDF_NAME.to_string(), |p| {
+            p.display().to_string()
+        });
+    writeln!(info, "urdf {urdf}")?;
+    for event in events {
+        writeln!(info, "event {event}")?;
+    }
+    writeln!(info, "\n# config")?;
+    info.write_all(config.to_text().as_bytes())
+}
+
+fn write_info_tail(folder: &Path, summary: &RunSummary, stats: &LearnerStats) -> io::Result<()> {
+    let mut info = std::fs::OpenOptions::new()
+        .append(true)
+        .open(folder.join("info"))?;
+    writeln!(info, "\n# result")?;
+    writeln!(info, "wall_seconds {:.3}", summary.wall_seconds)?;
+    writeln!(
+        info,
+        "trials_per_hour {:.0}",
+        summary.trials_per_second * 3600.0
+    )?;
+    writeln!(info, "failures {}", summary.failures)?;
+    writeln!(info, "peak_rss_kb {}", summary.peak_rss_kb)?;
+    writeln!(info, "\n# tree per level: depth nodes bins patterns error")?;
+    for (depth, level) in stats.levels.iter().enumerate() {
+        let error = level.error.map_or("-".to_string(), |e| format!("{e:.6e}"));
+        writeln!(
+            info,
+            "{depth} {} {} {} {error}",
+            level.nodes, level.bins, level.patterns
+        )?;
+    }
+    Ok(())
+}

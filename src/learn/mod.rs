@@ -1,0 +1,64 @@
+//! The learners: everything that maps a camera reading and two joint angles to a joint move.
+//!
+//! Every learner implements [`Learner`]; the trial loop only talks to that trait. A learner
+//! is built by [`build_learner`] from the run's [`Config`](crate::experiment::Config).
+
+mod error;
+mod ik;
+mod method;
+mod stats;
+
+pub use error::LearnError;
+pub use ik::IkLearner;
+pub use method::Method;
+pub use stats::{LearnerStats, LevelStats};
+
+use crate::camera::CameraModel;
+use crate::control::{Observation, Query};
+use crate::experiment::Config;
+use crate::robot::ArmModel;
+use nalgebra::Vector3;
+use std::path::Path;
+
+/// A learner of the eye-hand mapping `Δθ = N(c, θ2, θ3)`.
+///
+/// Angles are in degrees, camera readings in the camera's units (pixels for cx, cy; the
+/// area measure for cz).
+pub trait Learner: std::fmt::Debug {
+    /// The method this learner implements.
+    fn method(&self) -> Method;
+
+    /// The joint move (Δθ1, Δθ2, Δθ3 in degrees) this learner proposes for `query`.
+    /// Must always be finite.
+    fn propose(&mut self, query: &Query) -> Vector3<f64>;
+
+    /// Learns from the observations of one finished trial (or pre-learning move), in the
+    /// order they were made: every pair of poses gives a learning pattern.
+    fn learn(&mut self, path: &[Observation]);
+
+    /// Figures for the run's data files.
+    fn stats(&self) -> LearnerStats;
+
+    /// True once after the learner threw away everything it knew (a root merge): the trial
+    /// loop then repeats pre-learning before the next trial.
+    fn take_relearn_request(&mut self) -> bool {
+        false
+    }
+}
+
+/// Builds the learner the config names. `model` is the nominal robot (for `ik`); a
+/// learner that stores patterns in a file puts it in `run_dir`.
+pub fn build_learner(
+    config: &Config,
+    model: &ArmModel,
+    run_dir: Option<&Path>,
+) -> Result<Box<dyn Learner>, LearnError> {
+    let _ = run_dir;
+    match config.method {
+        Method::Ik => Ok(Box::new(IkLearner::new(
+            model.clone(),
+            CameraModel::default(),
+        ))),
+        other => Err(LearnError::Unavailable(other)),
+    }
+}

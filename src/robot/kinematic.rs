@@ -1,0 +1,127 @@
+//! The kinematic simulator: forward kinematics straight from the URDF, no dynamics. A move
+//! is instant in wall time; its simulated duration follows the trapezoidal profile.
+
+use super::model::{ArmModel, Controlled, Joints};
+use super::motion::{limit_stop_fraction, TrapezoidProfile};
+use super::simulator::{MoveReport, MoveSettings, Simulator};
+use super::RobotError;
+use nalgebra::{Isometry3, Vector3};
+
+/// Bisection steps that find where the wrist angle meets its limit (1e-12 of a move).
+const WRIST_LIMIT_BISECTIONS: usize = 40;
+
+/// The OSCAR-6 moved by forward kinematics alone.
+#[derive(Debug, Clone)]
+pub struct KinematicSim {
+    model: ArmModel,
+    settings: MoveSettings,
+    theta: Controlled,
+    joints: Joints,
+}
+
+impl KinematicSim {
+    /// A simulator of `model`, resting at the pose closest to zero inside the limits.
+    pub fn new(model: ArmModel, settings: MoveSettings) -> KinematicSim {
+        let lower = Vector3::from_fn(|i, _| model.joints()[i].lower);
+        let upper = Vector3::from_fn(|i, _| model.joints()[i].upper);
+        let theta = Controlled::zeros().sup(&lower).inf(&upper);
+        let joints = model.full_pose(&theta);
+        KinematicSim {
+            model,
+            settings,
+            theta,
+            joints,
+        }
+    }
+
+    fn limits(&self) -> (Vector3<f64>, Vector3<f64>) {
+        let joints = self.model.joints();
+        (
+            Vector3::from_fn(|i, _| joints[i].lower),
+            Vector3::from_fn(|i, _| joints[i].upper),
+        )
+    }
+
+    /// The last fraction of the way along `delta` at which the wrist angle is still inside
+    /// its limits, assuming it is at `0` and not at `limit`.
+    fn wrist_stop(&self, delta: &Controlled, limit: f64) -> f64 {
+        let (mut inside, mut outside) = (0.0, limit);
+        for _ in 0..WRIST_LIMIT_BISECTIONS {
+            let middle = 0.5 * (inside + outside);
+            let q = self.model.full_pose(&(self.theta + delta * middle));
+            if self.model.joints()[4].admits(q[4]) {
+                inside = middle;
+            } else {
+                outside = middle;
+            }
+        }
+        inside
+    }
+}
+
+impl Simulator for KinematicSim {
+    fn model(&self) -> &ArmModel {
+        &self.model
+    }
+
+    fn place(&mut self, theta: &Controlled) -> Result<(), RobotError> {
+        self.joints = self.model.check_limits(theta)?;
+        self.theta = *theta;
+        Ok(())
+    }
+
+    fn execute(&mut self, delta: &Controlled) -> MoveReport {
+        let mut report = MoveReport {
+            commanded: *delta,
+            executed: Controlled::zeros(),
+            stopped_by_limit: None,
+            duration: 0.0,
+            settled: true,
+        };
+        if !delta.iter().all(|v| v.is_finite()) {
+            return report;
+        }
+        let (lower, upper) = self.limits();
+        let mut fraction = limit_stop_fraction(&self.theta, delta, &lower, &upper);
+        if fraction < 1.0 {
+            report.stopped_by_limit = (0..3).find(|&i| {
+                let end = self.theta[i] + delta[i] * fraction;
+                (end - lower[i]).abs() < 1e-12 || (end - upper[i]).abs() < 1e-12
+            });
+        }
+        let end = self.model.full_pose(&(self.theta + delta * fraction));
+        if !self.model.joints()[4].admits(end[4]) {
+            fraction = self.wrist_stop(delta, fraction);
+            report.stopped_by_limit = Some(4);
+        }
+        let executed = delta * fraction;
+        self.theta += executed;
+        self.joints = self.model.full_pose(&self.theta);
+        report.executed = executed;
+        report.duration =
+            TrapezoidProfile::new(executed.amax(), self.settings.speed, self.settings.accel)
+                .duration();
+        report
+    }
+
+    fn joints(&self) -> Joints {
+        self.joints
+    }
+
+    fn camera_pose(&self) -> Isometry3<f64> {
+        self.model.camera_pose(&self.joints)
+    }
+
+    fn stretch_link(&mut self, link: usize, delta_m: f64) -> Result<(), RobotError> {
+        self.model.stretch_link(link, delta_m)?;
+        self.joints = self.model.full_pose(&self.theta);
+        Ok(())
+    }
+
+    fn rotate_camera(&mut self, angle: f64) {
+        if angle.is_finite() {
+            self.model.rotate_camera(angle);
+            self.joints = self.model.full_pose(&self.theta);
+        }
+    }
+}

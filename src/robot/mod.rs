@@ -1,0 +1,21 @@
+//! The OSCAR-6 arm: its URDF model and forward kinematics, inverse kinematics for the
+//! camera position, the reach space, moves, and the simulators behind one trait.
+
+mod error;
+mod ik;
+mod joint;
+mod kinematic;
+mod model;
+mod motion;
+mod reach;
+mod simulator;
+mod urdf;
+
+pub use error::{RobotError, UrdfError};
+pub use joint::{LinkBody, RevoluteJoint, Shape};
+pub use kinematic::KinematicSim;
+pub use model::{ArmModel, Controlled, Joints};
+pub use motion::{limit_stop_fraction, TrapezoidProfile};
+pub use reach::ReachSpace;
+pub use simulator::{MoveReport, MoveSettings, Simulator};
+pub use urdf::{load_urdf, parse_urdf, DEFAULT_URDF, DEFAULT_URDF_NAME};

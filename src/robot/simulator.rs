@@ -1,0 +1,67 @@
+//! The simulator interface: what the trial loop asks of any simulated OSCAR-6, kinematic
+//! or dynamic.
+
+use super::model::{ArmModel, Controlled, Joints};
+use super::RobotError;
+use nalgebra::Isometry3;
+
+/// How commanded moves are executed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MoveSettings {
+    /// Top joint speed (rad/s) of the lead joint.
+    pub speed: f64,
+    /// Joint acceleration (rad/s²) of the lead joint.
+    pub accel: f64,
+}
+
+impl MoveSettings {
+    /// Settings from the config's `robot_speed` (°/s) and `robot_accel` (°/s²).
+    pub fn from_degrees(speed_deg: f64, accel_deg: f64) -> MoveSettings {
+        MoveSettings {
+            speed: speed_deg.to_radians(),
+            accel: accel_deg.to_radians(),
+        }
+    }
+}
+
+/// What happened during a commanded move.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MoveReport {
+    /// The commanded change of θ1..θ3 (rad).
+    pub commanded: Controlled,
+    /// The change the joint sensors read after the move (rad).
+    pub executed: Controlled,
+    /// The 0-based joint whose limit stopped the move early, if one did.
+    pub stopped_by_limit: Option<usize>,
+    /// Simulated duration of the move (s), settling included.
+    pub duration: f64,
+    /// False when a dynamic move timed out before the arm settled.
+    pub settled: bool,
+}
+
+/// A simulated OSCAR-6 with a camera in its end-effector.
+pub trait Simulator: std::fmt::Debug {
+    /// The robot as it is now (with any stretched link or turned camera).
+    fn model(&self) -> &ArmModel;
+
+    /// Puts the arm at a controlled pose at once (untimed, as between trials); θ5 keeps the
+    /// camera vertical. Fails when the pose is outside the joint limits.
+    fn place(&mut self, theta: &Controlled) -> Result<(), RobotError>;
+
+    /// Moves θ1..θ3 by `delta` (rad) along a straight line in joint space under the
+    /// trapezoidal profile, stopping at the first joint limit met. Never fails: a
+    /// non-finite command is not executed.
+    fn execute(&mut self, delta: &Controlled) -> MoveReport;
+
+    /// The joint sensors: all six angles (rad).
+    fn joints(&self) -> Joints;
+
+    /// The camera frame's pose in the world.
+    fn camera_pose(&self) -> Isometry3<f64>;
+
+    /// Stretches (positive) or shortens link 1, 2 or 3 by `delta_m` metres.
+    fn stretch_link(&mut self, link: usize, delta_m: f64) -> Result<(), RobotError>;
+
+    /// Turns the camera about its optical axis by `angle` (rad).
+    fn rotate_camera(&mut self, angle: f64);
+}

@@ -46,7 +46,7 @@ impl ProjectionCamera {
 
     fn ellipse(&self, p: &Vector3<f64>) -> Result<Ellipse, NotSeen> {
         let m = &self.model;
-        if !(p.z >= m.min_depth) {
+        if p.z.is_nan() || p.z < m.min_depth {
             return Err(NotSeen::TooClose);
         }
         let distance = p.norm();

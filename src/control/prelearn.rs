@@ -14,14 +14,23 @@ use nalgebra::{Point3, Vector3};
 /// Where the camera is at the end of every pre-learning move (m): mid-radius, mid-height.
 const BASE_GOAL: [f64; 3] = [0.695, 0.0, 0.26];
 /// The offsets (degrees) of the start poses from the base pose.
-const OFFSETS_DEG: [f64; 3] = [10.0, 6.0, 8.0];
+const OFFSETS_DEG: [f64; 3] = [8.0, 5.0, 6.0];
 
-/// The object's centre and the 8 pre-learning moves (start pose, move; rad), or `None`
-/// when the model cannot reach the base pose.
+/// One pre-learning move.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PrelearnMove {
+    /// The pose the move starts from (rad).
+    pub start: Controlled,
+    /// The move (rad).
+    pub delta: Controlled,
+}
+
+/// The object's centre and the 8 pre-learning moves, or `None` when the model cannot
+/// reach the base pose.
 pub fn prelearning_moves(
     model: &ArmModel,
     camera: &CameraModel,
-) -> Option<(Point3<f64>, Vec<(Controlled, Controlled)>)> {
+) -> Option<(Point3<f64>, Vec<PrelearnMove>)> {
     let goal = Point3::from(BASE_GOAL);
     let base = model.solve_camera_position(&goal).ok()?;
     let object = goal - Vector3::z() * camera.standoff;
@@ -29,8 +38,40 @@ pub fn prelearning_moves(
         .map(|corner: usize| {
             let sign = |bit: usize| if corner & (1 << bit) == 0 { -1.0 } else { 1.0 };
             let offset = Controlled::from_fn(|i, _| sign(i) * OFFSETS_DEG[i].to_radians());
-            (base + offset, -offset)
+            PrelearnMove {
+                start: base + offset,
+                delta: -offset,
+            }
         })
         .collect();
     Some((object, moves))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::camera::{Camera, ProjectionCamera};
+
+    #[test]
+    fn every_move_sees_the_object_and_ends_at_the_target() {
+        let model = ArmModel::oscar6();
+        let camera = ProjectionCamera::default();
+        let (object, moves) = prelearning_moves(&model, camera.model()).unwrap();
+        assert_eq!(moves.len(), 8);
+        for m in &moves {
+            let start = model.check_limits(&m.start).unwrap();
+            assert!(camera.read(&model.camera_pose(&start), &object).is_ok());
+            let end = model.full_pose(&(m.start + m.delta));
+            let c = camera.read(&model.camera_pose(&end), &object).unwrap();
+            assert!(c.norm() < 1e-6, "the move ends at the target: {c}");
+        }
+        let spread = moves
+            .iter()
+            .map(|m| m.delta)
+            .fold(Controlled::zeros(), |a, d| a + d.abs());
+        assert!(
+            spread.iter().all(|&s| s > 0.5),
+            "all three joints move: {spread}"
+        );
+    }
 }

@@ -190,14 +190,14 @@ impl TrialLoop {
         else {
             return;
         };
-        for (start, delta) in moves {
-            if self.sim.place(&start).is_err() {
+        for step in moves {
+            if self.sim.place(&step.start).is_err() {
                 continue;
             }
             let Ok(before) = self.observe(&object) else {
                 continue;
             };
-            self.sim.execute(&delta);
+            self.sim.execute(&step.delta);
             let Ok(after) = self.observe(&object) else {
                 continue;
             };

@@ -9,7 +9,7 @@ use std::fmt;
 use std::path::Path;
 
 /// The shipped default config (`configs/lin5.conf`), built into the binary.
-pub const DEFAULT_CONFIG: &str = include_str!("../../configs/lin5.conf");
+const DEFAULT_CONFIG: &str = include_str!("../../configs/lin5.conf");
 /// The name the built-in default config is reported under.
 pub const DEFAULT_CONFIG_NAME: &str = "configs/lin5.conf";
 

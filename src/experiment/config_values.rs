@@ -5,7 +5,7 @@ use std::fmt;
 use std::str::FromStr;
 
 /// A value a config entry can hold.
-pub trait ConfigValue: Sized {
+pub(crate) trait ConfigValue: Sized {
     /// Parses the text after the entry's name; the error says why it is not a value.
     fn parse_value(raw: &str) -> Result<Self, String>;
     /// The value as it is written in a config file.

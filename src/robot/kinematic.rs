@@ -94,8 +94,9 @@ impl Simulator for KinematicSim {
             fraction = self.wrist_stop(delta, fraction);
             report.stopped_by_limit = Some(4);
         }
-        let executed = delta * fraction;
-        self.theta += executed;
+        let before = self.theta;
+        self.theta = (self.theta + delta * fraction).sup(&lower).inf(&upper);
+        let executed = self.theta - before;
         self.joints = self.model.full_pose(&self.theta);
         report.executed = executed;
         report.duration =

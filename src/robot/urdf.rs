@@ -47,19 +47,19 @@ fn serial_chain(robot: &urdf_rs::Robot) -> Result<Vec<&urdf_rs::Joint>, String> 
             }
         }
     }
-    let roots: Vec<_> = robot
+    let mut roots = robot
         .links
         .iter()
-        .filter(|l| !robot.joints.iter().any(|j| j.child.link == l.name))
-        .collect();
-    let [root] = roots.as_slice() else {
-        let names: Vec<_> = roots.iter().map(|l| l.name.as_str()).collect();
-        return Err(format!(
-            "expected one root link, found {}: [{}]",
-            roots.len(),
-            names.join(", ")
-        ));
+        .filter(|l| !robot.joints.iter().any(|j| j.child.link == l.name));
+    let Some(root) = roots.next() else {
+        return Err("no root link: every link is some joint's child".to_string());
     };
+    if let Some(loose) = roots.next() {
+        return Err(format!(
+            "link `{}` is not connected to `{}`: a joint is missing",
+            loose.name, root.name
+        ));
+    }
     let mut chain = Vec::new();
     let mut link = root.name.as_str();
     loop {

@@ -1,0 +1,191 @@
+//! A run's folder: the files DESIGN.md lists, written the same way for the same seed.
+
+use eyehand::experiment::{run, Config, Event, RunOptions, RunResult, ENTRY_NAMES};
+use eyehand::learn::Method;
+use std::path::Path;
+use std::process::Command;
+
+const DATA_FILES: [&str; 9] = [
+    "1step", "2step", "3step", "4step", "5step", "nodes", "bins", "patterns", "abs_err",
+];
+
+fn run_in(data: &Path, method: Method, trials: usize, seed: u64, events: Vec<Event>) -> RunResult {
+    let mut config = Config::default_config();
+    config.method = method;
+    config.trials = trials;
+    config.seed = seed;
+    let options = RunOptions {
+        config,
+        config_name: "test".into(),
+        urdf: None,
+        data_dir: data.to_path_buf(),
+        events,
+    };
+    run(&options).unwrap()
+}
+
+/// A data file without its minutes column.
+fn without_minutes(path: &Path) -> String {
+    let text = std::fs::read_to_string(path).unwrap();
+    text.lines()
+        .map(|l| {
+            let fields: Vec<&str> = l.split(' ').collect();
+            if fields.len() == 3 {
+                fields[..2].join(" ")
+            } else {
+                l.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+#[test]
+fn the_same_seed_gives_the_same_files() {
+    let (a, b, c) = (
+        tempfile::tempdir().unwrap(),
+        tempfile::tempdir().unwrap(),
+        tempfile::tempdir().unwrap(),
+    );
+    let events = vec!["rotate:20:30".parse().unwrap()];
+    let first = run_in(a.path(), Method::Ik, 60, 9, events.clone());
+    let second = run_in(b.path(), Method::Ik, 60, 9, events.clone());
+    let other = run_in(c.path(), Method::Ik, 60, 10, events);
+    for name in DATA_FILES {
+        let one = without_minutes(&first.folder.join(name));
+        assert!(!one.is_empty(), "{name} is written");
+        assert_eq!(one, without_minutes(&second.folder.join(name)), "{name}");
+    }
+    let one = without_minutes(&first.folder.join("1step"));
+    assert_ne!(
+        one,
+        without_minutes(&other.folder.join("1step")),
+        "another seed, other trials"
+    );
+    assert_eq!(
+        first.summary.mean_distance_mm,
+        second.summary.mean_distance_mm
+    );
+}
+
+#[test]
+fn the_run_folder_has_every_file_and_summary_field() {
+    let data = tempfile::tempdir().unwrap();
+    let result = run_in(
+        data.path(),
+        Method::Ik,
+        30,
+        1,
+        vec!["elongate:10:2:10".parse().unwrap()],
+    );
+    assert_eq!(result.folder, data.path().join("ik").join("0"));
+    for name in DATA_FILES.iter().chain(&["mem", "info", "summary.json"]) {
+        assert!(result.folder.join(name).is_file(), "{name}");
+    }
+    let step1 = std::fs::read_to_string(result.folder.join("1step")).unwrap();
+    let trials: Vec<usize> = step1
+        .lines()
+        .map(|l| l.split(' ').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(trials, (1..=30).collect::<Vec<_>>());
+    let mem = std::fs::read_to_string(result.folder.join("mem")).unwrap();
+    assert_eq!(mem.lines().count(), 6, "every depth_info (5) trials");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(result.folder.join("summary.json")).unwrap())
+            .unwrap();
+    for field in [
+        "method",
+        "sim",
+        "camera",
+        "seed",
+        "trials",
+        "wall_seconds",
+        "trials_per_second",
+        "peak_rss_kb",
+        "nodes",
+        "bins",
+        "patterns",
+        "failures",
+        "window",
+        "mean_distance_mm",
+        "median_distance_mm",
+    ] {
+        assert!(json.get(field).is_some(), "summary.json has {field}");
+    }
+    assert_eq!(json["mean_distance_mm"].as_array().unwrap().len(), 5);
+    assert_eq!(json["window"], 3);
+    let info = std::fs::read_to_string(result.folder.join("info")).unwrap();
+    for name in ENTRY_NAMES {
+        assert!(
+            info.lines().any(|l| l.split(' ').next() == Some(name)),
+            "info lists {name}"
+        );
+    }
+    assert!(info.contains("event elongate:10:2:10"));
+    assert!(info.contains("trials_per_hour"));
+    // The link was stretched at trial 10: the fixed model misses from then on.
+    let misses: Vec<f64> = step1
+        .lines()
+        .map(|l| l.split(' ').nth(1).unwrap().parse().unwrap())
+        .collect();
+    assert!(misses[..9].iter().all(|&d| d < 1e-3) && misses[9..].iter().all(|&d| d > 1.0));
+}
+
+#[test]
+fn the_command_line_runs_and_prints_the_folder() {
+    let data = tempfile::tempdir().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .args([
+            "run", "--method", "ik", "--trials", "20", "--seed", "2", "--quiet", "--data",
+        ])
+        .arg(data.path())
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout).trim(),
+        data.path().join("ik").join("0").display().to_string()
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .args([
+            "run", "--method", "ik", "--trials", "5", "--event", "spin:3", "--data",
+        ])
+        .arg(data.path())
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("bad event `spin:3`"));
+}
+
+#[test]
+fn fk_prints_the_camera_centre_as_json() {
+    let out = Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .args(["fk", "--joints", "0,30,100", "--json"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let camera: Vec<f64> = json["camera_cm"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    let (t2, t3) = (30f64.to_radians(), 100f64.to_radians());
+    let x = 60.0 * t2.cos() + 55.0 * (t2 - t3).cos();
+    let z = 55.0 + 60.0 * t2.sin() + 55.0 * (t2 - t3).sin() - 10.0;
+    assert!(
+        (camera[0] - x).abs() < 1e-9 && camera[1].abs() < 1e-9 && (camera[2] - z).abs() < 1e-9,
+        "{camera:?}"
+    );
+    let joints = json["joints_deg"].as_array().unwrap();
+    assert_eq!(joints.len(), 6);
+    assert!(
+        (joints[4].as_f64().unwrap() - 20.0).abs() < 1e-9,
+        "θ5 = 90 + θ2 − θ3"
+    );
+}

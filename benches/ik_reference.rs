@@ -32,6 +32,8 @@ fn main() {
                 .iter()
                 .map(|e| e.parse().expect("a valid event"))
                 .collect(),
+            progress: false,
+            plot: false,
         };
         let summary = run(&options).expect("the run succeeds").summary;
         let cells: Vec<String> = summary

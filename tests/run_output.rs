@@ -20,6 +20,8 @@ fn run_in(data: &Path, method: Method, trials: usize, seed: u64, events: Vec<Eve
         urdf: None,
         data_dir: data.to_path_buf(),
         events,
+        progress: false,
+        plot: false,
     };
     run(&options).unwrap()
 }

@@ -34,6 +34,9 @@ impl ProjectionCamera {
 
     /// The reading of a sphere centre `p` given in the camera frame.
     pub fn read_local(&self, p: &Vector3<f64>) -> Result<Vector3<f64>, NotSeen> {
+        if p.z.is_nan() || p.z < self.model.min_depth {
+            return Err(NotSeen::TooClose);
+        }
         let ellipse = self.ellipse(p)?;
         let (u, v) = ellipse.centre;
         let inside = u.abs() + ellipse.half_width <= 0.5 * self.model.width
@@ -44,12 +47,13 @@ impl ProjectionCamera {
         Ok(Vector3::new(u, v, self.model.cz_from_area(ellipse.area)))
     }
 
+    /// The image of a sphere centred at `p` (camera frame), wherever it is in front.
     fn ellipse(&self, p: &Vector3<f64>) -> Result<Ellipse, NotSeen> {
         let m = &self.model;
-        if p.z.is_nan() || p.z < m.min_depth {
+        let distance = p.norm();
+        if !(p.z > 0.0 && distance > m.object_radius) {
             return Err(NotSeen::TooClose);
         }
-        let distance = p.norm();
         let sin_a = m.object_radius / distance;
         let cos_a = (1.0 - sin_a * sin_a).sqrt();
         let radial = p.x.hypot(p.y);
@@ -82,7 +86,10 @@ impl ProjectionCamera {
         if !(c.iter().all(|v| v.is_finite()) && c.z > -100.0) {
             return None;
         }
-        let depth = m.standoff * (1.0 + c.z / 100.0);
+        // On the axis √(A_ref/A) = tan α_ref / tan α, which gives the distance.
+        let sin_ref = m.object_radius / m.standoff;
+        let tan = sin_ref / (1.0 - sin_ref * sin_ref).sqrt() / (1.0 + c.z / 100.0);
+        let depth = m.object_radius * (1.0 + tan * tan).sqrt() / tan;
         let mut p = Vector3::new(c.x * depth / m.focal, c.y * depth / m.focal, depth);
         let unbounded = |p: &Vector3<f64>| {
             self.ellipse(p)

@@ -14,10 +14,12 @@ pub(crate) trait ConfigValue: Sized {
 
 fn parse_integer<T: FromStr>(raw: &str) -> Result<T, String> {
     raw.parse().map_err(|_| {
-        if raw.parse::<f64>().is_ok() {
+        if raw.parse::<i128>().is_ok() {
+            format!("`{raw}` is not an integer in this entry's range")
+        } else if raw.parse::<f64>().is_ok() {
             format!("`{raw}` is a real number, but this entry takes an integer")
         } else {
-            format!("`{raw}` is not an integer in this entry's range")
+            format!("`{raw}` is not an integer")
         }
     })
 }

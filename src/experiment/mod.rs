@@ -1,15 +1,24 @@
 //! Experiments: the config file, events, the run folder and its data files, and the run
 //! itself (simulator + camera + learner + trial loop).
 
+mod cells;
+mod compare;
 mod config;
 mod config_values;
 mod events;
 mod memory;
 mod output;
+pub mod plot;
+mod progress;
 mod run;
 mod run_folder;
 mod summary;
+mod sweep;
 
+pub use cells::{run_cells, shell_quote, Cell, CellError, CellResult};
+pub use compare::{
+    compare_cells, compare_table, run_compare, CompareError, CompareReport, CompareRequest,
+};
 pub use config::{Config, ConfigError, DEFAULT_CONFIG_NAME, ENTRY_NAMES};
 pub use config_values::{CameraKind, SimKind};
 pub use events::{Event, EventError};
@@ -18,3 +27,4 @@ pub use output::DataFiles;
 pub use run::{run, RunError, RunOptions, RunResult};
 pub use run_folder::{allocate_run_folder, RunFolderError, RUN_IDS};
 pub use summary::{RunSummary, StepFigures};
+pub use sweep::{combinations, parse_seeds, slurm_script, sweep_cells, sweep_table, Setting};

@@ -2,6 +2,8 @@
 //! trial loop driven through every trial and event, and the run folder filled as it goes.
 
 use super::output::DataFiles;
+use super::plot::{plot_run, PlotError};
+use super::progress::RunProgress;
 use super::summary::{RunSummary, StepFigures};
 use super::{
     allocate_run_folder, peak_rss_kb, resident_kb, CameraKind, Config, Event, RunFolderError,
@@ -17,6 +19,9 @@ use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+/// Trials the run's plot is smoothed over.
+const PLOT_SMOOTHING: usize = 50;
+
 /// Everything a run needs besides the config's entries.
 #[derive(Debug, Clone)]
 pub struct RunOptions {
@@ -30,6 +35,10 @@ pub struct RunOptions {
     pub data_dir: PathBuf,
     /// Events given on the command line, on top of the config's.
     pub events: Vec<Event>,
+    /// Show a progress bar (on a terminal, for runs longer than a second).
+    pub progress: bool,
+    /// Draw `plot.png` at the end.
+    pub plot: bool,
 }
 
 /// Why a run could not start or go on.
@@ -59,6 +68,9 @@ pub enum RunError {
     /// Writing the run's files failed; what was written before stays.
     #[error("writing the run's files: {0}")]
     Io(#[from] io::Error),
+    /// The run's plot could not be drawn; its data files are complete.
+    #[error(transparent)]
+    Plot(#[from] PlotError),
 }
 
 /// A finished run: where its files are, and its summary.
@@ -96,6 +108,7 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
     let mut files = DataFiles::create(&folder)?;
     let mut figures = StepFigures::new(config.trials);
     let mut failures = 0;
+    let mut progress = RunProgress::new(config.trials, options.progress);
     let started = Instant::now();
     trials.prelearn(learner.as_mut());
     for trial in 1..=config.trials {
@@ -115,11 +128,13 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
         figures.record(trial, &outcome.distances_mm);
         let stats = learner.stats();
         files.record_trial(trial, &outcome, &stats)?;
+        progress.trial_done(trial, &outcome.distances_mm, stats.nodes);
         if trial % config.depth_info == 0 || trial == config.trials {
             files.record_depth_info(trial, resident_kb(), &stats)?;
         }
     }
     files.flush()?;
+    progress.finish();
     let wall_seconds = started.elapsed().as_secs_f64();
     let stats = learner.stats();
     let summary = RunSummary {
@@ -142,6 +157,9 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
     write_info_tail(&folder, &summary, &stats)?;
     let json = serde_json::to_string_pretty(&summary).map_err(io::Error::other)?;
     std::fs::write(folder.join("summary.json"), json + "\n")?;
+    if options.plot {
+        plot_run(&folder, PLOT_SMOOTHING)?;
+    }
     Ok(RunResult { folder, summary })
 }
 

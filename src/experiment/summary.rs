@@ -1,10 +1,10 @@
 //! The run's `summary.json`, and the distance figures over the last trials it reports.
 
 use crate::control::MAX_RECORDED_STEPS;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// What `summary.json` holds. Field names are a public interface.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RunSummary {
     /// The learning method.
     pub method: String,

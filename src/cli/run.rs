@@ -1,0 +1,104 @@
+//! `eyehand run`.
+
+use super::{bad_input, failed, Failure};
+use crate::experiment::{
+    self, CameraKind, Config, Event, RunError, RunOptions, SimKind, DEFAULT_CONFIG_NAME,
+};
+use crate::learn::Method;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+
+#[derive(Debug, clap::Args)]
+pub(super) struct RunArgs {
+    /// The config file (default: the shipped configs/lin5.conf).
+    #[arg(long)]
+    config: Option<PathBuf>,
+    /// The learning method: lin5, lin8, nnw, ffn, kohonen or ik.
+    #[arg(long)]
+    method: Option<Method>,
+    /// The simulator: kinematic or dynamic.
+    #[arg(long)]
+    sim: Option<SimKind>,
+    /// The camera: projection or raycast.
+    #[arg(long)]
+    camera: Option<CameraKind>,
+    /// Trials to run.
+    #[arg(long)]
+    trials: Option<usize>,
+    /// Seed of every random draw.
+    #[arg(long)]
+    seed: Option<u64>,
+    /// Sets any config entry: NAME=VALUE (repeatable; applied before the flags above).
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    sets: Vec<String>,
+    /// The URDF (default: the shipped urdf/oscar6.urdf).
+    #[arg(long)]
+    urdf: Option<PathBuf>,
+    /// The data folder.
+    #[arg(long, default_value = "data")]
+    data: PathBuf,
+    /// An event: rotate:TRIAL:DEG or elongate:TRIAL:LINK:CM (repeatable).
+    #[arg(long = "event")]
+    events: Vec<Event>,
+    /// Prints only the run folder, no progress bar.
+    #[arg(long)]
+    quiet: bool,
+    /// Does not draw plot.png at the end.
+    #[arg(long)]
+    no_plot: bool,
+}
+
+/// The config file named (or the shipped default) and the name it is reported under.
+pub(super) fn load_config(path: Option<&Path>) -> Result<(Config, String), Failure> {
+    match path {
+        Some(path) => Ok((
+            Config::from_file(path).map_err(bad_input)?,
+            path.display().to_string(),
+        )),
+        None => Ok((Config::default_config(), DEFAULT_CONFIG_NAME.to_string())),
+    }
+}
+
+fn resolve_config(args: &RunArgs) -> Result<(Config, String), Failure> {
+    let (mut config, name) = load_config(args.config.as_deref())?;
+    for set in &args.sets {
+        let (entry, value) = set
+            .split_once('=')
+            .ok_or_else(|| bad_input(format!("--set {set}: expected NAME=VALUE")))?;
+        config
+            .set(entry, value)
+            .map_err(|e| bad_input(format!("--set {set}: {e}")))?;
+    }
+    config.method = args.method.unwrap_or(config.method);
+    config.sim = args.sim.unwrap_or(config.sim);
+    config.camera = args.camera.unwrap_or(config.camera);
+    config.seed = args.seed.unwrap_or(config.seed);
+    if let Some(trials) = args.trials {
+        config
+            .set("trials", &trials.to_string())
+            .map_err(|e| bad_input(format!("--trials: {e}")))?;
+    }
+    Ok((config, name))
+}
+
+pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
+    let (config, config_name) = resolve_config(&args)?;
+    let options = RunOptions {
+        config,
+        config_name,
+        urdf: args.urdf,
+        data_dir: args.data,
+        events: args.events,
+        progress: !args.quiet && std::io::stderr().is_terminal(),
+        plot: !args.no_plot,
+    };
+    let result = experiment::run(&options).map_err(|e| match e {
+        RunError::Urdf(_) | RunError::Unavailable(_) | RunError::Event { .. } => bad_input(e),
+        _ => failed(e),
+    })?;
+    println!("{}", result.folder.display());
+    if !args.quiet {
+        print!("{}", result.summary.one_screen());
+    }
+    Ok(())
+}

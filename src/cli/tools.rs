@@ -1,0 +1,83 @@
+//! `eyehand plot`, `check-config` and `fk`.
+
+use super::{bad_input, failed, Failure};
+use crate::experiment::plot::plot_run;
+use crate::experiment::Config;
+use crate::robot::{load_urdf, ArmModel, Controlled};
+use std::path::PathBuf;
+
+#[derive(Debug, clap::Args)]
+pub(super) struct PlotArgs {
+    /// The run folder (data/<method>/<id>).
+    run_dir: PathBuf,
+    /// Trials each point is smoothed over.
+    #[arg(long, default_value_t = 50)]
+    smooth: usize,
+}
+
+#[derive(Debug, clap::Args)]
+pub(super) struct CheckConfigArgs {
+    /// The config file.
+    file: PathBuf,
+}
+
+#[derive(Debug, clap::Args)]
+pub(super) struct FkArgs {
+    /// θ1,θ2,θ3 in degrees (θ4 = θ6 = 0, θ5 keeps the camera vertical).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_negative_numbers = true,
+        required = true
+    )]
+    joints: Vec<f64>,
+    /// Prints JSON: {"camera_cm": [x, y, z], "joints_deg": [6 values]}.
+    #[arg(long)]
+    json: bool,
+    /// The URDF (default: the shipped urdf/oscar6.urdf).
+    #[arg(long)]
+    urdf: Option<PathBuf>,
+}
+
+pub(super) fn plot(args: PlotArgs) -> Result<(), Failure> {
+    if !args.run_dir.join("1step").is_file() {
+        return Err(bad_input(format!(
+            "{} is not a run folder (no 1step file)",
+            args.run_dir.display()
+        )));
+    }
+    let png = plot_run(&args.run_dir, args.smooth.max(1)).map_err(failed)?;
+    println!("{}", png.display());
+    Ok(())
+}
+
+pub(super) fn check_config(args: CheckConfigArgs) -> Result<(), Failure> {
+    Config::from_file(&args.file).map_err(bad_input)?;
+    println!("{}: ok", args.file.display());
+    Ok(())
+}
+
+pub(super) fn fk(args: FkArgs) -> Result<(), Failure> {
+    let model = match &args.urdf {
+        Some(path) => load_urdf(path).map_err(bad_input)?,
+        None => ArmModel::oscar6(),
+    };
+    let [t1, t2, t3] = args.joints[..] else {
+        return Err(bad_input("--joints takes three angles: t1,t2,t3"));
+    };
+    let q = model.full_pose(&Controlled::new(t1, t2, t3).map(f64::to_radians));
+    let camera = model.camera_position(&q).coords * 100.0;
+    let joints_deg: Vec<f64> = q.iter().map(|v| v.to_degrees()).collect();
+    if args.json {
+        let value = serde_json::json!({ "camera_cm": [camera.x, camera.y, camera.z], "joints_deg": joints_deg });
+        println!("{value}");
+    } else {
+        println!("camera_cm  {:.4} {:.4} {:.4}", camera.x, camera.y, camera.z);
+        let text: Vec<String> = joints_deg.iter().map(|v| format!("{v:.4}")).collect();
+        println!("joints_deg {}", text.join(" "));
+        if let Some(joint) = model.violated_limit(&q) {
+            println!("warning: joint {} is outside its limits", joint + 1);
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,168 @@
+//! Shared drawing: the font, and one line panel (title, axes, smoothed series, event marks).
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::sync::OnceLock;
+
+/// The font every label is drawn with (shipped in assets/fonts, DejaVu Sans).
+const FONT: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
+/// The family name the font is registered under.
+pub(super) const FAMILY: &str = "sans-serif";
+
+/// Registers the shipped font once per process.
+pub(super) fn register_font() -> Result<(), String> {
+    static REGISTERED: OnceLock<bool> = OnceLock::new();
+    let ok = *REGISTERED
+        .get_or_init(|| plotters::style::register_font(FAMILY, FontStyle::Normal, FONT).is_ok());
+    if ok {
+        Ok(())
+    } else {
+        Err("the shipped font assets/fonts/DejaVuSans.ttf is not a valid font".into())
+    }
+}
+
+/// One panel's content.
+#[derive(Debug)]
+pub(super) struct Panel<'a> {
+    /// Title above the panel.
+    pub title: &'a str,
+    /// Y axis label.
+    pub y_label: &'a str,
+    /// Lines to draw.
+    pub lines: Vec<Line<'a>>,
+    /// Log-scaled y axis.
+    pub log_y: bool,
+    /// Trials to mark with a vertical line.
+    pub events: &'a [f64],
+}
+
+/// One line of a panel.
+#[derive(Debug)]
+pub(super) struct Line<'a> {
+    /// (trial, value) points.
+    pub points: &'a [(f64, f64)],
+    /// Its colour.
+    pub colour: RGBColor,
+    /// Its legend label (shown when a panel has several lines).
+    pub label: String,
+}
+
+type Area<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
+
+fn bounds(lines: &[Line<'_>], log_y: bool) -> ((f64, f64), (f64, f64)) {
+    let floor = if log_y { 1e-6 } else { f64::MIN };
+    let points = lines.iter().flat_map(|l| l.points.iter());
+    let (mut x, mut y) = ((f64::MAX, f64::MIN), (f64::MAX, f64::MIN));
+    for &(px, py) in points {
+        let py = py.max(floor);
+        x = (x.0.min(px), x.1.max(px));
+        y = (y.0.min(py), y.1.max(py));
+    }
+    if x.0 > x.1 {
+        return ((0.0, 1.0), if log_y { (1e-3, 1.0) } else { (0.0, 1.0) });
+    }
+    let x = if x.1 > x.0 { x } else { (x.0 - 0.5, x.1 + 0.5) };
+    let y = if log_y {
+        (y.0 / 1.5, (y.1 * 1.5).max(y.0 * 10.0))
+    } else {
+        let pad = ((y.1 - y.0) * 0.05).max(y.1.abs() * 0.05).max(0.5);
+        let low = if y.0 >= 0.0 {
+            (y.0 - pad).max(0.0)
+        } else {
+            y.0 - pad
+        };
+        (low, y.1 + pad)
+    };
+    (x, y)
+}
+
+/// Draws one panel into `area`.
+pub(super) fn draw_panel(area: &Area<'_>, panel: &Panel<'_>) -> Result<(), String> {
+    let ((x0, x1), (y0, y1)) = bounds(&panel.lines, panel.log_y);
+    let mut builder = ChartBuilder::on(area);
+    builder
+        .caption(panel.title, (FAMILY, 18))
+        .margin(8)
+        .x_label_area_size(32)
+        .y_label_area_size(62);
+    let floor = if panel.log_y { 1e-6 } else { f64::MIN };
+    macro_rules! finish {
+        ($chart:expr) => {{
+            let mut chart = $chart.map_err(|e| e.to_string())?;
+            chart
+                .configure_mesh()
+                .x_desc("trial")
+                .y_desc(panel.y_label)
+                .label_style((FAMILY, 12))
+                .x_label_formatter(&|x| format!("{x:.0}"))
+                .y_label_formatter(&|y| compact(*y))
+                .draw()
+                .map_err(|e| e.to_string())?;
+            for &trial in panel.events {
+                chart
+                    .draw_series(LineSeries::new(
+                        [(trial, y0), (trial, y1)],
+                        RED.stroke_width(1),
+                    ))
+                    .map_err(|e| e.to_string())?;
+            }
+            let many = panel.lines.len() > 1;
+            for line in &panel.lines {
+                let colour = line.colour;
+                let points = line.points.iter().map(|&(x, y)| (x, y.max(floor)));
+                let series = chart
+                    .draw_series(LineSeries::new(points, colour.stroke_width(2)))
+                    .map_err(|e| e.to_string())?;
+                if many {
+                    series
+                        .label(line.label.as_str())
+                        .legend(move |(x, y)| PathElement::new([(x, y), (x + 16, y)], colour));
+                }
+            }
+            if many {
+                chart
+                    .configure_series_labels()
+                    .label_font((FAMILY, 13))
+                    .background_style(WHITE.mix(0.8))
+                    .border_style(BLACK)
+                    .draw()
+                    .map_err(|e| e.to_string())?;
+            }
+        }};
+    }
+    if panel.log_y {
+        finish!(builder.build_cartesian_2d(x0..x1, (y0..y1).log_scale()));
+    } else {
+        finish!(builder.build_cartesian_2d(x0..x1, y0..y1));
+    }
+    Ok(())
+}
+
+/// A short axis label: plain for ordinary magnitudes, `1e-5` style for tiny or huge ones.
+fn compact(v: f64) -> String {
+    let a = v.abs();
+    if a == 0.0 {
+        "0".into()
+    } else if !(1e-3..1e6).contains(&a) {
+        let exponent = a.log10().floor();
+        let mantissa = v / 10f64.powf(exponent);
+        if (mantissa.abs() - 1.0).abs() < 1e-6 {
+            format!("1e{exponent:.0}")
+        } else {
+            format!("{mantissa:.1}e{exponent:.0}")
+        }
+    } else {
+        let text = format!("{v:.3}");
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    }
+}
+
+/// The palette lines are drawn in, one colour per series.
+pub(super) const PALETTE: [RGBColor; 6] = [
+    RGBColor(31, 119, 180),
+    RGBColor(255, 127, 14),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+    RGBColor(23, 190, 207),
+];

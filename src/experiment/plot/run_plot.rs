@@ -1,0 +1,93 @@
+//! One PNG per run with the panels of the study's result figures: distance after feedback
+//! steps 1..5 (log axis, mm), nodes, bins, memory, patterns and time used, each against
+//! trials and smoothed, with the run's events marked.
+
+use super::canvas::{draw_panel, register_font, Line, Panel, PALETTE};
+use super::series::{event_trials, Series};
+use super::PlotError;
+use plotters::prelude::*;
+use std::path::{Path, PathBuf};
+
+/// Width and height of a run's plot (px).
+pub const PLOT_SIZE: (u32, u32) = (1400, 1800);
+/// Panels of a run's plot, in reading order (5 rows of 2).
+pub const PANELS: [&str; 10] = [
+    "distance after step 1",
+    "distance after step 2",
+    "distance after step 3",
+    "distance after step 4",
+    "distance after step 5",
+    "nodes",
+    "bins",
+    "memory",
+    "patterns",
+    "time used",
+];
+
+/// Draws `<run_dir>/plot.png` from the run's data files, smoothing over `smooth` trials.
+pub fn plot_run(run_dir: &Path, smooth: usize) -> Result<PathBuf, PlotError> {
+    let read = |name: &str| {
+        let path = run_dir.join(name);
+        Series::read(&path).map_err(|source| PlotError::Read { path, source })
+    };
+    let info = std::fs::read_to_string(run_dir.join("info")).unwrap_or_default();
+    let events = event_trials(&info);
+    let steps: Vec<Series> = (1..=5)
+        .map(|s| read(&format!("{s}step")))
+        .collect::<Result<_, _>>()?;
+    let (nodes, bins, mem, patterns) = (
+        read("nodes")?,
+        read("bins")?,
+        read("mem")?,
+        read("patterns")?,
+    );
+    let mut lines: Vec<PanelLine> = steps
+        .iter()
+        .enumerate()
+        .map(|(i, s)| (PANELS[i].to_string(), "mm", s.smoothed(smooth), true))
+        .collect();
+    lines.push((PANELS[5].into(), "nodes", nodes.points.clone(), false));
+    lines.push((PANELS[6].into(), "bins", bins.points.clone(), false));
+    lines.push((PANELS[7].into(), "kB", mem.points.clone(), false));
+    lines.push((PANELS[8].into(), "patterns", patterns.points.clone(), false));
+    lines.push((PANELS[9].into(), "minutes", nodes.minutes.clone(), false));
+
+    let out = run_dir.join("plot.png");
+    let draw_error = |reason: String| PlotError::Draw {
+        path: out.clone(),
+        reason,
+    };
+    register_font().map_err(draw_error)?;
+    draw_panels(&out, &title_of(run_dir, smooth), &lines, &events).map_err(draw_error)?;
+    Ok(out)
+}
+
+fn title_of(run_dir: &Path, smooth: usize) -> String {
+    format!("{} (smoothed over {smooth} trials)", run_dir.display())
+}
+
+/// A panel's title, y label, points and whether its y axis is logarithmic.
+type PanelLine = (String, &'static str, Vec<(f64, f64)>, bool);
+
+fn draw_panels(out: &Path, title: &str, lines: &[PanelLine], events: &[f64]) -> Result<(), String> {
+    let root = BitMapBackend::new(out, PLOT_SIZE).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| e.to_string())?;
+    let root = root
+        .titled(title, (super::canvas::FAMILY, 22))
+        .map_err(|e| e.to_string())?;
+    for (area, (name, unit, points, log_y)) in root.split_evenly((5, 2)).iter().zip(lines) {
+        let panel = Panel {
+            title: name,
+            y_label: unit,
+            lines: vec![Line {
+                points,
+                colour: PALETTE[0],
+                label: name.clone(),
+            }],
+            log_y: *log_y,
+            events,
+        };
+        draw_panel(area, &panel)?;
+    }
+    root.present().map_err(|e| e.to_string())
+}

@@ -1,0 +1,88 @@
+//! Reading a run's data files back as series, and smoothing them as the study's figures do
+//! (a moving average over a number of points).
+
+use std::io;
+use std::path::Path;
+
+/// One data file: (trial, value) points and the minutes used at each.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Series {
+    /// (trial, value) points in file order.
+    pub points: Vec<(f64, f64)>,
+    /// (trial, minutes used) points in file order.
+    pub minutes: Vec<(f64, f64)>,
+}
+
+impl Series {
+    /// Reads a `trial value minutes` file; a missing file is an empty series.
+    pub fn read(path: &Path) -> io::Result<Series> {
+        let text = match std::fs::read_to_string(path) {
+            Ok(text) => text,
+            Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Series::default()),
+            Err(e) => return Err(e),
+        };
+        let mut series = Series::default();
+        for line in text.lines() {
+            let fields: Vec<f64> = line
+                .split_whitespace()
+                .filter_map(|f| f.parse().ok())
+                .collect();
+            if let [trial, value, minutes] = fields[..] {
+                series.points.push((trial, value));
+                series.minutes.push((trial, minutes));
+            }
+        }
+        Ok(series)
+    }
+
+    /// The points smoothed by a centred moving average over `window` points.
+    pub fn smoothed(&self, window: usize) -> Vec<(f64, f64)> {
+        moving_average(&self.points, window)
+    }
+}
+
+/// A centred moving average over `window` points (shorter at the ends).
+pub fn moving_average(points: &[(f64, f64)], window: usize) -> Vec<(f64, f64)> {
+    let half = window.max(1) / 2;
+    let mut prefix = Vec::with_capacity(points.len() + 1);
+    prefix.push(0.0);
+    for (_, v) in points {
+        prefix.push(prefix[prefix.len() - 1] + v);
+    }
+    (0..points.len())
+        .map(|i| {
+            let (lo, hi) = (i.saturating_sub(half), (i + half + 1).min(points.len()));
+            (points[i].0, (prefix[hi] - prefix[lo]) / (hi - lo) as f64)
+        })
+        .collect()
+}
+
+/// The trials at which the run's events happened, from its `info` file.
+pub fn event_trials(info: &str) -> Vec<f64> {
+    info.lines()
+        .filter_map(|l| l.strip_prefix("event "))
+        .filter_map(|e| e.split(':').nth(1)?.parse().ok())
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_moving_average_is_centred_and_shrinks_at_the_ends() {
+        let points: Vec<_> = (0..5).map(|i| (i as f64, i as f64 * 2.0)).collect();
+        let smooth = moving_average(&points, 3);
+        assert_eq!(
+            smooth,
+            vec![(0.0, 1.0), (1.0, 2.0), (2.0, 4.0), (3.0, 6.0), (4.0, 7.0)]
+        );
+        assert_eq!(moving_average(&points, 1), points);
+    }
+
+    #[test]
+    fn events_are_read_from_info() {
+        let info = "host x\nevent rotate:1500:90\nevent elongate:20:2:-10\nseed 1\n";
+        assert_eq!(event_trials(info), vec![1500.0, 20.0]);
+    }
+}

@@ -1,0 +1,68 @@
+//! The progress bar of a run (indicatif): trials done, trials per second, the current
+//! 4-step mean and the learner's size. It appears once a run has taken a second, only when
+//! stderr is a terminal, and never with `--quiet`.
+
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use std::time::{Duration, Instant};
+
+/// Trials the "current" 4-step mean is taken over.
+const RECENT: usize = 100;
+const SHOW_AFTER: Duration = Duration::from_secs(1);
+
+/// A run's progress bar.
+#[derive(Debug)]
+pub(super) struct RunProgress {
+    bar: ProgressBar,
+    enabled: bool,
+    shown: bool,
+    started: Instant,
+    recent: [f64; RECENT],
+    recent_count: usize,
+}
+
+impl RunProgress {
+    /// A bar for `trials` trials; `enabled` false keeps it hidden for good.
+    pub(super) fn new(trials: usize, enabled: bool) -> RunProgress {
+        let bar = ProgressBar::with_draw_target(Some(trials as u64), ProgressDrawTarget::hidden());
+        let style = ProgressStyle::with_template(
+            "{bar:30} {pos}/{len} trials  {per_sec}  {msg}  eta {eta}",
+        )
+        .unwrap_or_else(|_| ProgressStyle::default_bar());
+        bar.set_style(style);
+        RunProgress {
+            bar,
+            enabled,
+            shown: false,
+            started: Instant::now(),
+            recent: [0.0; RECENT],
+            recent_count: 0,
+        }
+    }
+
+    /// Notes a finished trial: its distances after each step and the learner's nodes.
+    pub(super) fn trial_done(&mut self, trial: usize, distances_mm: &[f64], nodes: usize) {
+        if let Some(&four) = distances_mm.get(3) {
+            self.recent[self.recent_count % RECENT] = four;
+            self.recent_count += 1;
+        }
+        if !self.enabled {
+            return;
+        }
+        if !self.shown && self.started.elapsed() >= SHOW_AFTER {
+            self.bar.set_draw_target(ProgressDrawTarget::stderr());
+            self.shown = true;
+        }
+        self.bar.set_position(trial as u64);
+        if trial % RECENT == 0 {
+            let n = self.recent_count.min(RECENT);
+            let mean = self.recent[..n].iter().sum::<f64>() / n.max(1) as f64;
+            self.bar
+                .set_message(format!("4-step {mean:.4} mm  {nodes} nodes"));
+        }
+    }
+
+    /// Removes the bar.
+    pub(super) fn finish(&self) {
+        self.bar.finish_and_clear();
+    }
+}

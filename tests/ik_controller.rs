@@ -28,7 +28,7 @@ fn trial_loop(seed: u64) -> TrialLoop {
 fn first_steps(trials: &mut TrialLoop, learner: &mut dyn Learner, n: usize) -> Vec<f64> {
     (0..n)
         .map(|_| {
-            let outcome = trials.run_trial(learner);
+            let outcome = trials.run_trial(learner).unwrap();
             assert_eq!(outcome.failure, None);
             outcome.distances_mm[0]
         })
@@ -66,7 +66,14 @@ fn ik_misses_after_the_camera_is_turned() {
     trials.sim_mut().rotate_camera(30f64.to_radians());
     let mut ik = IkLearner::new(ArmModel::oscar6(), CameraModel::default());
     let distances: Vec<f64> = (0..300)
-        .filter_map(|_| trials.run_trial(&mut ik).distances_mm.first().copied())
+        .filter_map(|_| {
+            trials
+                .run_trial(&mut ik)
+                .unwrap()
+                .distances_mm
+                .first()
+                .copied()
+        })
         .collect();
     let mean = distances.iter().sum::<f64>() / distances.len() as f64;
     println!("after a 30° camera turn: mean first-step distance {mean:.2} mm");

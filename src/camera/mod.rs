@@ -3,9 +3,11 @@
 
 mod model;
 mod projection;
+mod raycast;
 
 pub use model::{CameraModel, NotSeen};
 pub use projection::ProjectionCamera;
+pub use raycast::RaycastCamera;
 
 use nalgebra::{Isometry3, Point3, Vector3};
 

@@ -5,7 +5,7 @@
 
 use super::Observation;
 use crate::camera::{Camera, NotSeen};
-use crate::learn::Learner;
+use crate::learn::{LearnError, Learner};
 use crate::robot::{ReachSpace, Simulator};
 use crate::units::MM_PER_M;
 use nalgebra::{Point3, Vector3};
@@ -96,8 +96,9 @@ impl TrialLoop {
         self.camera.as_ref()
     }
 
-    /// Runs one trial with `learner` and lets it learn from the trial's poses.
-    pub fn run_trial(&mut self, learner: &mut dyn Learner) -> TrialOutcome {
+    /// Runs one trial with `learner` and lets it learn from the trial's poses; fails only
+    /// when the learner cannot learn (its pattern storage failed).
+    pub fn run_trial(&mut self, learner: &mut dyn Learner) -> Result<TrialOutcome, LearnError> {
         let mut outcome = TrialOutcome {
             distances_mm: Vec::with_capacity(self.settings.feedback_steps),
             failure: None,
@@ -106,7 +107,7 @@ impl TrialLoop {
             Ok(object) => object,
             Err(failure) => {
                 outcome.failure = Some(failure);
-                return outcome;
+                return Ok(outcome);
             }
         };
         self.path.clear();
@@ -114,7 +115,7 @@ impl TrialLoop {
             Ok(start) => self.path.push(start),
             Err(failure) => {
                 outcome.failure = Some(failure);
-                return outcome;
+                return Ok(outcome);
             }
         }
         let goal = self.camera.model().goal_point(&object);
@@ -139,8 +140,8 @@ impl TrialLoop {
                 break;
             }
         }
-        learner.learn(&self.path);
-        outcome
+        learner.learn(&self.path)?;
+        Ok(outcome)
     }
 
     /// What the sensors and camera give at the current pose.
@@ -185,10 +186,10 @@ impl TrialLoop {
 
     /// Pre-learning: the fixed moves of [`prelearning_moves`](super::prelearning_moves), each
     /// executed by the simulator and learned like a trial.
-    pub fn prelearn(&mut self, learner: &mut dyn Learner) {
+    pub fn prelearn(&mut self, learner: &mut dyn Learner) -> Result<(), LearnError> {
         let Some((object, moves)) = super::prelearning_moves(self.sim.model(), self.camera.model())
         else {
-            return;
+            return Ok(());
         };
         for step in moves {
             if self.sim.place(&step.start).is_err() {
@@ -201,7 +202,8 @@ impl TrialLoop {
             let Ok(after) = self.observe(&object) else {
                 continue;
             };
-            learner.learn(&[before, after]);
+            learner.learn(&[before, after])?;
         }
+        Ok(())
     }
 }

@@ -5,6 +5,7 @@
 
 use super::config_values::{CameraKind, ConfigValue, SimKind};
 use crate::learn::Method;
+use crate::robot::{DynamicSettings, MoveSettings};
 use std::fmt;
 use std::path::Path;
 
@@ -193,6 +194,24 @@ config_entries! {
     robot_speed: f64,
     /// Joint acceleration of a move (degrees per second²).
     robot_accel: f64,
+    /// Dynamic simulator: physics and servo time step (seconds).
+    dt: f64,
+    /// Dynamic simulator: constraint solver iterations per step.
+    solver_iterations: usize,
+    /// Dynamic simulator: joint servo position gain (1/s², scaled by the joint's inertia).
+    motor_stiffness: f64,
+    /// Dynamic simulator: joint servo velocity gain (1/s, scaled by the joint's inertia).
+    motor_damping: f64,
+    /// Dynamic simulator: a move has settled once every joint is this close to its
+    /// set-point (degrees) …
+    settle_position_tol: f64,
+    /// … and turns slower than this (degrees per second).
+    settle_speed_tol: f64,
+    /// Dynamic simulator: simulated seconds a move may take to settle before it is
+    /// reported as not settled.
+    settle_timeout: f64,
+    /// Raycast camera: rays per image side (the 512×512 image is sampled N×N).
+    raycast_resolution: usize,
     /// Known patterns trained per 100 regular patterns.
     known_pattern_perc: f64,
     /// Learning patterns each bin keeps.
@@ -275,6 +294,21 @@ impl Config {
             .iter()
             .map(|(n, v)| format!("{n} {v}\n"))
             .collect()
+    }
+
+    /// The dynamic simulator's settings (SI units) from `robot_speed`, `robot_accel`, `dt`,
+    /// `solver_iterations`, the motor gains and the settling entries.
+    pub fn dynamic_settings(&self) -> DynamicSettings {
+        DynamicSettings {
+            moves: MoveSettings::from_degrees(self.robot_speed, self.robot_accel),
+            dt: self.dt,
+            solver_iterations: self.solver_iterations,
+            motor_stiffness: self.motor_stiffness,
+            motor_damping: self.motor_damping,
+            settle_position_tol: self.settle_position_tol.to_radians(),
+            settle_speed_tol: self.settle_speed_tol.to_radians(),
+            settle_timeout: self.settle_timeout,
+        }
     }
 
     /// Input boundaries (low, high) of dimension `i` (0–7).
@@ -365,6 +399,46 @@ impl Config {
         check(self.depth_info >= 1, "depth_info", "must be at least 1")?;
         check(self.robot_speed > 0.0, "robot_speed", "must be positive")?;
         check(self.robot_accel > 0.0, "robot_accel", "must be positive")?;
+        check(
+            self.dt > 0.0 && self.dt <= 0.1,
+            "dt",
+            "must be in (0, 0.1] seconds",
+        )?;
+        check(
+            (1..=100).contains(&self.solver_iterations),
+            "solver_iterations",
+            "must be 1 to 100",
+        )?;
+        check(
+            self.motor_stiffness > 0.0,
+            "motor_stiffness",
+            "must be positive",
+        )?;
+        check(
+            self.motor_damping > 0.0,
+            "motor_damping",
+            "must be positive",
+        )?;
+        check(
+            self.settle_position_tol > 0.0,
+            "settle_position_tol",
+            "must be positive",
+        )?;
+        check(
+            self.settle_speed_tol > 0.0,
+            "settle_speed_tol",
+            "must be positive",
+        )?;
+        check(
+            self.settle_timeout >= self.dt,
+            "settle_timeout",
+            "must be at least one time step (dt)",
+        )?;
+        check(
+            (16..=4096).contains(&self.raycast_resolution),
+            "raycast_resolution",
+            "must be 16 to 4096",
+        )?;
         check(
             (0.0..=1000.0).contains(&self.known_pattern_perc),
             "known_pattern_perc",

@@ -9,11 +9,11 @@ use super::{
     allocate_run_folder, peak_rss_kb, resident_kb, CameraKind, Config, Event, RunFolderError,
     SimKind,
 };
-use crate::camera::{Camera, CameraModel, ProjectionCamera};
+use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
 use crate::control::{TrialLoop, TrialSettings};
 use crate::learn::{build_learner, LearnError, LearnerStats};
 use crate::robot::{
-    load_urdf, ArmModel, KinematicSim, MoveSettings, RobotError, Simulator, UrdfError,
+    load_urdf, ArmModel, DynamicSim, KinematicSim, MoveSettings, RobotError, Simulator, UrdfError,
 };
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -110,7 +110,7 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
     let mut failures = 0;
     let mut progress = RunProgress::new(config.trials, options.progress);
     let started = Instant::now();
-    trials.prelearn(learner.as_mut());
+    trials.prelearn(learner.as_mut())?;
     for trial in 1..=config.trials {
         for event in events.iter().filter(|e| e.trial() == trial) {
             event
@@ -121,9 +121,9 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
                 })?;
         }
         if learner.take_relearn_request() {
-            trials.prelearn(learner.as_mut());
+            trials.prelearn(learner.as_mut())?;
         }
-        let outcome = trials.run_trial(learner.as_mut());
+        let outcome = trials.run_trial(learner.as_mut())?;
         failures += usize::from(outcome.failure.is_some());
         figures.record(trial, &outcome.distances_mm);
         let stats = learner.stats();
@@ -164,21 +164,23 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
 }
 
 fn build_simulator(config: &Config, model: ArmModel) -> Result<Box<dyn Simulator>, RunError> {
-    let settings = MoveSettings::from_degrees(config.robot_speed, config.robot_accel);
     match config.sim {
-        SimKind::Kinematic => Ok(Box::new(KinematicSim::new(model, settings))),
-        SimKind::Dynamic => Err(RunError::Unavailable(
-            "the dynamic (Rapier) simulator is not available in this build yet; use --sim kinematic".into(),
-        )),
+        SimKind::Kinematic => Ok(Box::new(KinematicSim::new(
+            model,
+            MoveSettings::from_degrees(config.robot_speed, config.robot_accel),
+        ))),
+        SimKind::Dynamic => Ok(Box::new(DynamicSim::new(model, config.dynamic_settings()))),
     }
 }
 
 fn build_camera(config: &Config) -> Result<Box<dyn Camera>, RunError> {
+    let model = CameraModel::default();
     match config.camera {
-        CameraKind::Projection => Ok(Box::new(ProjectionCamera::new(CameraModel::default()))),
-        CameraKind::Raycast => Err(RunError::Unavailable(
-            "the raycast camera is not available in this build yet; use --camera projection".into(),
-        )),
+        CameraKind::Projection => Ok(Box::new(ProjectionCamera::new(model))),
+        CameraKind::Raycast => Ok(Box::new(RaycastCamera::new(
+            model,
+            config.raycast_resolution,
+        ))),
     }
 }
 

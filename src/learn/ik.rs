@@ -4,7 +4,7 @@
 //! ceiling while the robot is as modelled, and shows what a fixed model does once a link is
 //! stretched or the camera turned.
 
-use super::{Learner, LearnerStats, Method};
+use super::{LearnError, Learner, LearnerStats, Method};
 use crate::camera::{Camera, CameraModel, ProjectionCamera};
 use crate::control::{Observation, Query};
 use crate::robot::{ArmModel, Controlled};
@@ -53,7 +53,9 @@ impl Learner for IkLearner {
             .unwrap_or_else(Vector3::zeros)
     }
 
-    fn learn(&mut self, _path: &[Observation]) {}
+    fn learn(&mut self, _path: &[Observation]) -> Result<(), LearnError> {
+        Ok(())
+    }
 
     fn stats(&self) -> LearnerStats {
         LearnerStats::default()

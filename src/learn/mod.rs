@@ -3,13 +3,23 @@
 //! Every learner implements [`Learner`]; the trial loop only talks to that trait. A learner
 //! is built by [`build_learner`] from the run's [`Config`](crate::experiment::Config).
 
+pub mod change;
 mod error;
+mod ffn;
 mod ik;
+mod kohonen;
+mod lin5;
 mod method;
+pub mod net;
+mod perceptron;
 mod stats;
+mod tree;
 
 pub use error::LearnError;
+pub use ffn::{FfnLearner, FfnSettings};
 pub use ik::IkLearner;
+pub use kohonen::{KohonenLearner, KohonenSettings, Lattice, Neighbourhood};
+pub use lin5::Lin5;
 pub use method::Method;
 pub use stats::{LearnerStats, LevelStats};
 
@@ -33,8 +43,9 @@ pub trait Learner: std::fmt::Debug {
     fn propose(&mut self, query: &Query) -> Vector3<f64>;
 
     /// Learns from the observations of one finished trial (or pre-learning move), in the
-    /// order they were made: every pair of poses gives a learning pattern.
-    fn learn(&mut self, path: &[Observation]);
+    /// order they were made: every pair of poses gives a learning pattern. Fails only when
+    /// the learner's storage (a pattern file) fails; the run then stops with what it wrote.
+    fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError>;
 
     /// Figures for the run's data files.
     fn stats(&self) -> LearnerStats;
@@ -53,12 +64,44 @@ pub fn build_learner(
     model: &ArmModel,
     run_dir: Option<&Path>,
 ) -> Result<Box<dyn Learner>, LearnError> {
-    let _ = run_dir;
     match config.method {
+        Method::Lin5 => {
+            let pat_file = run_dir
+                .filter(|_| config.use_pat_file == 0)
+                .map(|dir| dir.join("pat_file"));
+            Ok(Box::new(Lin5::new(config, pat_file)?))
+        }
         Method::Ik => Ok(Box::new(IkLearner::new(
             model.clone(),
             CameraModel::default(),
         ))),
+        Method::Ffn => {
+            let settings = FfnSettings {
+                wrange: config.wrange,
+                minimal_joint_move: config.minimal_joint_move,
+                ..FfnSettings::default()
+            };
+            Ok(Box::new(FfnLearner::new(
+                settings,
+                input_bounds(config),
+                config.seed,
+            )))
+        }
+        Method::Kohonen => {
+            let settings = KohonenSettings {
+                minimal_joint_move: config.minimal_joint_move,
+                ..KohonenSettings::default()
+            };
+            Ok(Box::new(KohonenLearner::new(
+                settings,
+                input_bounds(config),
+            )))
+        }
         other => Err(LearnError::Unavailable(other)),
     }
+}
+
+/// The config's boundaries of the five inputs (θ2, θ3, cx, cy, cz).
+fn input_bounds(config: &Config) -> [(f64, f64); 5] {
+    std::array::from_fn(|i| config.boundary(i))
 }

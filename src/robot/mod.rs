@@ -1,6 +1,7 @@
 //! The OSCAR-6 arm: its URDF model and forward kinematics, inverse kinematics for the
 //! camera position, the reach space, moves, and the simulators behind one trait.
 
+mod dynamic;
 mod error;
 mod ik;
 mod joint;
@@ -11,6 +12,7 @@ mod reach;
 mod simulator;
 mod urdf;
 
+pub use dynamic::{DynamicSettings, DynamicSim, SimCounters};
 pub use error::{RobotError, UrdfError};
 pub use joint::{LinkBody, RevoluteJoint, Shape};
 pub use kinematic::KinematicSim;

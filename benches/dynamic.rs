@@ -1,0 +1,176 @@
+//! The dynamic (Rapier) simulator against the kinematic one, seed 1, configs/lin5.conf:
+//! `ik` (what the servos and settling cost in precision) and `lin5` over 5,000 trials —
+//! mean distance after feedback steps 1..5 over the last tenth of the trials, trials per
+//! second, physics steps per trial, settle time-outs — then where a dynamic trial's time
+//! goes.
+//! Prints markdown tables.
+//!
+//! `cargo bench --bench dynamic`
+
+use eyehand::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
+use eyehand::control::{TrialLoop, TrialSettings};
+use eyehand::experiment::{Config, SimKind, StepFigures};
+use eyehand::learn::{build_learner, Method};
+use eyehand::robot::{ArmModel, Controlled, DynamicSettings, DynamicSim, KinematicSim, Simulator};
+use nalgebra::{Point3, Vector3};
+use std::time::Instant;
+
+const SEED: u64 = 1;
+const IK_TRIALS: usize = 1_000;
+const LIN5_TRIALS: usize = 5_000;
+
+/// One run's figures.
+struct Row {
+    trials_per_second: f64,
+    means: Vec<String>,
+    steps_per_trial: Option<f64>,
+    timeouts: Option<u64>,
+    failures: usize,
+    window: usize,
+}
+
+fn trials(method: Method, sim: SimKind, count: usize) -> Row {
+    let mut config = Config::default_config();
+    config.method = method;
+    config.trials = count;
+    config.seed = SEED;
+    let model = ArmModel::oscar6();
+    let (simulator, counters): (Box<dyn Simulator>, _) = match sim {
+        SimKind::Kinematic => (
+            Box::new(KinematicSim::new(
+                model.clone(),
+                config.dynamic_settings().moves,
+            )),
+            None,
+        ),
+        SimKind::Dynamic => {
+            let dynamic = DynamicSim::new(model.clone(), config.dynamic_settings());
+            let counters = dynamic.counters();
+            (Box::new(dynamic), Some(counters))
+        }
+    };
+    let settings = TrialSettings {
+        feedback_steps: config.feedback_steps,
+        min_feedback_steps: config.min_feedback_steps,
+        epsilon: config.min_target_distance / 100.0,
+        minimal_joint_move_deg: config.minimal_joint_move,
+    };
+    let camera = Box::new(ProjectionCamera::new(CameraModel::default()));
+    let mut learner = build_learner(&config, &model, None).expect("the learner builds");
+    let mut loop_ = TrialLoop::new(simulator, camera, settings, SEED);
+    let mut figures = StepFigures::new(count);
+    let mut failures = 0;
+    let started = Instant::now();
+    loop_.prelearn(learner.as_mut()).expect("pre-learning");
+    let before = counters.as_ref().map_or(0, |c| c.steps());
+    for trial in 1..=count {
+        let outcome = loop_.run_trial(learner.as_mut()).expect("a trial");
+        failures += usize::from(outcome.failure.is_some());
+        figures.record(trial, &outcome.distances_mm);
+    }
+    let seconds = started.elapsed().as_secs_f64();
+    Row {
+        trials_per_second: count as f64 / seconds,
+        means: figures
+            .means()
+            .iter()
+            .map(|d| d.map_or("-".into(), |d| format!("{d:.4}")))
+            .collect(),
+        steps_per_trial: counters
+            .as_ref()
+            .map(|c| (c.steps() - before) as f64 / count as f64),
+        timeouts: counters.as_ref().map(|c| c.settle_timeouts()),
+        failures,
+        window: figures.window(),
+    }
+}
+
+fn print_row(label: &str, row: &Row) {
+    let or_dash = |v: Option<String>| v.unwrap_or_else(|| "-".into());
+    println!(
+        "| {label} | {:.0} | {} | {} | {} | {} |",
+        row.trials_per_second,
+        row.means.join(" | "),
+        or_dash(row.steps_per_trial.map(|s| format!("{s:.0}"))),
+        or_dash(row.timeouts.map(|t| t.to_string())),
+        row.failures
+    );
+}
+
+/// Microseconds per control tick (servo targets, gravity feed-forward, physics step) of
+/// the arm holding an outstretched pose.
+fn micros_per_step() -> f64 {
+    let hold = DynamicSettings {
+        settle_position_tol: 1e-300,
+        settle_speed_tol: 1e-300,
+        settle_timeout: 5.0,
+        ..Config::default_config().dynamic_settings()
+    };
+    let mut sim = DynamicSim::new(ArmModel::oscar6(), hold);
+    sim.place(&Controlled::new(0.3, 0.2, 0.6))
+        .expect("inside the limits");
+    let counters = sim.counters();
+    let steps = counters.steps();
+    let started = Instant::now();
+    sim.execute(&Controlled::zeros());
+    started.elapsed().as_secs_f64() * 1e6 / (counters.steps() - steps) as f64
+}
+
+/// Microseconds per reading of `camera` at the target pose.
+fn micros_per_read(camera: &dyn Camera) -> f64 {
+    let object = Point3::new(0.6, 0.0, 0.0);
+    let pose = nalgebra::Isometry3::new(
+        Vector3::new(0.6, 0.0, 0.2),
+        Vector3::y() * std::f64::consts::PI,
+    );
+    let reads = 20_000;
+    let started = Instant::now();
+    for k in 0..reads {
+        let shifted = object + Vector3::x() * (k % 7) as f64 * 1e-3;
+        std::hint::black_box(camera.read(&pose, &shifted).ok());
+    }
+    started.elapsed().as_secs_f64() * 1e6 / reads as f64
+}
+
+fn main() {
+    let header = |what: &str| {
+        println!("\n{what}\n");
+        println!("| run | trials/s | 1 | 2 | 3 | 4 | 5 | physics steps/trial | settle time-outs | failures |");
+        println!("|---|---|---|---|---|---|---|---|---|---|");
+    };
+    header("`ik`, 1,000 trials");
+    let ik_kinematic = trials(Method::Ik, SimKind::Kinematic, IK_TRIALS);
+    print_row("ik kinematic", &ik_kinematic);
+    print_row(
+        "ik dynamic",
+        &trials(Method::Ik, SimKind::Dynamic, IK_TRIALS),
+    );
+    header("`lin5`, 5,000 trials");
+    print_row(
+        "lin5 kinematic",
+        &trials(Method::Lin5, SimKind::Kinematic, LIN5_TRIALS),
+    );
+    let lin5 = trials(Method::Lin5, SimKind::Dynamic, LIN5_TRIALS);
+    print_row("lin5 dynamic", &lin5);
+    println!(
+        "\nmean distance (mm) after each feedback step over the last {} (ik) / {} (lin5) trials, seed {SEED}",
+        ik_kinematic.window, lin5.window
+    );
+    let step = micros_per_step();
+    let per_trial_ms = 1e3 / lin5.trials_per_second;
+    let physics_ms = lin5.steps_per_trial.unwrap_or(0.0) * step * 1e-3;
+    println!("\n| where a dynamic lin5 trial's time goes | |\n|---|---|");
+    println!("| wall time per trial | {per_trial_ms:.2} ms |");
+    println!("| control tick (servo targets, gravity feed-forward, Rapier step) | {step:.1} µs |");
+    println!(
+        "| ticks per trial × tick | {physics_ms:.2} ms ({:.0}%) |",
+        100.0 * physics_ms / per_trial_ms
+    );
+    let model = CameraModel::default();
+    println!(
+        "| camera read: projection / raycast 256² (bounded to the blob) / raycast 512² | {:.2} / {:.1} / {:.1} µs |",
+        micros_per_read(&ProjectionCamera::new(model)),
+        micros_per_read(&RaycastCamera::new(model, 256)),
+        micros_per_read(&RaycastCamera::new(model, 512)),
+    );
+}

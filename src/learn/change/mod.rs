@@ -1,0 +1,6 @@
+//! Global change detection (the study's §4.4.6, never built there): watch the tree-wide
+//! stream of pattern errors for the moment the mapping changed.
+
+mod detector;
+
+pub use detector::{Alarm, ChangeDetector, DetectorSettings};

@@ -1,0 +1,203 @@
+//! The network: I inputs, one layer of tanh hidden units, O linear outputs. Its weights are
+//! one flat parameter vector (for conjugate gradients); the hidden buffers are allocated
+//! once, so a forward or backward pass allocates nothing.
+
+use super::Objective;
+use nalgebra::SVector;
+use rand::Rng;
+
+/// A dense I → hidden (tanh) → O (linear) network.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DenseNet<const I: usize, const O: usize> {
+    hidden: usize,
+    /// Layout: W1 (hidden × I, row-major), b1 (hidden), W2 (O × hidden, row-major), b2 (O).
+    params: Vec<f64>,
+    activations: Vec<f64>,
+    deltas: Vec<f64>,
+}
+
+impl<const I: usize, const O: usize> DenseNet<I, O> {
+    /// A net with `hidden` units and every weight drawn uniformly in ±`wrange`.
+    pub fn new(hidden: usize, wrange: f64, rng: &mut impl Rng) -> Self {
+        let count = hidden * (I + 1) + O * (hidden + 1);
+        let params = (0..count)
+            .map(|_| rng.random_range(-wrange..=wrange))
+            .collect();
+        DenseNet {
+            hidden,
+            params,
+            activations: vec![0.0; hidden],
+            deltas: vec![0.0; hidden],
+        }
+    }
+
+    /// Hidden units.
+    pub fn hidden(&self) -> usize {
+        self.hidden
+    }
+
+    /// The weights as one vector.
+    pub fn params(&self) -> &[f64] {
+        &self.params
+    }
+
+    /// The weights, to change in place.
+    pub fn params_mut(&mut self) -> &mut [f64] {
+        &mut self.params
+    }
+
+    fn offsets(&self) -> (usize, usize, usize) {
+        let b1 = self.hidden * I;
+        let w2 = b1 + self.hidden;
+        (b1, w2, w2 + O * self.hidden)
+    }
+
+    /// The net's output for `x`.
+    pub fn forward(&mut self, x: &SVector<f64, I>) -> SVector<f64, O> {
+        let (b1, w2, b2) = self.offsets();
+        let h = self.hidden;
+        for j in 0..h {
+            let row = &self.params[j * I..(j + 1) * I];
+            let sum: f64 =
+                row.iter().zip(x.iter()).map(|(w, v)| w * v).sum::<f64>() + self.params[b1 + j];
+            self.activations[j] = sum.tanh();
+        }
+        SVector::from_fn(|k, _| {
+            let row = &self.params[w2 + k * h..w2 + (k + 1) * h];
+            row.iter()
+                .zip(&self.activations)
+                .map(|(w, a)| w * a)
+                .sum::<f64>()
+                + self.params[b2 + k]
+        })
+    }
+
+    /// Adds ∂(½‖y − t‖²)/∂params for one pattern to `grad`; returns ½‖y − t‖².
+    pub fn accumulate_gradient(
+        &mut self,
+        x: &SVector<f64, I>,
+        target: &SVector<f64, O>,
+        grad: &mut [f64],
+    ) -> f64 {
+        let error = self.forward(x) - target;
+        let (b1, w2, b2) = self.offsets();
+        let h = self.hidden;
+        for j in 0..h {
+            let back: f64 = (0..O).map(|k| error[k] * self.params[w2 + k * h + j]).sum();
+            self.deltas[j] = back * (1.0 - self.activations[j] * self.activations[j]);
+        }
+        for k in 0..O {
+            for j in 0..h {
+                grad[w2 + k * h + j] += error[k] * self.activations[j];
+            }
+            grad[b2 + k] += error[k];
+        }
+        for j in 0..h {
+            for i in 0..I {
+                grad[j * I + i] += self.deltas[j] * x[i];
+            }
+            grad[b1 + j] += self.deltas[j];
+        }
+        0.5 * error.norm_squared()
+    }
+
+    /// One online back-propagation step on one pattern with learning `rate`; returns the
+    /// pattern's loss before the step. `grad` is scratch space of the parameters' length.
+    pub fn backprop_step(
+        &mut self,
+        x: &SVector<f64, I>,
+        target: &SVector<f64, O>,
+        rate: f64,
+        grad: &mut [f64],
+    ) -> f64 {
+        grad.fill(0.0);
+        let loss = self.accumulate_gradient(x, target, grad);
+        for (p, g) in self.params.iter_mut().zip(grad.iter()) {
+            *p -= rate * g;
+        }
+        loss
+    }
+}
+
+/// The mean loss of a net over a batch of (input, target) pairs, as an [`Objective`] of
+/// the net's parameters.
+#[derive(Debug)]
+pub struct BatchLoss<'a, const I: usize, const O: usize> {
+    /// The net whose parameters are optimised.
+    pub net: &'a mut DenseNet<I, O>,
+    /// The batch.
+    pub batch: &'a [(SVector<f64, I>, SVector<f64, O>)],
+}
+
+impl<const I: usize, const O: usize> Objective for BatchLoss<'_, I, O> {
+    fn dimension(&self) -> usize {
+        self.net.params.len()
+    }
+
+    fn evaluate(&mut self, at: &[f64], grad: &mut [f64]) -> f64 {
+        self.net.params.copy_from_slice(at);
+        grad.fill(0.0);
+        let mut loss = 0.0;
+        for (x, t) in self.batch {
+            loss += self.net.accumulate_gradient(x, t, grad);
+        }
+        let n = self.batch.len().max(1) as f64;
+        grad.iter_mut().for_each(|g| *g /= n);
+        loss / n
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Vector2, Vector3};
+    use rand::SeedableRng;
+    use rand_chacha::ChaCha8Rng;
+
+    #[test]
+    fn the_gradient_matches_finite_differences() {
+        let mut rng = ChaCha8Rng::seed_from_u64(1);
+        let mut net: DenseNet<3, 2> = DenseNet::new(4, 0.8, &mut rng);
+        let x = Vector3::new(0.3, -0.7, 0.5);
+        let t = Vector2::new(0.2, -0.4);
+        let mut grad = vec![0.0; net.params().len()];
+        net.accumulate_gradient(&x, &t, &mut grad);
+        let loss = |net: &mut DenseNet<3, 2>| 0.5 * (net.forward(&x) - t).norm_squared();
+        for (i, analytic) in grad.iter().enumerate() {
+            let h = 1e-6;
+            let keep = net.params()[i];
+            net.params_mut()[i] = keep + h;
+            let up = loss(&mut net);
+            net.params_mut()[i] = keep - h;
+            let down = loss(&mut net);
+            net.params_mut()[i] = keep;
+            let numeric = (up - down) / (2.0 * h);
+            assert!(
+                (numeric - analytic).abs() < 1e-8,
+                "parameter {i}: {numeric} vs {analytic}"
+            );
+        }
+    }
+
+    #[test]
+    fn weights_start_inside_wrange() {
+        let mut rng = ChaCha8Rng::seed_from_u64(2);
+        let net: DenseNet<5, 3> = DenseNet::new(25, 0.1, &mut rng);
+        assert_eq!(net.params().len(), 25 * 6 + 3 * 26);
+        assert!(net.params().iter().all(|w| w.abs() <= 0.1));
+    }
+
+    #[test]
+    fn backprop_steps_reduce_the_error_on_a_pattern() {
+        let mut rng = ChaCha8Rng::seed_from_u64(3);
+        let mut net: DenseNet<3, 2> = DenseNet::new(5, 0.5, &mut rng);
+        let (x, t) = (Vector3::new(0.1, 0.2, 0.3), Vector2::new(0.5, -0.5));
+        let mut grad = vec![0.0; net.params().len()];
+        let first = net.backprop_step(&x, &t, 0.1, &mut grad);
+        let mut last = first;
+        for _ in 0..50 {
+            last = net.backprop_step(&x, &t, 0.1, &mut grad);
+        }
+        assert!(last < first * 0.01, "{first} → {last}");
+    }
+}

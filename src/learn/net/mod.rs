@@ -1,0 +1,10 @@
+//! A small dense feed-forward network (one tanh hidden layer) with back-propagation and
+//! conjugate-gradient training, shared by the `nnw` and `ffn` learners.
+
+mod cg;
+mod dense;
+mod scaling;
+
+pub use cg::{minimize, Objective};
+pub use dense::{BatchLoss, DenseNet};
+pub use scaling::InputScaling;

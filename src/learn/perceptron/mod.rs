@@ -1,0 +1,203 @@
+//! The Nested Perceptron's node model: a linear least-squares fit from incrementally
+//! updated normal-equation sums, in staggered sum-sets that forget (study §4.1, §4.2.1).
+//!
+//! A pattern (input u, target Δθ) adds z zᵀ and z Δθᵀ, z = (u, 1), to the sums of every
+//! sum-set taking patterns (see [`stagger`] for which). A refit solves the
+//! current set's normal equations once for all three joints. Inputs are in the node's
+//! local coordinates (its box mapped to [−1, 1]), which keeps the sums well scaled however
+//! small the box. A singular or ill-conditioned fit gives no answer, so the tree asks the
+//! node's parent instead; the model never answers NaN.
+
+mod stagger;
+mod sums;
+
+use crate::learn::tree::Approximator;
+use nalgebra::{Const, DimMin, SMatrix, SVector, Vector3};
+use stagger::Stagger;
+use sums::NormalSums;
+
+/// A perceptron over `N` inputs; `M` = N + 1 (the inputs and a constant).
+#[derive(Debug, Clone)]
+pub(crate) struct Perceptron<const N: usize, const M: usize> {
+    sets: Vec<NormalSums<M>>,
+    stagger: Stagger,
+    /// The current fit: Δθ = weights · (u, 1).
+    weights: Option<SMatrix<f64, 3, M>>,
+}
+
+impl<const N: usize, const M: usize> Perceptron<N, M> {
+    const AUGMENTED: () = assert!(M == N + 1, "a perceptron has N inputs and a constant");
+
+    /// A perceptron with `sets` staggered sum-sets (`nr_of_matrices`) of at most
+    /// `set_size` patterns each (`max_pats_in_mat`); both at least 1.
+    pub(crate) fn new(sets: usize, set_size: usize) -> Self {
+        let () = Self::AUGMENTED;
+        let stagger = Stagger::new(sets, set_size);
+        Perceptron {
+            sets: vec![NormalSums::new(); sets.max(1)],
+            stagger,
+            weights: None,
+        }
+    }
+
+    fn augmented(input: &SVector<f64, N>) -> SVector<f64, M> {
+        SVector::from_fn(|i, _| if i < N { input[i] } else { 1.0 })
+    }
+}
+
+impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M>
+where
+    Const<M>: DimMin<Const<M>, Output = Const<M>>,
+{
+    fn add(&mut self, input: &SVector<f64, N>, target: &Vector3<f64>) {
+        let z = Self::augmented(input);
+        let zz = z * z.transpose();
+        let zt = z * target.transpose();
+        let arrival = self.stagger.arrive();
+        if let Some(set) = arrival.cleared {
+            self.sets[set].clear();
+        }
+        for set in &mut self.sets[..arrival.receivers] {
+            set.add(&zz, &zt);
+        }
+    }
+
+    fn refit(&mut self) {
+        self.weights = self.sets[self.stagger.current()].solve();
+    }
+
+    fn answer(&self, input: &SVector<f64, N>) -> Option<Vector3<f64>> {
+        self.weights.map(|w| w * Self::augmented(input))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{DMatrix, SVector};
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    type P5 = Perceptron<5, 6>;
+
+    fn random_input(rng: &mut ChaCha8Rng) -> SVector<f64, 5> {
+        SVector::from_fn(|_, _| rng.random_range(-1.0..=1.0))
+    }
+
+    fn random_map(rng: &mut ChaCha8Rng) -> SMatrix<f64, 3, 6> {
+        SMatrix::from_fn(|_, _| rng.random_range(-10.0..=10.0))
+    }
+
+    fn apply(map: &SMatrix<f64, 3, 6>, u: &SVector<f64, 5>) -> Vector3<f64> {
+        map * P5::augmented(u)
+    }
+
+    fn train(p: &mut P5, map: &SMatrix<f64, 3, 6>, n: usize, rng: &mut ChaCha8Rng) {
+        for _ in 0..n {
+            let u = random_input(rng);
+            p.add(&u, &apply(map, &u));
+        }
+        p.refit();
+    }
+
+    fn max_miss(p: &P5, map: &SMatrix<f64, 3, 6>, rng: &mut ChaCha8Rng) -> f64 {
+        (0..50)
+            .map(|_| {
+                let u = random_input(rng);
+                (p.answer(&u).expect("fitted") - apply(map, &u)).amax()
+            })
+            .fold(0.0, f64::max)
+    }
+
+    #[test]
+    fn recovers_a_linear_map_exactly() {
+        let mut rng = ChaCha8Rng::seed_from_u64(1);
+        let map = random_map(&mut rng);
+        let mut p = P5::new(5, 1000);
+        train(&mut p, &map, 40, &mut rng);
+        assert!(max_miss(&p, &map, &mut rng) < 1e-9);
+    }
+
+    #[test]
+    fn incremental_sums_equal_a_batch_least_squares_fit() {
+        let mut rng = ChaCha8Rng::seed_from_u64(2);
+        let map = random_map(&mut rng);
+        let mut p = P5::new(3, 10_000);
+        let n = 300;
+        let mut a = DMatrix::<f64>::zeros(n, 6);
+        let mut b = DMatrix::<f64>::zeros(n, 3);
+        for row in 0..n {
+            let u = random_input(&mut rng);
+            // A curved target, so the fit has residuals to balance.
+            let t = apply(&map, &u) + Vector3::repeat(3.0 * u[0] * u[1] + u[4].powi(3));
+            p.add(&u, &t);
+            a.row_mut(row).copy_from(&P5::augmented(&u).transpose());
+            b.row_mut(row).copy_from(&t.transpose());
+        }
+        p.refit();
+        let batch = a.svd(true, true).solve(&b, 1e-12).unwrap();
+        let fitted = p.weights.expect("fitted");
+        for joint in 0..3 {
+            for k in 0..6 {
+                let (inc, bat) = (fitted[(joint, k)], batch[(k, joint)]);
+                assert!(
+                    (inc - bat).abs() < 1e-9 * (1.0 + bat.abs()),
+                    "{inc} vs {bat}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn forgets_an_old_map_within_one_set_size() {
+        let mut rng = ChaCha8Rng::seed_from_u64(3);
+        let (old, new) = (random_map(&mut rng), random_map(&mut rng));
+        let mut p = P5::new(5, 1000);
+        train(&mut p, &old, 1000, &mut rng);
+        assert!(max_miss(&p, &old, &mut rng) < 1e-9);
+        train(&mut p, &new, 500, &mut rng);
+        // The current set (started at pattern 601) still holds 400 old patterns.
+        assert!(max_miss(&p, &new, &mut rng) > 1e-3);
+        train(&mut p, &new, 500, &mut rng);
+        assert!(max_miss(&p, &new, &mut rng) < 1e-9);
+    }
+
+    #[test]
+    fn a_singular_system_has_no_answer() {
+        let mut rng = ChaCha8Rng::seed_from_u64(4);
+        let map = random_map(&mut rng);
+        let fit = |inputs: &mut dyn FnMut(&mut ChaCha8Rng) -> SVector<f64, 5>, n: usize| {
+            let mut rng = ChaCha8Rng::seed_from_u64(5);
+            let mut p = P5::new(2, 1000);
+            for _ in 0..n {
+                let u = inputs(&mut rng);
+                p.add(&u, &apply(&map, &u));
+            }
+            p.refit();
+            p.answer(&SVector::zeros())
+        };
+        assert_eq!(
+            P5::new(1, 10).answer(&SVector::zeros()),
+            None,
+            "no patterns"
+        );
+        assert_eq!(
+            fit(&mut random_input, 5),
+            None,
+            "fewer patterns than unknowns"
+        );
+        let mut flat = |rng: &mut ChaCha8Rng| {
+            let mut u = random_input(rng);
+            u[2] = 0.25;
+            u
+        };
+        assert_eq!(fit(&mut flat, 100), None, "an input that never varies");
+        let mut tied = |rng: &mut ChaCha8Rng| {
+            let mut u = random_input(rng);
+            u[3] = 0.5 * u[1] - 0.2 * u[0];
+            u
+        };
+        assert_eq!(fit(&mut tied, 100), None, "inputs that move together");
+        assert!(fit(&mut random_input, 100).is_some());
+    }
+}

@@ -1,0 +1,74 @@
+//! Merging: cutting off a subtree that does worse than it should.
+//!
+//! Going down a pattern's path, the first node that is due is merged:
+//! - **absolute merge**: its mean error E over its last `am_error_iters` patterns is above
+//!   `am_error_tresh`;
+//! - **relative merge** (not the root): that mean is above its parent's mean error on the
+//!   node's box, over the same patterns, by more than `merge_error`. (The study's eq. 2.2
+//!   has its two sides swapped; this is the rule its text describes.)
+//!
+//! A merge cuts the node and its whole subtree; their bins, with their patterns, go back to
+//! the parent. Merging the root throws everything away: the tree starts afresh.
+
+use super::{Approximator, BranchRule, NestedTree, Path, TreeEvent, NONE, ROOT};
+use crate::learn::LearnError;
+
+impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
+    /// Merges the shallowest node on `path` that is due, if any.
+    pub(super) fn merge_if_due(&mut self, path: &Path) -> Result<Option<TreeEvent>, LearnError> {
+        let s = &self.settings;
+        let due = path.nodes().iter().copied().find(|&id| {
+            let node = &self.nodes[id as usize];
+            let Some(own) = node.errors.mean().filter(|_| node.errors.is_full()) else {
+                return false;
+            };
+            let parents = (id != ROOT)
+                .then(|| self.nodes[node.parent as usize].box_errors(node.branch))
+                .flatten()
+                .filter(|errors| errors.is_full())
+                .and_then(|errors| errors.mean());
+            own > s.am_error_tresh || parents.is_some_and(|parents| own > parents + s.merge_error)
+        });
+        match due {
+            None => Ok(None),
+            Some(ROOT) => {
+                self.reset()?;
+                Ok(Some(TreeEvent::Reset))
+            }
+            Some(id) => {
+                self.cut(id);
+                Ok(Some(TreeEvent::Merged))
+            }
+        }
+    }
+
+    /// Cuts node `id` (not the root) and its subtree; every bin they held goes back to the
+    /// parent, patterns and all.
+    pub(super) fn cut(&mut self, id: u32) {
+        let node = &self.nodes[id as usize];
+        let (parent, branch) = (node.parent, node.branch);
+        let parent_depth = node.depth - 1;
+        let mut bins = std::mem::take(&mut self.nodes[parent as usize].bins);
+        let mut patterns = 0;
+        let mut stack = std::mem::take(&mut self.scratch);
+        stack.push(id);
+        while let Some(x) = stack.pop() {
+            let node = &mut self.nodes[x as usize];
+            stack.extend(node.children.iter().copied().filter(|&c| c != NONE));
+            self.levels.node_removed(node.depth);
+            self.levels
+                .bins_moved(node.depth, parent_depth, node.bins.len(), node.patterns);
+            bins.append(&mut node.bins);
+            patterns += node.patterns;
+            self.release(x);
+        }
+        self.scratch = stack;
+        let p = &mut self.nodes[parent as usize];
+        p.bins = bins;
+        p.patterns += patterns;
+        p.box_patterns[usize::from(branch)] += patterns;
+        p.children[usize::from(branch)] = NONE;
+        // Evidence for splitting this sub-box again must be fresh.
+        p.clear_box_errors(branch);
+    }
+}

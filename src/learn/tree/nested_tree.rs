@@ -1,0 +1,246 @@
+//! The nested tree itself: answering, training a pattern down its path, storing it.
+
+use super::{
+    Approximator, BinKey, Bins, BranchRule, Levels, Node, Records, TreeSettings, MAX_DEPTH, NONE,
+};
+use crate::control::Pattern;
+use crate::learn::{LearnError, LearnerStats};
+use nalgebra::{SVector, Vector3};
+use rand_chacha::ChaCha8Rng;
+
+/// The root's index in the arena.
+pub(super) const ROOT: u32 = 0;
+
+/// What training one pattern did to the tree.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum TreeEvent {
+    /// Trained and stored; the tree kept its shape.
+    Trained,
+    /// Trained and stored; a sub-box of the deepest node was split off.
+    Split,
+    /// Trained and stored; a subtree was cut off.
+    Merged,
+    /// The root was merged: everything learned and stored was thrown away.
+    Reset,
+    /// The pattern had a value that is not finite and was left out.
+    Ignored,
+}
+
+/// The nodes a point passes from the root down to the deepest existing node.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Path {
+    nodes: [u32; MAX_DEPTH + 1],
+    len: usize,
+}
+
+impl Path {
+    /// The nodes, root first.
+    pub(super) fn nodes(&self) -> &[u32] {
+        &self.nodes[..self.len]
+    }
+
+    /// The deepest node.
+    pub(super) fn deepest(&self) -> u32 {
+        self.nodes[self.len - 1]
+    }
+}
+
+/// A tree of local models over an `N`-dimensional input box: the root covers the whole box,
+/// a child one of its parent's sub-boxes (see [`BranchRule`]). Each pattern trains every
+/// node on its path and is kept in its bin; sub-boxes that stay badly approximated are
+/// split off, subtrees that do worse than they should are cut.
+///
+/// Nodes live in an arena (`Vec` plus free list) and link by `u32` indices.
+#[derive(Debug)]
+pub(crate) struct NestedTree<A, R, const N: usize> {
+    pub(super) settings: TreeSettings,
+    pub(super) rule: R,
+    /// The model a new node starts with.
+    fresh: A,
+    pub(super) nodes: Vec<Node<A, N>>,
+    free: Vec<u32>,
+    pub(super) bins: Bins<N>,
+    pub(super) levels: Levels,
+    pub(super) rng: ChaCha8Rng,
+    /// Reused by subtree walks.
+    pub(super) scratch: Vec<u32>,
+}
+
+impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
+    /// A tree of one root node with model `fresh`, keeping patterns in `records`; known
+    /// patterns are drawn from `rng`.
+    ///
+    /// # Panics
+    /// If `settings.max_depth` is above [`MAX_DEPTH`] (the config never allows it).
+    pub(crate) fn new(
+        settings: TreeSettings,
+        rule: R,
+        fresh: A,
+        records: Records<N>,
+        rng: ChaCha8Rng,
+    ) -> Self {
+        assert!(
+            settings.max_depth <= MAX_DEPTH,
+            "tree_depth {} is above the deepest tree a bin key names ({MAX_DEPTH})",
+            settings.max_depth
+        );
+        let mut tree = NestedTree {
+            bins: Bins::new(settings.bin_size, records),
+            levels: Levels::new(settings.max_depth, settings.monitor_ave),
+            settings,
+            rule,
+            fresh,
+            nodes: Vec::new(),
+            free: Vec::new(),
+            rng,
+            scratch: Vec::new(),
+        };
+        tree.plant_root();
+        tree
+    }
+
+    /// Δθ at `x`: the answer of the deepest node on its path that has one; zero if none
+    /// has. Always finite.
+    pub(crate) fn answer(&self, x: &SVector<f64, N>) -> Vector3<f64> {
+        let path = self.descend(self.rule.key(x, self.settings.max_depth));
+        path.nodes()
+            .iter()
+            .rev()
+            .find_map(|&id| self.nodes[id as usize].answer(x))
+            .unwrap_or_else(Vector3::zeros)
+    }
+
+    /// Trains `pattern` to every node on its path, stores it in its bin, then merges or
+    /// splits where that is due.
+    pub(crate) fn train(&mut self, pattern: &Pattern<N>) -> Result<TreeEvent, LearnError> {
+        let finite = |v: &f64| v.is_finite();
+        if !(pattern.input.iter().all(finite) && pattern.target.iter().all(finite)) {
+            return Ok(TreeEvent::Ignored);
+        }
+        let key = self.rule.key(&pattern.input, self.settings.max_depth);
+        let path = self.descend(key);
+        for &id in path.nodes() {
+            self.train_node(id, key, pattern);
+        }
+        self.store(path.deepest(), key, pattern)?;
+        if let Some(event) = self.merge_if_due(&path)? {
+            return Ok(event);
+        }
+        Ok(if self.split_if_due(path.deepest(), key)? {
+            TreeEvent::Split
+        } else {
+            TreeEvent::Trained
+        })
+    }
+
+    /// Nodes, bins and patterns, in total and per depth.
+    pub(crate) fn stats(&self) -> LearnerStats {
+        let levels = self.levels.stats();
+        LearnerStats {
+            nodes: levels.iter().map(|l| l.nodes).sum(),
+            bins: levels.iter().map(|l| l.bins).sum(),
+            patterns: levels.iter().map(|l| l.patterns).sum(),
+            levels,
+        }
+    }
+
+    /// Throws away every node, bin and pattern; the root starts afresh.
+    pub(super) fn reset(&mut self) -> Result<(), LearnError> {
+        self.bins.clear()?;
+        self.levels.clear();
+        self.plant_root();
+        Ok(())
+    }
+
+    fn plant_root(&mut self) {
+        self.nodes.clear();
+        self.free.clear();
+        let window = self.settings.am_error_iters;
+        let root = Node::new(self.fresh.clone(), *self.rule.root(), NONE, 0, 0, window);
+        self.nodes.push(root);
+        self.levels.node_added(0);
+    }
+
+    /// The path of a point with bin key `key`.
+    pub(super) fn descend(&self, key: BinKey) -> Path {
+        let mut path = Path {
+            nodes: [ROOT; MAX_DEPTH + 1],
+            len: 1,
+        };
+        for depth in 1..=key.reach() {
+            let Some(branch) = key.branch(depth) else {
+                break;
+            };
+            let child = self.nodes[path.deepest() as usize].children[usize::from(branch)];
+            if child == NONE {
+                break;
+            }
+            path.nodes[path.len] = child;
+            path.len += 1;
+        }
+        path
+    }
+
+    /// Measures node `id`'s error on the pattern (if it has its own answer), then trains it.
+    fn train_node(&mut self, id: u32, key: BinKey, pattern: &Pattern<N>) {
+        let window = self.settings.am_error_iters;
+        let known_share = self.settings.known_pattern_perc / 100.0;
+        let node = &mut self.nodes[id as usize];
+        if let Some(output) = node.answer(&pattern.input) {
+            let error = (output - pattern.target).norm();
+            node.errors.push(error);
+            self.levels.record_error(node.depth, error);
+            if let Some(branch) = key.branch(node.depth + 1) {
+                node.box_errors_mut(branch, window).push(error);
+            }
+        }
+        node.take_in(&pattern.input, &pattern.target, known_share, &mut self.rng);
+        node.model.refit();
+    }
+
+    /// Keeps the pattern in its bin, which hangs on node `id`, the deepest on its path.
+    fn store(&mut self, id: u32, key: BinKey, pattern: &Pattern<N>) -> Result<(), LearnError> {
+        let (bin, created) = self.bins.find_or_create(key);
+        let node = &mut self.nodes[id as usize];
+        if created {
+            node.bins.push(bin);
+            self.levels.bin_added(node.depth);
+        }
+        if self.bins.store(bin, pattern)? {
+            node.patterns += 1;
+            if let Some(branch) = key.branch(node.depth + 1) {
+                node.box_patterns[usize::from(branch)] += 1;
+            }
+            self.levels.pattern_added(node.depth);
+        }
+        Ok(())
+    }
+
+    /// A new child of `parent` at `branch`, with a fresh model and nothing else yet.
+    pub(super) fn add_child(&mut self, parent: u32, branch: u8) -> u32 {
+        let (region, depth) = {
+            let p = &self.nodes[parent as usize];
+            (self.rule.child(&p.region, p.depth + 1, branch), p.depth + 1)
+        };
+        let window = self.settings.am_error_iters;
+        let node = Node::new(self.fresh.clone(), region, parent, branch, depth, window);
+        let id = match self.free.pop() {
+            Some(id) => {
+                self.nodes[id as usize] = node;
+                id
+            }
+            None => {
+                self.nodes.push(node);
+                (self.nodes.len() - 1) as u32
+            }
+        };
+        self.nodes[parent as usize].children[usize::from(branch)] = id;
+        self.levels.node_added(depth);
+        id
+    }
+
+    /// Returns node `id`, already unlinked, to the arena.
+    pub(super) fn release(&mut self, id: u32) {
+        self.free.push(id);
+    }
+}

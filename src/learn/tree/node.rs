@@ -1,0 +1,116 @@
+//! A tree node: its box, its model, its error monitors and the bins that hang on it.
+
+use super::{Approximator, Monitor, Region, BRANCHES};
+use nalgebra::{SVector, Vector3};
+use rand::Rng;
+use rand_chacha::ChaCha8Rng;
+
+/// The index of "no node" (no parent, no child).
+pub(crate) const NONE: u32 = u32::MAX;
+
+/// One node of the tree, stored in the tree's arena and linked by indices.
+#[derive(Debug, Clone)]
+pub(crate) struct Node<A, const N: usize> {
+    /// The parent's index, [`NONE`] for the root.
+    pub(super) parent: u32,
+    /// This node's branch number under its parent.
+    pub(super) branch: u8,
+    /// Depth: 0 for the root.
+    pub(super) depth: usize,
+    /// Child index per branch, [`NONE`] where there is none.
+    pub(super) children: [u32; BRANCHES],
+    /// The node's box.
+    pub(super) region: Region<N>,
+    /// The node's model.
+    pub(super) model: A,
+    /// Its own running error E, for the absolute and relative merge.
+    pub(super) errors: Monitor,
+    /// Its running error on each sub-box: the split test where there is no child yet, its
+    /// side of the relative merge test where there is one. Made on first use.
+    box_errors: [Option<Monitor>; BRANCHES],
+    /// The bins hanging on this node: those whose deepest existing node it is.
+    pub(super) bins: Vec<u32>,
+    /// Patterns kept in those bins.
+    pub(super) patterns: usize,
+    /// Of those, the patterns in each sub-box.
+    pub(super) box_patterns: [usize; BRANCHES],
+    known_anchor: Option<SVector<f64, N>>,
+    /// Known patterns owed: a fraction of one.
+    known_credit: f64,
+}
+
+impl<A: Approximator<N>, const N: usize> Node<A, N> {
+    /// A node with a fresh `model` for box `region`; errors averaged over `window`.
+    pub(super) fn new(
+        model: A,
+        region: Region<N>,
+        parent: u32,
+        branch: u8,
+        depth: usize,
+        window: usize,
+    ) -> Self {
+        Node {
+            parent,
+            branch,
+            depth,
+            children: [NONE; BRANCHES],
+            region,
+            model,
+            errors: Monitor::new(window),
+            box_errors: std::array::from_fn(|_| None),
+            bins: Vec::new(),
+            patterns: 0,
+            box_patterns: [0; BRANCHES],
+            known_anchor: region.known_anchor(),
+            known_credit: 0.0,
+        }
+    }
+
+    /// The node's own answer at global input `x`, if its model has one.
+    pub(super) fn answer(&self, x: &SVector<f64, N>) -> Option<Vector3<f64>> {
+        self.model
+            .answer(&self.region.local(x))
+            .filter(|o| o.iter().all(|v| v.is_finite()))
+    }
+
+    /// Trains the pattern (`x` global, `target`) to the model, followed by the known
+    /// patterns it earns: `known_share` of one per pattern, drawn with `rng`. A node whose
+    /// box does not hold the camera zero gets none. The model still needs a refit.
+    pub(super) fn take_in(
+        &mut self,
+        x: &SVector<f64, N>,
+        target: &Vector3<f64>,
+        known_share: f64,
+        rng: &mut ChaCha8Rng,
+    ) {
+        self.model.add(&self.region.local(x), target);
+        let Some(anchor) = self.known_anchor else {
+            return;
+        };
+        self.known_credit += known_share;
+        while self.known_credit >= 1.0 {
+            self.known_credit -= 1.0;
+            let mut known = anchor;
+            known[0] = rng.random_range(-1.0..=1.0);
+            known[1] = rng.random_range(-1.0..=1.0);
+            self.model.add(&known, &Vector3::zeros());
+        }
+    }
+
+    /// The running error on sub-box `branch`, if any was measured.
+    pub(super) fn box_errors(&self, branch: u8) -> Option<&Monitor> {
+        self.box_errors[usize::from(branch)].as_ref()
+    }
+
+    /// The running error on sub-box `branch`, made with `window` on first use.
+    pub(super) fn box_errors_mut(&mut self, branch: u8, window: usize) -> &mut Monitor {
+        self.box_errors[usize::from(branch)].get_or_insert_with(|| Monitor::new(window))
+    }
+
+    /// Starts measuring sub-box `branch` anew.
+    pub(super) fn clear_box_errors(&mut self, branch: u8) {
+        if let Some(m) = &mut self.box_errors[usize::from(branch)] {
+            m.clear();
+        }
+    }
+}

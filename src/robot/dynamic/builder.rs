@@ -1,0 +1,190 @@
+//! The OSCAR-6 built into a Rapier world: the URDF's links become rigid bodies with their
+//! inertials and colliders, its six revolute joints one multibody (reduced coordinates) on
+//! a fixed base, each joint with its limits and a position motor. The fixed camera joint is
+//! merged away: the camera link's mass and collider ride on link 6.
+
+use super::colliders::collider;
+use super::convert::{to_pose, to_vector};
+use super::settings::DynamicSettings;
+use crate::robot::{ArmModel, Joints, LinkBody, Shape};
+use nalgebra::{Isometry3, Matrix3, Unit, UnitQuaternion, Vector3};
+use rapier3d_f64::math::{Matrix, Vector};
+use rapier3d_f64::prelude::{
+    ColliderHandle, GenericJointBuilder, JointAxesMask, JointAxis, MassProperties, MotorModel,
+    MultibodyIndex, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
+};
+
+/// Standard gravity (m/s²), pulling along −z.
+pub(super) const GRAVITY: f64 = 9.81;
+
+/// A collider of a body and the URDF collision element it was made from (link frame).
+pub(super) type ColliderPart = (ColliderHandle, Isometry3<f64>, Shape);
+
+/// The arm inside its Rapier world.
+pub(super) struct Arm {
+    /// Bodies, colliders and the multibody.
+    pub(super) world: PhysicsWorld,
+    /// The arm's multibody.
+    pub(super) multibody: MultibodyIndex,
+    /// Multibody link ids of links 1–6.
+    pub(super) link_ids: [usize; 6],
+    /// Rigid bodies of the base and links 1–6.
+    pub(super) bodies: [RigidBodyHandle; 7],
+    /// Each body's colliders, base first.
+    pub(super) colliders: Vec<Vec<ColliderPart>>,
+    /// Mass (kg) and centre of mass (link frame) of links 1–6, the camera in link 6.
+    pub(super) loads: [(f64, Vector3<f64>); 6],
+}
+
+impl std::fmt::Debug for Arm {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Arm")
+            .field("link_ids", &self.link_ids)
+            .field("loads", &self.loads)
+            .finish_non_exhaustive()
+    }
+}
+
+impl Arm {
+    /// The arm of `model` at the zero pose, servoed with `settings`' gains.
+    pub(super) fn build(model: &ArmModel, settings: &DynamicSettings) -> Arm {
+        let mut world = PhysicsWorld::new();
+        world.gravity = Vector::new(0.0, 0.0, -GRAVITY);
+        world.integration_parameters.dt = settings.dt;
+        world.integration_parameters.num_solver_iterations = settings.solver_iterations;
+        let frames = model.link_frames(&Joints::zeros());
+        let links = model.links();
+        let mut bodies = Vec::with_capacity(7);
+        let mut colliders = Vec::with_capacity(7);
+        let mut loads = [(0.0, Vector3::zeros()); 6];
+        for k in 0..7 {
+            let mut parts = vec![(Isometry3::identity(), &links[k])];
+            if k == 6 {
+                parts.push((model.camera_mount(), &links[7]));
+            }
+            let mass: MassProperties = parts.iter().map(|(at, l)| mass_of(l, at)).sum();
+            let (builder, frame) = match k {
+                0 => (RigidBodyBuilder::fixed(), Isometry3::identity()),
+                _ => (RigidBodyBuilder::dynamic(), frames[k - 1]),
+            };
+            let body = world.insert_body(
+                builder
+                    .pose(to_pose(&frame))
+                    .can_sleep(false)
+                    .additional_mass_properties(mass),
+            );
+            if k > 0 {
+                let com = mass.local_com;
+                loads[k - 1] = (mass.mass(), Vector3::new(com.x, com.y, com.z));
+            }
+            let mut own = Vec::new();
+            for (at, link) in &parts {
+                for (pose, shape) in &link.collisions {
+                    let pose = at * pose;
+                    let handle = world.insert_collider(collider(&pose, shape), Some(body));
+                    own.push((handle, pose, *shape));
+                }
+            }
+            bodies.push(body);
+            colliders.push(own);
+        }
+        for (i, joint) in model.joints().iter().enumerate() {
+            let data = GenericJointBuilder::new(JointAxesMask::LOCKED_REVOLUTE_AXES)
+                .local_frame1(to_pose(&joint_frame(&joint.origin, &joint.axis)))
+                .local_frame2(to_pose(&joint_frame(&Isometry3::identity(), &joint.axis)))
+                .limits(JointAxis::AngX, [joint.lower, joint.upper])
+                .motor_model(JointAxis::AngX, MotorModel::AccelerationBased)
+                .set_motor(
+                    JointAxis::AngX,
+                    0.0,
+                    0.0,
+                    settings.motor_stiffness,
+                    settings.motor_damping,
+                )
+                .motor_max_force(JointAxis::AngX, joint.effort)
+                .contacts_enabled(false);
+            world
+                .multibody_joints
+                .insert(bodies[i], bodies[i + 1], data, true)
+                .expect("a serial chain of new bodies has no cycle");
+        }
+        let link_of = |body| {
+            *world
+                .multibody_joints
+                .rigid_body_link(body)
+                .expect("every link body is in the multibody")
+        };
+        let multibody = link_of(bodies[1]).multibody;
+        let link_ids = std::array::from_fn(|i| link_of(bodies[i + 1]).id);
+        if let Some(mb) = world.multibody_joints.get_multibody_mut(multibody) {
+            mb.set_self_contacts_enabled(false);
+        }
+        Arm {
+            world,
+            multibody,
+            link_ids,
+            bodies: bodies.try_into().expect("seven bodies"),
+            colliders,
+            loads,
+        }
+    }
+}
+
+/// A joint's frame in its parent link: the joint origin turned so that its x axis is the
+/// joint axis (Rapier's revolute degree of freedom turns about x).
+pub(super) fn joint_frame(origin: &Isometry3<f64>, axis: &Unit<Vector3<f64>>) -> Isometry3<f64> {
+    let x_to_axis = UnitQuaternion::rotation_between(&Vector3::x(), axis).unwrap_or_else(|| {
+        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::PI)
+    });
+    origin * x_to_axis
+}
+
+/// A link's URDF inertial as Rapier mass properties, in a frame where the link sits at `at`.
+fn mass_of(link: &LinkBody, at: &Isometry3<f64>) -> MassProperties {
+    let frame = at * link.inertial_origin;
+    let rotation = frame.rotation.to_rotation_matrix();
+    let inertia: Matrix3<f64> = rotation * link.inertia * rotation.transpose();
+    MassProperties::with_inertia_matrix(
+        to_vector(&frame.translation.vector),
+        link.mass,
+        Matrix::from_cols_slice(inertia.as_slice()),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn joint_frames_turn_x_onto_the_axis() {
+        for axis in [
+            Vector3::x_axis(),
+            -Vector3::y_axis(),
+            Vector3::z_axis(),
+            -Vector3::x_axis(),
+        ] {
+            let frame = joint_frame(&Isometry3::identity(), &axis);
+            assert!((frame.rotation * Vector3::x() - axis.into_inner()).norm() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn the_camera_rides_on_link_6() {
+        let model = ArmModel::oscar6();
+        let arm = Arm::build(&model, &DynamicSettings::default());
+        let masses: Vec<f64> = arm.loads.iter().map(|(m, _)| *m).collect();
+        assert_eq!(masses[..5], [25.0, 17.0, 8.0, 1.5, 1.0]);
+        assert!(
+            (masses[5] - 0.8).abs() < 1e-12,
+            "link 6 and the camera: {masses:?}"
+        );
+        // The camera's 0.3 kg sits 0.07 m out along the flange (3 cm behind its lens, which
+        // looks along the flange), link 6's 0.5 kg at 0.03 m.
+        let com = arm.loads[5].1;
+        assert!(
+            (com.x - (0.5 * 0.03 + 0.3 * 0.07) / 0.8).abs() < 1e-12,
+            "{com}"
+        );
+        assert_eq!(arm.colliders[6].len(), 2);
+    }
+}

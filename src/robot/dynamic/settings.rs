@@ -1,0 +1,79 @@
+//! The dynamic simulator's settings: time step, solver, servo gains and when a move counts
+//! as settled.
+
+use crate::robot::MoveSettings;
+
+/// How the dynamic simulator steps and servoes the arm. [`Default`] gives the values of the
+/// shipped configs: a stiff, critically damped 25 Hz servo on a 200 Hz control loop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DynamicSettings {
+    /// The trapezoidal profile of a move (top speed and acceleration of the lead joint);
+    /// default 90°/s and 180°/s².
+    pub moves: MoveSettings,
+    /// Physics and control time step (s); default 0.005 (200 Hz).
+    pub dt: f64,
+    /// Constraint solver iterations per step; default 2.
+    pub solver_iterations: usize,
+    /// Position gain of every joint servo (1/s², acceleration-based: the joint's effective
+    /// inertia is factored in); default 25,000 (a 25 Hz servo).
+    pub motor_stiffness: f64,
+    /// Velocity gain of every joint servo (1/s, acceleration-based); default 316 (critical
+    /// damping for the default stiffness).
+    pub motor_damping: f64,
+    /// A move has settled once every joint is this close to its set-point (rad); default
+    /// 0.0005° in radians.
+    pub settle_position_tol: f64,
+    /// … and every joint turns slower than this (rad/s); default 0.05°/s in radians.
+    pub settle_speed_tol: f64,
+    /// Simulated time (s) the arm gets to settle after the profile ends before the move is
+    /// reported as not settled; default 2.
+    pub settle_timeout: f64,
+}
+
+impl Default for DynamicSettings {
+    fn default() -> Self {
+        DynamicSettings {
+            moves: MoveSettings::from_degrees(90.0, 180.0),
+            dt: 0.005,
+            solver_iterations: 2,
+            motor_stiffness: 25_000.0,
+            motor_damping: 316.0,
+            settle_position_tol: 0.0005f64.to_radians(),
+            settle_speed_tol: 0.05f64.to_radians(),
+            settle_timeout: 2.0,
+        }
+    }
+}
+
+impl DynamicSettings {
+    /// These settings with every value that is not finite and positive replaced by its
+    /// default (zero solver iterations become one).
+    pub fn sanitized(&self) -> DynamicSettings {
+        let default = DynamicSettings::default();
+        let pick = |value: f64, fallback: f64| {
+            if value.is_finite() && value > 0.0 {
+                value
+            } else {
+                fallback
+            }
+        };
+        DynamicSettings {
+            moves: MoveSettings {
+                speed: pick(self.moves.speed, default.moves.speed),
+                accel: pick(self.moves.accel, default.moves.accel),
+            },
+            dt: pick(self.dt, default.dt),
+            solver_iterations: self.solver_iterations.max(1),
+            motor_stiffness: pick(self.motor_stiffness, default.motor_stiffness),
+            motor_damping: pick(self.motor_damping, default.motor_damping),
+            settle_position_tol: pick(self.settle_position_tol, default.settle_position_tol),
+            settle_speed_tol: pick(self.settle_speed_tol, default.settle_speed_tol),
+            settle_timeout: pick(self.settle_timeout, default.settle_timeout),
+        }
+    }
+
+    /// Steps the arm gets to settle after a move's profile.
+    pub(super) fn settle_steps(&self) -> usize {
+        (self.settle_timeout / self.dt).ceil() as usize
+    }
+}

@@ -1,0 +1,67 @@
+//! Stepping the arm: following a move's set-point profile tick by tick, then stepping until
+//! the joints are close to their set-points and nearly still.
+
+use super::sim::{DynamicSim, SimCounters};
+use crate::robot::{Controlled, Joints, Simulator, TrapezoidProfile};
+
+impl DynamicSim {
+    /// One control tick: servo targets and gravity feed-forward for set-point `target`
+    /// moving at `speed`, then a physics step.
+    fn tick(&mut self, target: &Joints, speed: &Joints) {
+        let efforts = self.arm.hold_weight(self.plan.model(), target);
+        self.arm.drive(target, speed, &efforts, &self.settings);
+        self.arm.world.step();
+        SimCounters::count(&self.counters.steps);
+    }
+
+    /// The set-point of the line from `start` (θ1..θ3) along `delta` at `fraction`:
+    /// θ5 keeps the camera vertical (inside its limits), θ4 = θ6 = 0.
+    fn set_point(&self, start: &Controlled, delta: &Controlled, fraction: f64) -> Joints {
+        let model = self.model();
+        let mut q = model.full_pose(&(start + delta * fraction));
+        let wrist = &model.joints()[4];
+        q[4] = q[4].clamp(wrist.lower, wrist.upper);
+        q
+    }
+
+    /// Feeds the move from set-point `start` along `delta` (θ1..θ3) to the servos under the
+    /// trapezoidal profile, one tick per step; returns the steps taken.
+    pub(super) fn follow(&mut self, start: &Joints, delta: &Controlled) -> usize {
+        let moves = self.settings.moves;
+        let profile = TrapezoidProfile::new(delta.amax(), moves.speed, moves.accel);
+        let dt = self.settings.dt;
+        let ticks = (profile.duration() / dt).ceil() as usize;
+        let from = start.fixed_rows::<3>(0).into_owned();
+        let mut now = self.set_point(&from, delta, 0.0);
+        for k in 0..ticks {
+            let next = self.set_point(&from, delta, profile.fraction_at((k + 1) as f64 * dt));
+            self.tick(&now, &((next - now) / dt));
+            now = next;
+        }
+        ticks
+    }
+
+    /// Steps at the current set-point until the arm has settled or the time-out: whether
+    /// it settled (a time-out is counted), and the steps taken (at least one).
+    pub(super) fn settle(&mut self) -> (bool, usize) {
+        let target = self.plan.joints();
+        let still = Joints::zeros();
+        let limit = self.settings.settle_steps().max(1);
+        for step in 1..=limit {
+            self.tick(&target, &still);
+            if self.is_settled(&target) {
+                return (true, step);
+            }
+        }
+        SimCounters::count(&self.counters.settle_timeouts);
+        (false, limit)
+    }
+
+    /// True when every joint is within the position tolerance of `target` and slower than
+    /// the speed tolerance.
+    fn is_settled(&self, target: &Joints) -> bool {
+        let s = &self.settings;
+        (self.arm.joints() - target).amax() <= s.settle_position_tol
+            && self.arm.speeds().amax() <= s.settle_speed_tol
+    }
+}

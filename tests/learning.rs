@@ -1,0 +1,59 @@
+//! Learners on the real (kinematic) simulator with loose bounds: each must actually learn
+//! the eye-hand mapping from its own moves.
+
+use eyehand::experiment::{run, Config, RunOptions, RunSummary};
+use eyehand::learn::Method;
+
+fn run_method(method: Method, trials: usize, seed: u64) -> RunSummary {
+    let data = tempfile::tempdir().unwrap();
+    let mut config = Config::default_config();
+    config.method = method;
+    config.trials = trials;
+    config.seed = seed;
+    let options = RunOptions {
+        config,
+        config_name: "test".into(),
+        urdf: None,
+        data_dir: data.path().to_path_buf(),
+        events: Vec::new(),
+        progress: false,
+        plot: false,
+    };
+    run(&options).unwrap().summary
+}
+
+fn step(summary: &RunSummary, n: usize) -> f64 {
+    summary.mean_distance_mm[n - 1].expect("the step was taken")
+}
+
+#[test]
+fn lin5_reaches_below_a_millimetre_after_four_steps_within_3000_trials() {
+    let summary = run_method(Method::Lin5, 3000, 1);
+    println!(
+        "lin5, 3000 trials: {:?} mm, {} nodes",
+        summary.mean_distance_mm, summary.nodes
+    );
+    assert!(
+        step(&summary, 4) < 1.0,
+        "4-step mean {} mm",
+        step(&summary, 4)
+    );
+    assert!(summary.nodes > 50, "the tree grew: {} nodes", summary.nodes);
+    assert!(summary.failures < 300, "{} failures", summary.failures);
+}
+
+#[test]
+fn ffn_gets_within_a_centimetre_after_five_steps_within_400_trials() {
+    let summary = run_method(Method::Ffn, 400, 1);
+    println!("ffn, 400 trials: {:?} mm", summary.mean_distance_mm);
+    assert!(step(&summary, 5) < 10.0, "5-step mean {} mm", step(&summary, 5));
+    assert!(step(&summary, 5) < step(&summary, 1) / 4.0, "feedback steps close in");
+}
+
+#[test]
+fn kohonen_gets_within_three_centimetres_after_five_steps_within_1000_trials() {
+    let summary = run_method(Method::Kohonen, 1000, 1);
+    println!("kohonen, 1000 trials: {:?} mm", summary.mean_distance_mm);
+    assert!(step(&summary, 5) < 30.0, "5-step mean {} mm", step(&summary, 5));
+    assert_eq!(summary.nodes, 16_807, "a 7⁵ map");
+}

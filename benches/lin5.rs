@@ -16,7 +16,12 @@ fn main() {
     println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for split_error in ["1e-4", "1e-5"] {
         let set = format!("split_error={split_error}");
-        let run = run_cli(data.path(), &["--config", config, "--trials", "50000", "--seed", "1", "--set", &set]);
+        let run = run_cli(
+            data.path(),
+            &[
+                "--config", config, "--trials", "50000", "--seed", "1", "--set", &set,
+            ],
+        );
         let s = &run.summary;
         let steps: Vec<String> = s.mean_distance_mm.iter().map(|d| mm(*d)).collect();
         println!(

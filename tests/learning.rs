@@ -46,14 +46,25 @@ fn lin5_reaches_below_a_millimetre_after_four_steps_within_3000_trials() {
 fn ffn_gets_within_a_centimetre_after_five_steps_within_400_trials() {
     let summary = run_method(Method::Ffn, 400, 1);
     println!("ffn, 400 trials: {:?} mm", summary.mean_distance_mm);
-    assert!(step(&summary, 5) < 10.0, "5-step mean {} mm", step(&summary, 5));
-    assert!(step(&summary, 5) < step(&summary, 1) / 4.0, "feedback steps close in");
+    assert!(
+        step(&summary, 5) < 10.0,
+        "5-step mean {} mm",
+        step(&summary, 5)
+    );
+    assert!(
+        step(&summary, 5) < step(&summary, 1) / 4.0,
+        "feedback steps close in"
+    );
 }
 
 #[test]
 fn kohonen_gets_within_three_centimetres_after_five_steps_within_1000_trials() {
     let summary = run_method(Method::Kohonen, 1000, 1);
     println!("kohonen, 1000 trials: {:?} mm", summary.mean_distance_mm);
-    assert!(step(&summary, 5) < 30.0, "5-step mean {} mm", step(&summary, 5));
+    assert!(
+        step(&summary, 5) < 30.0,
+        "5-step mean {} mm",
+        step(&summary, 5)
+    );
     assert_eq!(summary.nodes, 16_807, "a 7⁵ map");
 }

@@ -23,7 +23,11 @@ pub fn run_cli(data: &Path, args: &[&str]) -> Finished {
         .args(["--quiet", "--no-plot"])
         .output()
         .expect("eyehand runs");
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
     let folder = PathBuf::from(String::from_utf8_lossy(&output.stdout).trim());
     let json = std::fs::read_to_string(folder.join("summary.json")).expect("summary.json");
     Finished {
@@ -40,7 +44,11 @@ pub fn rate_between(folder: &Path, from: usize, to: usize) -> f64 {
             return 0.0;
         }
         let line = text.lines().nth(trial - 1).expect("the trial was run");
-        line.split(' ').nth(2).expect("a minutes column").parse().expect("minutes")
+        line.split(' ')
+            .nth(2)
+            .expect("a minutes column")
+            .parse()
+            .expect("minutes")
     };
     (to - from) as f64 / ((minutes_at(to) - minutes_at(from)) * 60.0).max(1e-9)
 }

@@ -93,7 +93,7 @@ pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
         plot: !args.no_plot,
     };
     let result = experiment::run(&options).map_err(|e| match e {
-        RunError::Urdf(_) | RunError::Unavailable(_) | RunError::Event { .. } => bad_input(e),
+        RunError::Urdf(_) | RunError::Event { .. } => bad_input(e),
         _ => failed(e),
     })?;
     println!("{}", result.folder.display());

@@ -54,9 +54,6 @@ pub enum RunError {
     /// The learner could not be built or failed.
     #[error(transparent)]
     Learner(#[from] LearnError),
-    /// A simulator or camera this build does not have yet.
-    #[error("{0}")]
-    Unavailable(String),
     /// An event the robot cannot undergo.
     #[error("event {event}: {source}")]
     Event {

@@ -119,7 +119,11 @@ mod tests {
     /// Errors like a learning tree's: log-normal around `level`, with rare outliers.
     fn error(rng: &mut ChaCha8Rng, level: f64) -> f64 {
         let noise: f64 = (0..4).map(|_| rng.random_range(-1.0..1.0)).sum::<f64>() * 0.6;
-        let outlier = if rng.random_range(0.0..1.0) < 0.002 { 200.0 } else { 1.0 };
+        let outlier = if rng.random_range(0.0..1.0) < 0.002 {
+            200.0
+        } else {
+            1.0
+        };
         level * noise.exp() * outlier
     }
 

@@ -224,6 +224,16 @@ config_entries! {
     wrange: f64,
     /// nnw: hidden units per network.
     hidden_units: usize,
+    /// ffn: hidden units of the single network.
+    ffn_hidden_units: usize,
+    /// ffn: most recent patterns the network is trained on.
+    ffn_window: usize,
+    /// ffn: conjugate-gradient iterations after each trial.
+    ffn_cg_iterations: usize,
+    /// kohonen: neurons per side of the 5-D lattice.
+    kohonen_side: usize,
+    /// kohonen: patterns over which neighbourhood and rates shrink.
+    kohonen_anneal_patterns: usize,
 }
 
 impl Config {
@@ -455,6 +465,22 @@ impl Config {
             "must be 1, 2 or 3",
         )?;
         check(self.hidden_units >= 1, "hidden_units", "must be at least 1")?;
+        check(
+            self.ffn_hidden_units >= 1,
+            "ffn_hidden_units",
+            "must be at least 1",
+        )?;
+        check(self.ffn_window >= 1, "ffn_window", "must be at least 1")?;
+        check(
+            (2..=12).contains(&self.kohonen_side),
+            "kohonen_side",
+            "must be 2 to 12",
+        )?;
+        check(
+            self.kohonen_anneal_patterns >= 1,
+            "kohonen_anneal_patterns",
+            "must be at least 1",
+        )?;
         Ok(())
     }
 }

@@ -77,9 +77,11 @@ pub fn build_learner(
         ))),
         Method::Ffn => {
             let settings = FfnSettings {
+                hidden_units: config.ffn_hidden_units,
                 wrange: config.wrange,
+                window: config.ffn_window,
+                cg_iterations: config.ffn_cg_iterations,
                 minimal_joint_move: config.minimal_joint_move,
-                ..FfnSettings::default()
             };
             Ok(Box::new(FfnLearner::new(
                 settings,
@@ -89,6 +91,8 @@ pub fn build_learner(
         }
         Method::Kohonen => {
             let settings = KohonenSettings {
+                side: config.kohonen_side,
+                anneal_patterns: config.kohonen_anneal_patterns,
                 minimal_joint_move: config.minimal_joint_move,
                 ..KohonenSettings::default()
             };

@@ -118,6 +118,12 @@ impl<const N: usize> Bins<N> {
         self.bins[id as usize].len as usize
     }
 
+    /// The newest pattern of bin `id`, which must hold one.
+    pub(crate) fn latest(&mut self, id: u32) -> Result<Pattern<N>, LearnError> {
+        debug_assert!(self.bins[id as usize].len > 0);
+        self.records.read(self.bins[id as usize].last)
+    }
+
     /// Calls `f` with each pattern of bin `id`, oldest first.
     pub(crate) fn for_each_pattern(
         &mut self,
@@ -190,6 +196,8 @@ mod tests {
         assert_eq!(bins.len(a), 3);
         bins.store(a, &pattern(5)).unwrap();
         assert_eq!(kept(&mut bins, a), [3, 4, 5]);
+        assert_eq!(bins.latest(a).unwrap(), pattern(5));
+        assert_eq!(bins.latest(b).unwrap(), pattern(7));
         assert_eq!(bins.key(b), key(&[1, 3]));
     }
 

@@ -1,7 +1,8 @@
 //! The nested tree itself: answering, training a pattern down its path, storing it.
 
 use super::{
-    Approximator, BinKey, Bins, BranchRule, Levels, Node, Records, TreeSettings, MAX_DEPTH, NONE,
+    Approximator, BinKey, Bins, BranchRule, Levels, Node, Records, Sample, TreeSettings, MAX_DEPTH,
+    NONE,
 };
 use crate::control::Pattern;
 use crate::learn::{LearnError, LearnerStats};
@@ -55,8 +56,8 @@ impl Path {
 pub(crate) struct NestedTree<A, R, const N: usize> {
     pub(super) settings: TreeSettings,
     pub(super) rule: R,
-    /// The model a new node starts with.
-    fresh: A,
+    /// The model new nodes' models are spawned from.
+    template: A,
     pub(super) nodes: Vec<Node<A, N>>,
     free: Vec<u32>,
     pub(super) bins: Bins<N>,
@@ -64,18 +65,24 @@ pub(crate) struct NestedTree<A, R, const N: usize> {
     pub(super) rng: ChaCha8Rng,
     /// Reused by subtree walks.
     pub(super) scratch: Vec<u32>,
+    /// Nodes that took in patterns since their last re-training (re-trained models only);
+    /// may hold a node twice or one that is gone.
+    pub(super) touched: Vec<u32>,
+    /// Reused by re-training: the bins sampled and their patterns.
+    pub(super) picked: Vec<u32>,
+    pub(super) batch: Vec<Sample<N>>,
 }
 
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
-    /// A tree of one root node with model `fresh`, keeping patterns in `records`; known
-    /// patterns are drawn from `rng`.
+    /// A tree of one root node, its models spawned from `template`, keeping patterns in
+    /// `records`; known patterns (and the models' starts, if drawn) come from `rng`.
     ///
     /// # Panics
     /// If `settings.max_depth` is above [`MAX_DEPTH`] (the config never allows it).
     pub(crate) fn new(
         settings: TreeSettings,
         rule: R,
-        fresh: A,
+        template: A,
         records: Records<N>,
         rng: ChaCha8Rng,
     ) -> Self {
@@ -89,11 +96,14 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             levels: Levels::new(settings.max_depth, settings.monitor_ave),
             settings,
             rule,
-            fresh,
+            template,
             nodes: Vec::new(),
             free: Vec::new(),
             rng,
             scratch: Vec::new(),
+            touched: Vec::new(),
+            picked: Vec::new(),
+            batch: Vec::new(),
         };
         tree.plant_root();
         tree
@@ -155,8 +165,10 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     fn plant_root(&mut self) {
         self.nodes.clear();
         self.free.clear();
+        self.touched.clear();
         let window = self.settings.am_error_iters;
-        let root = Node::new(self.fresh.clone(), *self.rule.root(), NONE, 0, 0, window);
+        let model = self.template.spawn(&mut self.rng);
+        let root = Node::new(model, *self.rule.root(), NONE, 0, 0, window);
         self.nodes.push(root);
         self.levels.node_added(0);
     }
@@ -196,6 +208,12 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         }
         node.take_in(&pattern.input, &pattern.target, known_share, &mut self.rng);
         node.model.refit();
+        if A::RETRAINED {
+            if node.fresh == 0 {
+                self.touched.push(id);
+            }
+            node.fresh += 1;
+        }
     }
 
     /// Keeps the pattern in its bin, which hangs on node `id`, the deepest on its path.
@@ -223,7 +241,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             (self.rule.child(&p.region, p.depth + 1, branch), p.depth + 1)
         };
         let window = self.settings.am_error_iters;
-        let node = Node::new(self.fresh.clone(), region, parent, branch, depth, window);
+        let model = self.template.spawn(&mut self.rng);
+        let node = Node::new(model, region, parent, branch, depth, window);
         let id = match self.free.pop() {
             Some(id) => {
                 self.nodes[id as usize] = node;
@@ -241,6 +260,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
 
     /// Returns node `id`, already unlinked, to the arena.
     pub(super) fn release(&mut self, id: u32) {
+        self.nodes[id as usize].fresh = 0;
         self.free.push(id);
     }
 }

@@ -34,6 +34,8 @@ pub(crate) struct Node<A, const N: usize> {
     pub(super) patterns: usize,
     /// Of those, the patterns in each sub-box.
     pub(super) box_patterns: [usize; BRANCHES],
+    /// Patterns taken in since the model was last re-trained (re-trained models only).
+    pub(super) fresh: usize,
     known_anchor: Option<SVector<f64, N>>,
     /// Known patterns owed: a fraction of one.
     known_credit: f64,
@@ -61,6 +63,7 @@ impl<A: Approximator<N>, const N: usize> Node<A, N> {
             bins: Vec::new(),
             patterns: 0,
             box_patterns: [0; BRANCHES],
+            fresh: 0,
             known_anchor: region.known_anchor(),
             known_credit: 0.0,
         }

@@ -55,6 +55,16 @@ impl<const N: usize> Region<N> {
         Self::from_centre(centre, quarter)
     }
 
+    /// This box with dimension `j` spanning `low ≤ x ≤ high` instead (`low < high`).
+    pub(crate) fn with_range(&self, j: usize, low: f64, high: f64) -> Self {
+        debug_assert!(low < high);
+        let mut centre = self.centre;
+        let mut half = self.half;
+        centre[j] = 0.5 * (low + high);
+        half[j] = 0.5 * (high - low);
+        Self::from_centre(centre, half)
+    }
+
     /// Where a known pattern lies in local coordinates — joint inputs still to be drawn
     /// (left at 0), every other input at 0 in global terms — or `None` when that point is
     /// outside this box, so that known patterns would make the node extrapolate.

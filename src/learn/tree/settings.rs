@@ -25,6 +25,12 @@ pub(crate) struct TreeSettings {
     pub(crate) monitor_ave: usize,
     /// `known_pattern_perc`: known patterns per 100 regular patterns trained to a node.
     pub(crate) known_pattern_perc: f64,
+    /// `nnw_train_limit`: at most this many stored patterns re-train a node (re-trained
+    /// models only).
+    pub(crate) retrain_limit: usize,
+    /// `nnw_train_delay`: a node is re-trained once it took in this many new patterns
+    /// (at least one; re-trained models only).
+    pub(crate) retrain_delay: usize,
 }
 
 impl TreeSettings {
@@ -40,6 +46,8 @@ impl TreeSettings {
             merge_error: config.merge_error,
             monitor_ave: config.monitor_ave,
             known_pattern_perc: config.known_pattern_perc,
+            retrain_limit: config.nnw_train_limit,
+            retrain_delay: config.nnw_train_delay,
         }
     }
 

@@ -25,6 +25,8 @@ fn still(max_depth: usize) -> TreeSettings {
         merge_error: f64::INFINITY,
         monitor_ave: 50,
         known_pattern_perc: 0.0,
+        retrain_limit: 300,
+        retrain_delay: 15,
     }
 }
 

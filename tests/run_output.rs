@@ -81,7 +81,10 @@ fn the_run_folder_has_every_file_and_summary_field() {
         vec!["elongate:10:2:10".parse().unwrap()],
     );
     assert_eq!(result.folder, data.path().join("ik").join("0"));
-    for name in DATA_FILES.iter().chain(&["mem", "info", "summary.json"]) {
+    for name in DATA_FILES
+        .iter()
+        .chain(&["mem", "merges", "changes", "info", "summary.json"])
+    {
         assert!(result.folder.join(name).is_file(), "{name}");
     }
     let step1 = std::fs::read_to_string(result.folder.join("1step")).unwrap();
@@ -108,6 +111,7 @@ fn the_run_folder_has_every_file_and_summary_field() {
         "bins",
         "patterns",
         "failures",
+        "events",
         "window",
         "mean_distance_mm",
         "median_distance_mm",
@@ -116,6 +120,7 @@ fn the_run_folder_has_every_file_and_summary_field() {
     }
     assert_eq!(json["mean_distance_mm"].as_array().unwrap().len(), 5);
     assert_eq!(json["window"], 3);
+    assert_eq!(json["events"], serde_json::json!(["elongate:10:2:10"]));
     let info = std::fs::read_to_string(result.folder.join("info")).unwrap();
     for name in ENTRY_NAMES {
         assert!(

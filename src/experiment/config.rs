@@ -3,7 +3,7 @@
 //! name given twice, a missing name, a value of the wrong kind (a real number for an
 //! integer) or a value out of range stops with `file:line: reason`.
 
-use super::config_values::{CameraKind, ConfigValue, SimKind};
+use super::config_values::{CameraKind, ConfigValue, MergeStrategy, SimKind};
 use crate::learn::Method;
 use crate::robot::{DynamicSettings, MoveSettings};
 use std::fmt;
@@ -178,6 +178,16 @@ config_entries! {
     minimal_joint_move: f64,
     /// Patterns averaged by the per-level error monitor.
     monitor_ave: usize,
+    /// How changes of the mapping are handled: thesis or change_detection.
+    merge_strategy: MergeStrategy,
+    /// change_detection: rise of the log pattern error above its baseline that counts.
+    change_drift: f64,
+    /// change_detection: alarm level of the CUSUM statistic (log units).
+    change_threshold: f64,
+    /// change_detection: patterns the error baseline averages over.
+    change_baseline: usize,
+    /// change_detection: patterns watched before the first alarm can come.
+    change_warmup: usize,
     /// Absolute merge threshold of a node's running error.
     am_error_tresh: f64,
     /// Patterns averaged for the absolute merge.
@@ -465,6 +475,21 @@ impl Config {
             "must be 1, 2 or 3",
         )?;
         check(self.hidden_units >= 1, "hidden_units", "must be at least 1")?;
+        check(
+            self.change_drift >= 0.0,
+            "change_drift",
+            "must not be negative",
+        )?;
+        check(
+            self.change_threshold > 0.0,
+            "change_threshold",
+            "must be positive",
+        )?;
+        check(
+            self.change_baseline >= 1,
+            "change_baseline",
+            "must be at least 1",
+        )?;
         check(
             self.ffn_hidden_units >= 1,
             "ffn_hidden_units",

@@ -62,7 +62,7 @@ macro_rules! named_value {
         }
     )*};
 }
-named_value!(Method, SimKind, CameraKind);
+named_value!(Method, SimKind, CameraKind, MergeStrategy);
 
 /// Which simulator moves the arm.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -80,6 +80,15 @@ pub enum CameraKind {
     Projection,
     /// Rays through every pixel against the object's collider.
     Raycast,
+}
+
+/// How a nested learner gets rid of what a change of the mapping made wrong.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MergeStrategy {
+    /// The study's absolute and relative merges (§2.4.3), as it ran them.
+    Thesis,
+    /// Global change detection on the stream of pattern errors (§4.4.6) on top of them.
+    ChangeDetection,
 }
 
 macro_rules! choice_names {
@@ -106,6 +115,7 @@ macro_rules! choice_names {
 }
 choice_names!(SimKind, "simulator", Kinematic => "kinematic", Dynamic => "dynamic");
 choice_names!(CameraKind, "camera", Projection => "projection", Raycast => "raycast");
+choice_names!(MergeStrategy, "merge strategy", Thesis => "thesis", ChangeDetection => "change_detection");
 
 #[cfg(test)]
 mod tests {

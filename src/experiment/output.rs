@@ -1,9 +1,10 @@
 //! The run's data files, written as the run goes (flushed at least once a second), so an
 //! interrupted run keeps what it did: `1step` … `5step`, `nodes`, `bins`, `patterns`, `mem`
-//! (trial, value, minutes used) and `abs_err` (trial, error per tree level).
+//! (trial, value, minutes used), `abs_err` (trial, error per tree level), `merges` (trial,
+//! kind, depth, nodes cut) and `changes` (trial of the alarm, estimated trial of the change).
 
 use crate::control::{TrialOutcome, MAX_RECORDED_STEPS};
-use crate::learn::LearnerStats;
+use crate::learn::{LearnerStats, ModelEvent};
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
@@ -20,6 +21,8 @@ pub struct DataFiles {
     patterns: BufWriter<File>,
     mem: BufWriter<File>,
     abs_err: BufWriter<File>,
+    merges: BufWriter<File>,
+    changes: BufWriter<File>,
     started: Instant,
     last_flush: Instant,
 }
@@ -45,6 +48,8 @@ impl DataFiles {
             patterns: create(folder, "patterns")?,
             mem: create(folder, "mem")?,
             abs_err: create(folder, "abs_err")?,
+            merges: create(folder, "merges")?,
+            changes: create(folder, "changes")?,
             started: now,
             last_flush: now,
         })
@@ -92,6 +97,21 @@ impl DataFiles {
             }
         }
         writeln!(self.abs_err)
+    }
+
+    /// Records what the learner did to its model during `trial`.
+    pub fn record_model_events(&mut self, trial: usize, events: &[ModelEvent]) -> io::Result<()> {
+        for event in events {
+            match *event {
+                ModelEvent::Merge { kind, depth, nodes } => {
+                    writeln!(self.merges, "{trial} {kind} {depth} {nodes}")?
+                }
+                ModelEvent::Change { estimated_trial } => {
+                    writeln!(self.changes, "{trial} {estimated_trial}")?
+                }
+            }
+        }
+        Ok(())
     }
 
     /// Writes everything buffered to disk.

@@ -107,6 +107,8 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
     let mut failures = 0;
     let mut progress = RunProgress::new(config.trials, options.progress);
     let started = Instant::now();
+    let mut model_events = Vec::new();
+    learner.start_trial(0);
     trials.prelearn(learner.as_mut())?;
     for trial in 1..=config.trials {
         for event in events.iter().filter(|e| e.trial() == trial) {
@@ -117,10 +119,14 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
                     source,
                 })?;
         }
+        learner.start_trial(trial);
         if learner.take_relearn_request() {
             trials.prelearn(learner.as_mut())?;
         }
         let outcome = trials.run_trial(learner.as_mut())?;
+        learner.drain_events(&mut model_events);
+        files.record_model_events(trial, &model_events)?;
+        model_events.clear();
         failures += usize::from(outcome.failure.is_some());
         figures.record(trial, &outcome.distances_mm);
         let stats = learner.stats();
@@ -147,6 +153,7 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
         bins: stats.bins,
         patterns: stats.patterns,
         failures,
+        events: events.iter().map(Event::to_string).collect(),
         window: figures.window(),
         mean_distance_mm: figures.means(),
         median_distance_mm: figures.medians(),

@@ -30,6 +30,8 @@ pub struct RunSummary {
     pub patterns: usize,
     /// Trials that failed (object lost or not seen, unreachable target, bad move).
     pub failures: usize,
+    /// The run's events (`rotate:TRIAL:DEG`, `elongate:TRIAL:LINK:CM`), in trial order.
+    pub events: Vec<String>,
     /// The number of last trials the distance figures are taken over.
     pub window: usize,
     /// Mean distance (mm) after feedback steps 1..5 over the window (null: no such step).

@@ -9,7 +9,9 @@ mod ffn;
 mod ik;
 mod kohonen;
 mod lin5;
+mod lin8;
 mod method;
+mod model_event;
 pub mod net;
 mod perceptron;
 mod stats;
@@ -20,7 +22,9 @@ pub use ffn::{FfnLearner, FfnSettings};
 pub use ik::IkLearner;
 pub use kohonen::{KohonenLearner, KohonenSettings, Lattice, Neighbourhood};
 pub use lin5::Lin5;
+pub use lin8::Lin8;
 pub use method::Method;
+pub use model_event::{MergeKind, ModelEvent};
 pub use stats::{LearnerStats, LevelStats};
 
 use crate::camera::CameraModel;
@@ -55,6 +59,13 @@ pub trait Learner: std::fmt::Debug {
     fn take_relearn_request(&mut self) -> bool {
         false
     }
+
+    /// Tells the learner which trial comes next (1-based; 0 is pre-learning), so it can
+    /// date what it learns.
+    fn start_trial(&mut self, _trial: usize) {}
+
+    /// Moves the merges and detected changes since the last call into `sink`.
+    fn drain_events(&mut self, _sink: &mut Vec<ModelEvent>) {}
 }
 
 /// Builds the learner the config names. `model` is the nominal robot (for `ik`); a
@@ -65,11 +76,15 @@ pub fn build_learner(
     run_dir: Option<&Path>,
 ) -> Result<Box<dyn Learner>, LearnError> {
     match config.method {
-        Method::Lin5 => {
+        Method::Lin5 | Method::Lin8 => {
             let pat_file = run_dir
                 .filter(|_| config.use_pat_file == 0)
                 .map(|dir| dir.join("pat_file"));
-            Ok(Box::new(Lin5::new(config, pat_file)?))
+            let learner: Box<dyn Learner> = match config.method {
+                Method::Lin8 => Box::new(Lin8::new(config, pat_file)?),
+                _ => Box::new(Lin5::new(config, pat_file)?),
+            };
+            Ok(learner)
         }
         Method::Ik => Ok(Box::new(IkLearner::new(
             model.clone(),

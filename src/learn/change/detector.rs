@@ -41,6 +41,20 @@ impl Default for DetectorSettings {
     }
 }
 
+impl DetectorSettings {
+    /// The settings a config gives (`change_baseline`, `change_warmup`, `change_drift`,
+    /// `change_threshold`).
+    pub fn from_config(config: &crate::experiment::Config) -> DetectorSettings {
+        DetectorSettings {
+            baseline_patterns: config.change_baseline,
+            warmup_patterns: config.change_warmup,
+            drift: config.change_drift,
+            threshold: config.change_threshold,
+            ..DetectorSettings::default()
+        }
+    }
+}
+
 /// A detected change.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Alarm {

@@ -209,5 +209,6 @@ mod tests {
             bins.store(a, &pattern(i)).unwrap();
         }
         assert_eq!(kept(&mut bins, a), [3]);
+        assert_eq!(bins.latest(a).unwrap(), pattern(3));
     }
 }

@@ -45,20 +45,25 @@ mod branch;
 mod levels;
 mod merge;
 mod monitor;
+mod narrowing;
+mod nested_learner;
 mod nested_tree;
 mod node;
 mod region;
+mod retrain;
 mod settings;
 mod split;
 mod store;
 #[cfg(test)]
 mod tests;
 
-pub(crate) use approximator::Approximator;
+pub(crate) use approximator::{Approximator, Sample};
 pub(crate) use bins::Bins;
 pub(crate) use branch::{BinKey, BranchRule, Halving, BRANCHES, MAX_DEPTH};
 pub(crate) use levels::Levels;
 pub(crate) use monitor::Monitor;
+pub(crate) use narrowing::Narrowing;
+pub(crate) use nested_learner::NestedLearner;
 pub(crate) use nested_tree::{NestedTree, TreeEvent};
 pub(crate) use node::{Node, NONE};
 pub(crate) use region::Region;

@@ -148,10 +148,17 @@ mod tests {
                 let (low, high) = (region.low()[j], region.high()[j]);
                 assert!(low <= x[j] && x[j] <= high, "depth {depth}, input {j}");
                 let expected = if j < 5 { width } else { 2.0 * d_half };
-                assert!((high - low - expected).abs() < 1e-12, "depth {depth}, input {j}");
+                assert!(
+                    (high - low - expected).abs() < 1e-12,
+                    "depth {depth}, input {j}"
+                );
             }
             // d = 0 sits in the middle of every d box.
-            assert!(region.local(&point([0.0; 3])).rows(5, 3).iter().all(|&u| u == 0.0));
+            assert!(region
+                .local(&point([0.0; 3]))
+                .rows(5, 3)
+                .iter()
+                .all(|&u| u == 0.0));
         }
     }
 }

@@ -8,7 +8,8 @@
 //!   `split_error`.
 //!
 //! The bins the child covers sink onto it, and the child is trained at once with their
-//! patterns (bin by bin, each bin oldest first) and the known patterns they earn.
+//! patterns (bin by bin, each bin oldest first) and the known patterns they earn; a model
+//! that is re-trained (see [`retrain`](super::retrain)) is re-trained on them right after.
 
 use super::{Approximator, BinKey, BranchRule, NestedTree, NONE};
 use crate::learn::LearnError;
@@ -85,6 +86,9 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             })?;
         }
         node.model.refit();
+        if A::RETRAINED {
+            self.retrain(child)?;
+        }
         Ok(child)
     }
 }

@@ -1,6 +1,8 @@
 //! Tests of the tree's structure: splits, merges, bins and the per-depth counters.
 
 mod events;
+mod narrowing;
+mod retraining;
 
 use super::*;
 use crate::control::Pattern;
@@ -66,7 +68,9 @@ fn train_random(tree: &mut Tree, n: usize, rng: &mut ChaCha8Rng) -> Vec<TreeEven
 }
 
 /// Nodes reachable from the root, root first.
-fn reachable(tree: &Tree) -> Vec<u32> {
+fn reachable<A: Approximator<N>, R: BranchRule<N>, const N: usize>(
+    tree: &NestedTree<A, R, N>,
+) -> Vec<u32> {
     let mut found = vec![ROOT];
     let mut i = 0;
     while i < found.len() {
@@ -78,7 +82,9 @@ fn reachable(tree: &Tree) -> Vec<u32> {
 }
 
 /// Counts per depth by walking the tree, and checks every bin hangs where it should.
-fn recount(tree: &Tree) -> Vec<(usize, usize, usize)> {
+fn recount<A: Approximator<N>, R: BranchRule<N>, const N: usize>(
+    tree: &NestedTree<A, R, N>,
+) -> Vec<(usize, usize, usize)> {
     let mut counts = vec![(0, 0, 0); tree.settings.max_depth + 1];
     let mut seen_bins = 0;
     for id in reachable(tree) {
@@ -108,13 +114,41 @@ fn recount(tree: &Tree) -> Vec<(usize, usize, usize)> {
     counts
 }
 
-fn counters(tree: &Tree) -> Vec<(usize, usize, usize)> {
+fn counters<A: Approximator<N>, R: BranchRule<N>, const N: usize>(
+    tree: &NestedTree<A, R, N>,
+) -> Vec<(usize, usize, usize)> {
     let stats = tree.stats();
     stats
         .levels
         .iter()
         .map(|l| (l.nodes, l.bins, l.patterns))
         .collect()
+}
+
+/// A model that only keeps count: patterns taken in and the batches it was re-trained on
+/// (when `RETRAINED`). It answers zero.
+#[derive(Debug, Clone, Default)]
+struct Tally<const RETRAINED: bool, const N: usize> {
+    added: usize,
+    batches: Vec<Vec<Sample<N>>>,
+}
+
+impl<const RETRAINED: bool, const N: usize> Approximator<N> for Tally<RETRAINED, N> {
+    const RETRAINED: bool = RETRAINED;
+
+    fn add(&mut self, _input: &SVector<f64, N>, _target: &Vector3<f64>) {
+        self.added += 1;
+    }
+
+    fn refit(&mut self) {}
+
+    fn answer(&self, _input: &SVector<f64, N>) -> Option<Vector3<f64>> {
+        Some(Vector3::zeros())
+    }
+
+    fn retrain(&mut self, batch: &[Sample<N>]) {
+        self.batches.push(batch.to_vec());
+    }
 }
 
 fn bins_of(tree: &Tree, id: u32) -> BTreeSet<u32> {

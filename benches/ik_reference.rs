@@ -24,16 +24,11 @@ fn main() {
         config.trials = TRIALS;
         config.seed = SEED;
         let options = RunOptions {
-            config,
-            config_name: "bench".into(),
-            urdf: None,
-            data_dir: data.path().to_path_buf(),
             events: event
                 .iter()
                 .map(|e| e.parse().expect("a valid event"))
                 .collect(),
-            progress: false,
-            plot: false,
+            ..RunOptions::new(config, data.path())
         };
         let summary = run(&options).expect("the run succeeds").summary;
         let cells: Vec<String> = summary

@@ -306,16 +306,11 @@ fn every_learner_closes_its_loop_over_the_dynamic_sim() {
         config.trials = 25;
         config.seed = 3;
         let options = RunOptions {
-            config,
-            config_name: "dynamic contract".into(),
-            urdf: None,
-            data_dir: data.path().to_path_buf(),
             events: vec![
                 "elongate:10:2:5".parse().unwrap(),
                 "rotate:15:20".parse().unwrap(),
             ],
-            progress: false,
-            plot: false,
+            ..RunOptions::new(config, data.path())
         };
         let result = match run(&options) {
             // A learner not built yet.

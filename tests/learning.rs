@@ -10,16 +10,7 @@ fn run_method(method: Method, trials: usize, seed: u64) -> RunSummary {
     config.method = method;
     config.trials = trials;
     config.seed = seed;
-    let options = RunOptions {
-        config,
-        config_name: "test".into(),
-        urdf: None,
-        data_dir: data.path().to_path_buf(),
-        events: Vec::new(),
-        progress: false,
-        plot: false,
-    };
-    run(&options).unwrap().summary
+    run(&RunOptions::new(config, data.path())).unwrap().summary
 }
 
 fn step(summary: &RunSummary, n: usize) -> f64 {

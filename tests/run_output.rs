@@ -15,13 +15,8 @@ fn run_in(data: &Path, method: Method, trials: usize, seed: u64, events: Vec<Eve
     config.trials = trials;
     config.seed = seed;
     let options = RunOptions {
-        config,
-        config_name: "test".into(),
-        urdf: None,
-        data_dir: data.to_path_buf(),
         events,
-        progress: false,
-        plot: false,
+        ..RunOptions::new(config, data)
     };
     run(&options).unwrap()
 }

@@ -34,13 +34,9 @@ fn a_run_plot_is_a_png_with_every_panel_drawn() {
     config.method = Method::Ik;
     config.trials = 120;
     let options = RunOptions {
-        config,
-        config_name: "test".into(),
-        urdf: None,
-        data_dir: data.path().to_path_buf(),
         events: vec!["rotate:60:30".parse().unwrap()],
-        progress: false,
         plot: true,
+        ..RunOptions::new(config, data.path())
     };
     let folder = run(&options).unwrap().folder;
     let png = folder.join("plot.png");

@@ -13,14 +13,20 @@ use nalgebra::{Isometry3, Point3, Vector3};
 
 /// Something that produces the camera reading for a camera pose and an object position.
 pub trait Camera: std::fmt::Debug {
-    /// The reading c = (cx, cy in pixels, cz the area measure) of the object whose centre
-    /// is at `object` (world, m), seen from `camera_pose`, or why it is not seen.
+    /// The reading c = (cx, cy in pixels, cz the area measure) of a sphere whose centre is
+    /// at `p` in the camera frame (z along the optical axis), or why it is not seen.
+    fn read_local(&self, p: &Vector3<f64>) -> Result<Vector3<f64>, NotSeen>;
+
+    /// The camera's intrinsics and object.
+    fn model(&self) -> &CameraModel;
+
+    /// The reading of the object whose centre is at `object` (world, m), seen from
+    /// `camera_pose`, or why it is not seen.
     fn read(
         &self,
         camera_pose: &Isometry3<f64>,
         object: &Point3<f64>,
-    ) -> Result<Vector3<f64>, NotSeen>;
-
-    /// The camera's intrinsics and object.
-    fn model(&self) -> &CameraModel;
+    ) -> Result<Vector3<f64>, NotSeen> {
+        self.read_local(&camera_pose.inverse_transform_point(object).coords)
+    }
 }

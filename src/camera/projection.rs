@@ -9,7 +9,7 @@
 
 use super::model::{CameraModel, NotSeen};
 use super::Camera;
-use nalgebra::{Isometry3, Matrix3, Point3, Vector3};
+use nalgebra::{Matrix3, Vector3};
 
 /// The sphere's exact analytic image.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -30,21 +30,6 @@ impl ProjectionCamera {
     /// A projection camera with these intrinsics.
     pub fn new(model: CameraModel) -> ProjectionCamera {
         ProjectionCamera { model }
-    }
-
-    /// The reading of a sphere centre `p` given in the camera frame.
-    pub fn read_local(&self, p: &Vector3<f64>) -> Result<Vector3<f64>, NotSeen> {
-        if p.z.is_nan() || p.z < self.model.min_depth {
-            return Err(NotSeen::TooClose);
-        }
-        let ellipse = self.ellipse(p)?;
-        let (u, v) = ellipse.centre;
-        let inside = u.abs() + ellipse.half_width <= 0.5 * self.model.width
-            && v.abs() + ellipse.half_height <= 0.5 * self.model.height;
-        if !inside {
-            return Err(NotSeen::OutsideFrame);
-        }
-        Ok(Vector3::new(u, v, self.model.cz_from_area(ellipse.area)))
     }
 
     /// The image of a sphere centred at `p` (camera frame), wherever it is in front.
@@ -116,12 +101,18 @@ impl ProjectionCamera {
 }
 
 impl Camera for ProjectionCamera {
-    fn read(
-        &self,
-        camera_pose: &Isometry3<f64>,
-        object: &Point3<f64>,
-    ) -> Result<Vector3<f64>, NotSeen> {
-        self.read_local(&(camera_pose.inverse_transform_point(object).coords))
+    fn read_local(&self, p: &Vector3<f64>) -> Result<Vector3<f64>, NotSeen> {
+        if p.z.is_nan() || p.z < self.model.min_depth {
+            return Err(NotSeen::TooClose);
+        }
+        let ellipse = self.ellipse(p)?;
+        let (u, v) = ellipse.centre;
+        let inside = u.abs() + ellipse.half_width <= 0.5 * self.model.width
+            && v.abs() + ellipse.half_height <= 0.5 * self.model.height;
+        if !inside {
+            return Err(NotSeen::OutsideFrame);
+        }
+        Ok(Vector3::new(u, v, self.model.cz_from_area(ellipse.area)))
     }
 
     fn model(&self) -> &CameraModel {

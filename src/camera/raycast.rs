@@ -11,7 +11,7 @@
 
 use super::model::{CameraModel, NotSeen};
 use super::Camera;
-use nalgebra::{Isometry3, Point3, Vector3};
+use nalgebra::Vector3;
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::parry::query::{Ray, RayCast};
 use rapier3d_f64::parry::shape::Ball;
@@ -42,8 +42,34 @@ impl RaycastCamera {
         self.resolution
     }
 
-    /// The reading of a sphere centre `p` given in the camera frame.
-    pub fn read_local(&self, p: &Vector3<f64>) -> Result<Vector3<f64>, NotSeen> {
+    /// The rays (column or row indices) that can hit the sphere whose centre lies at
+    /// `lateral` across and `depth` along the optical axis, on an image side of `size` px;
+    /// `None` when they all miss the image.
+    /// The tangent planes u·z = f·x through the camera centre meet the sphere where
+    /// (d² − r²)u² − 2f·x·d·u + f²(x² − r²) = 0; when the camera is inside the sphere's
+    /// slab (d ≤ r) every ray is a candidate.
+    fn span(&self, lateral: f64, depth: f64, size: f64) -> Option<RangeInclusive<usize>> {
+        let m = &self.model;
+        let n = self.resolution;
+        let r = m.object_radius;
+        let a = depth * depth - r * r;
+        let root = lateral * lateral + a;
+        if a <= 0.0 || root < 0.0 {
+            return Some(0..=n - 1);
+        }
+        let spread = r * root.sqrt();
+        let low = m.focal * (lateral * depth - spread) / a;
+        let high = m.focal * (lateral * depth + spread) / a;
+        let cell = size / n as f64;
+        let index = |u: f64| (u + 0.5 * size) / cell - 0.5;
+        let first = (index(low).floor() - 1.0).max(0.0);
+        let last = (index(high).ceil() + 1.0).min((n - 1) as f64);
+        (first <= last).then_some(first as usize..=last as usize)
+    }
+}
+
+impl Camera for RaycastCamera {
+    fn read_local(&self, p: &Vector3<f64>) -> Result<Vector3<f64>, NotSeen> {
         let m = &self.model;
         if !(p.iter().all(|v| v.is_finite()) && p.z >= m.min_depth) {
             return Err(NotSeen::TooClose);
@@ -81,41 +107,6 @@ impl RaycastCamera {
             sum_v / count as f64,
             m.cz_from_area(area),
         ))
-    }
-
-    /// The rays (column or row indices) that can hit the sphere whose centre lies at
-    /// `lateral` across and `depth` along the optical axis, on an image side of `size` px;
-    /// `None` when they all miss the image.
-    /// The tangent planes u·z = f·x through the camera centre meet the sphere where
-    /// (d² − r²)u² − 2f·x·d·u + f²(x² − r²) = 0; when the camera is inside the sphere's
-    /// slab (d ≤ r) every ray is a candidate.
-    fn span(&self, lateral: f64, depth: f64, size: f64) -> Option<RangeInclusive<usize>> {
-        let m = &self.model;
-        let n = self.resolution;
-        let r = m.object_radius;
-        let a = depth * depth - r * r;
-        let root = lateral * lateral + a;
-        if a <= 0.0 || root < 0.0 {
-            return Some(0..=n - 1);
-        }
-        let spread = r * root.sqrt();
-        let low = m.focal * (lateral * depth - spread) / a;
-        let high = m.focal * (lateral * depth + spread) / a;
-        let cell = size / n as f64;
-        let index = |u: f64| (u + 0.5 * size) / cell - 0.5;
-        let first = (index(low).floor() - 1.0).max(0.0);
-        let last = (index(high).ceil() + 1.0).min((n - 1) as f64);
-        (first <= last).then_some(first as usize..=last as usize)
-    }
-}
-
-impl Camera for RaycastCamera {
-    fn read(
-        &self,
-        camera_pose: &Isometry3<f64>,
-        object: &Point3<f64>,
-    ) -> Result<Vector3<f64>, NotSeen> {
-        self.read_local(&(camera_pose.inverse_transform_point(object).coords))
     }
 
     fn model(&self) -> &CameraModel {

@@ -41,6 +41,22 @@ pub struct RunOptions {
     pub plot: bool,
 }
 
+impl RunOptions {
+    /// Options for a run of `config` into `data_dir`: the shipped URDF, no events beyond the
+    /// config's, no progress bar, no plot.
+    pub fn new(config: Config, data_dir: impl Into<PathBuf>) -> RunOptions {
+        RunOptions {
+            config,
+            config_name: "(given in code)".into(),
+            urdf: None,
+            data_dir: data_dir.into(),
+            events: Vec::new(),
+            progress: false,
+            plot: false,
+        }
+    }
+}
+
 /// Why a run could not start or go on.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]

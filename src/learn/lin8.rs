@@ -70,10 +70,13 @@ impl Learner for Lin8 {
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        self.nested.answer(&Self::input(query))
+        let a = self.nested.answer(&Self::input(query));
+        eprintln!("DBG propose {:?} -> {a:?}", query);
+        a
     }
 
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
+        eprintln!("DBG learn {:?}", path);
         self.nested.learn(path)
     }
 

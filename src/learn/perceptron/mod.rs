@@ -80,16 +80,21 @@ mod tests {
 
     type P5 = Perceptron<5, 6>;
 
-    fn random_input(rng: &mut ChaCha8Rng) -> SVector<f64, 5> {
+    type P8 = Perceptron<8, 9>;
+
+    fn random_input<const N: usize>(rng: &mut ChaCha8Rng) -> SVector<f64, N> {
         SVector::from_fn(|_, _| rng.random_range(-1.0..=1.0))
     }
 
-    fn random_map(rng: &mut ChaCha8Rng) -> SMatrix<f64, 3, 6> {
+    fn random_map<const M: usize>(rng: &mut ChaCha8Rng) -> SMatrix<f64, 3, M> {
         SMatrix::from_fn(|_, _| rng.random_range(-10.0..=10.0))
     }
 
-    fn apply(map: &SMatrix<f64, 3, 6>, u: &SVector<f64, 5>) -> Vector3<f64> {
-        map * P5::augmented(u)
+    fn apply<const N: usize, const M: usize>(
+        map: &SMatrix<f64, 3, M>,
+        u: &SVector<f64, N>,
+    ) -> Vector3<f64> {
+        map * Perceptron::<N, M>::augmented(u)
     }
 
     fn train(p: &mut P5, map: &SMatrix<f64, 3, 6>, n: usize, rng: &mut ChaCha8Rng) {
@@ -121,7 +126,7 @@ mod tests {
     #[test]
     fn incremental_sums_equal_a_batch_least_squares_fit() {
         let mut rng = ChaCha8Rng::seed_from_u64(2);
-        let map = random_map(&mut rng);
+        let map = random_map::<6>(&mut rng);
         let mut p = P5::new(3, 10_000);
         let n = 300;
         let mut a = DMatrix::<f64>::zeros(n, 6);
@@ -165,7 +170,7 @@ mod tests {
     #[test]
     fn a_singular_system_has_no_answer() {
         let mut rng = ChaCha8Rng::seed_from_u64(4);
-        let map = random_map(&mut rng);
+        let map = random_map::<6>(&mut rng);
         let fit = |inputs: &mut dyn FnMut(&mut ChaCha8Rng) -> SVector<f64, 5>, n: usize| {
             let mut rng = ChaCha8Rng::seed_from_u64(5);
             let mut p = P5::new(2, 1000);
@@ -187,17 +192,66 @@ mod tests {
             "fewer patterns than unknowns"
         );
         let mut flat = |rng: &mut ChaCha8Rng| {
-            let mut u = random_input(rng);
+            let mut u = random_input::<5>(rng);
             u[2] = 0.25;
             u
         };
         assert_eq!(fit(&mut flat, 100), None, "an input that never varies");
         let mut tied = |rng: &mut ChaCha8Rng| {
-            let mut u = random_input(rng);
+            let mut u = random_input::<5>(rng);
             u[3] = 0.5 * u[1] - 0.2 * u[0];
             u
         };
         assert_eq!(fit(&mut tied, 100), None, "inputs that move together");
         assert!(fit(&mut random_input, 100).is_some());
+    }
+
+    #[test]
+    fn recovers_a_linear_8_input_map_exactly() {
+        let mut rng = ChaCha8Rng::seed_from_u64(6);
+        let map = random_map::<9>(&mut rng);
+        let mut p = P8::new(5, 1000);
+        for _ in 0..60 {
+            let u = random_input::<8>(&mut rng);
+            p.add(&u, &apply(&map, &u));
+        }
+        p.refit();
+        for _ in 0..50 {
+            let u = random_input::<8>(&mut rng);
+            let miss = (p.answer(&u).expect("fitted") - apply(&map, &u)).amax();
+            assert!(miss < 1e-9, "{miss}");
+        }
+    }
+
+    #[test]
+    fn inputs_that_stayed_at_zero_get_no_weight_and_the_rest_is_exact() {
+        // lin8 before its first trial: every pattern ends at d = 0 (give or take rounding).
+        let mut rng = ChaCha8Rng::seed_from_u64(7);
+        let map = random_map::<9>(&mut rng);
+        let mut p = P8::new(2, 1000);
+        let at_d_zero = |rng: &mut ChaCha8Rng| {
+            let mut u = random_input::<8>(rng);
+            u.fixed_rows_mut::<3>(5).fill(0.0);
+            u[6] = 1e-15;
+            u
+        };
+        for _ in 0..30 {
+            let u = at_d_zero(&mut rng);
+            p.add(&u, &apply(&map, &u));
+        }
+        p.refit();
+        let u = at_d_zero(&mut rng);
+        assert!((p.answer(&u).expect("fitted") - apply(&map, &u)).amax() < 1e-9);
+        let weights = p.weights.expect("fitted");
+        assert!(weights.columns(5, 3).iter().all(|&w| w == 0.0));
+        // Once d varies, it is fitted like any input.
+        for _ in 0..30 {
+            let u = random_input::<8>(&mut rng);
+            p.add(&u, &apply(&map, &u));
+        }
+        p.refit();
+        let u = random_input::<8>(&mut rng);
+        // The current set still holds the d = 0 patterns, which the map fits too.
+        assert!((p.answer(&u).expect("fitted") - apply(&map, &u)).amax() < 1e-9);
     }
 }

@@ -5,6 +5,9 @@ use nalgebra::{Const, DimMin, SMatrix, SVector};
 /// Below this reciprocal condition estimate a fit counts as singular: its coefficients
 /// would carry less than about six correct digits.
 const MIN_RCOND: f64 = 1e-10;
+/// An input whose root mean square (in the node's local coordinates, where the box is
+/// [−1, 1]) stays below this carries no information: it never left the box's middle.
+const IDLE: f64 = 1e-9;
 
 /// Σ z zᵀ and Σ z tᵀ over the patterns (z the input with a trailing 1, t the target) of
 /// one sum-set: the normal equations (Σ z zᵀ) W = Σ z tᵀ of the least-squares fit
@@ -37,21 +40,36 @@ impl<const M: usize> NormalSums<M> {
     }
 
     /// The least-squares coefficients (one row per joint), or `None` when the system is
-    /// singular or ill-conditioned.
+    /// singular or ill-conditioned, or holds no pattern.
     ///
-    /// The matrix is first equilibrated to a unit diagonal; then an LU decomposition with
-    /// partial pivoting is made once and solved for the three joints. The ratio of its
-    /// smallest to largest pivot estimates the reciprocal condition number.
+    /// An input that never left the middle of the box (its root mean square is below
+    /// [`IDLE`]) is idle: its coefficient is undetermined and set to 0, the least-norm
+    /// choice, which answers exactly wherever that input is 0 again. (lin8's readings after
+    /// the move are idle at first: pre-learning and known patterns all end at d = 0, the
+    /// middle of its d box, as every query asks.) The matrix of the other inputs is
+    /// equilibrated to a unit diagonal; an LU decomposition with partial pivoting is made
+    /// once and solved for the three joints. The ratio of its smallest to largest pivot
+    /// estimates the reciprocal condition number.
     pub(super) fn solve(&self) -> Option<SMatrix<f64, 3, M>>
     where
         Const<M>: DimMin<Const<M>, Output = Const<M>>,
     {
         let diagonal = self.zz.diagonal();
-        if !diagonal.iter().all(|&d| d > 0.0 && d.is_finite()) {
+        // The constant's diagonal counts the patterns.
+        let count = diagonal[M - 1];
+        if !(count > 0.0 && diagonal.iter().all(|&d| d >= 0.0 && d.is_finite())) {
             return None;
         }
-        let scale: SVector<f64, M> = diagonal.map(|d| d.sqrt().recip());
-        let lu = self.zz.component_mul(&(scale * scale.transpose())).lu();
+        let idle = |d: f64| d <= IDLE * IDLE * count;
+        // A zero scale drops an idle input's row and column.
+        let scale: SVector<f64, M> = diagonal.map(|d| if idle(d) { 0.0 } else { d.sqrt().recip() });
+        let mut equilibrated = self.zz.component_mul(&(scale * scale.transpose()));
+        for (i, &d) in diagonal.iter().enumerate() {
+            if idle(d) {
+                equilibrated[(i, i)] = 1.0;
+            }
+        }
+        let lu = equilibrated.lu();
         let pivots = lu.u().diagonal().map(f64::abs);
         // (False for NaN pivots too.)
         let well_conditioned = pivots.min() > MIN_RCOND * pivots.max();

@@ -58,7 +58,7 @@ fn trials(method: Method, sim: SimKind, count: usize) -> Row {
     let camera = Box::new(ProjectionCamera::new(CameraModel::default()));
     let mut learner = build_learner(&config, &model, None).expect("the learner builds");
     let mut loop_ = TrialLoop::new(simulator, camera, settings, SEED);
-    let mut figures = StepFigures::new(count);
+    let mut figures = StepFigures::new(count, 5);
     let mut failures = 0;
     let started = Instant::now();
     loop_.prelearn(learner.as_mut()).expect("pre-learning");

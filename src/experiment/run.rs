@@ -119,7 +119,7 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
     };
     let mut trials = TrialLoop::new(sim, camera, settings, config.seed);
     let mut files = DataFiles::create(&folder)?;
-    let mut figures = StepFigures::new(config.trials);
+    let mut figures = StepFigures::new(config.trials, config.feedback_steps);
     let mut failures = 0;
     let mut progress = RunProgress::new(config.trials, options.progress);
     let started = Instant::now();
@@ -173,6 +173,7 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
         window: figures.window(),
         mean_distance_mm: figures.means(),
         median_distance_mm: figures.medians(),
+        mean_distance_by_step_mm: figures.all_means(),
     };
     write_info_tail(&folder, &summary, &stats)?;
     let json = serde_json::to_string_pretty(&summary).map_err(io::Error::other)?;

@@ -38,6 +38,9 @@ pub struct RunSummary {
     pub mean_distance_mm: [Option<f64>; MAX_RECORDED_STEPS],
     /// Median distance (mm) after feedback steps 1..5 over the window.
     pub median_distance_mm: [Option<f64>; MAX_RECORDED_STEPS],
+    /// Mean distance (mm) after every feedback step 1..`feedback_steps` over the window,
+    /// over the trials that took that step (a trial stops early once within ε).
+    pub mean_distance_by_step_mm: Vec<Option<f64>>,
 }
 
 impl RunSummary {
@@ -72,7 +75,8 @@ impl RunSummary {
 pub struct StepFigures {
     window: usize,
     first_counted: usize,
-    distances: [Vec<f64>; MAX_RECORDED_STEPS],
+    /// Distances after step 1, 2, … of the trials in the window.
+    distances: Vec<Vec<f64>>,
 }
 
 impl StepFigures {
@@ -81,13 +85,13 @@ impl StepFigures {
         (trials / 10).clamp(1, 1000)
     }
 
-    /// Figures over the last window of a run of `trials`.
-    pub fn new(trials: usize) -> StepFigures {
+    /// Figures over the last window of a run of `trials` of up to `steps` feedback steps.
+    pub fn new(trials: usize, steps: usize) -> StepFigures {
         let window = StepFigures::window_for(trials);
         StepFigures {
             window,
             first_counted: trials + 1 - window,
-            distances: Default::default(),
+            distances: vec![Vec::new(); steps.max(MAX_RECORDED_STEPS)],
         }
     }
 
@@ -105,16 +109,23 @@ impl StepFigures {
         self.window
     }
 
-    /// Mean distance after each step.
-    pub fn means(&self) -> [Option<f64>; MAX_RECORDED_STEPS] {
+    /// Mean distance after every step (`None` for a step no trial in the window took).
+    pub fn all_means(&self) -> Vec<Option<f64>> {
         self.distances
-            .each_ref()
+            .iter()
             .map(|d| (!d.is_empty()).then(|| d.iter().sum::<f64>() / d.len() as f64))
+            .collect()
     }
 
-    /// Median distance after each step.
+    /// Mean distance after steps 1..5.
+    pub fn means(&self) -> [Option<f64>; MAX_RECORDED_STEPS] {
+        let all = self.all_means();
+        std::array::from_fn(|i| all[i])
+    }
+
+    /// Median distance after steps 1..5.
     pub fn medians(&self) -> [Option<f64>; MAX_RECORDED_STEPS] {
-        self.distances.each_ref().map(|d| median(d))
+        std::array::from_fn(|i| median(&self.distances[i]))
     }
 }
 
@@ -145,7 +156,7 @@ mod tests {
 
     #[test]
     fn figures_count_only_the_window() {
-        let mut f = StepFigures::new(20);
+        let mut f = StepFigures::new(20, 10);
         for trial in 1..=20 {
             f.record(trial, &[trial as f64, 1.0]);
         }
@@ -153,6 +164,8 @@ mod tests {
         assert_eq!(f.means()[0], Some(19.5));
         assert_eq!(f.medians()[1], Some(1.0));
         assert_eq!(f.means()[2], None);
+        assert_eq!(f.all_means().len(), 10);
+        assert_eq!(f.all_means()[1], Some(1.0));
     }
 
     #[test]

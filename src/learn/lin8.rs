@@ -70,13 +70,10 @@ impl Learner for Lin8 {
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        let a = self.nested.answer(&Self::input(query));
-        eprintln!("DBG propose {:?} -> {a:?}", query);
-        a
+        self.nested.answer(&Self::input(query))
     }
 
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
-        eprintln!("DBG learn {:?}", path);
         self.nested.learn(path)
     }
 

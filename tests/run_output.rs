@@ -191,3 +191,36 @@ fn fk_prints_the_camera_centre_as_json() {
         "θ5 = 90 + θ2 − θ3"
     );
 }
+
+#[test]
+fn verbose_output_prints_the_tree_every_depth_info_trials() {
+    let data = tempfile::tempdir().unwrap();
+    let run = |verbose: &str| {
+        Command::new(env!("CARGO_BIN_EXE_eyehand"))
+            .args([
+                "run",
+                "--trials",
+                "40",
+                "--quiet",
+                "--no-plot",
+                "--set",
+                "depth_info=10",
+                "--set",
+            ])
+            .arg(format!("verbose_output={verbose}"))
+            .arg("--data")
+            .arg(data.path())
+            .output()
+            .unwrap()
+    };
+    let out = run("1");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let lines: Vec<&str> = stderr.lines().filter(|l| l.starts_with("trial ")).collect();
+    assert_eq!(lines.len(), 4, "{stderr}");
+    assert!(
+        lines[3].starts_with("trial 40: ") && lines[3].contains(" d0: 1 nodes"),
+        "{}",
+        lines[3]
+    );
+    assert!(String::from_utf8_lossy(&run("0").stderr).is_empty());
+}

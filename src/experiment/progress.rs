@@ -61,6 +61,15 @@ impl RunProgress {
         }
     }
 
+    /// Prints a line to stderr above the bar (or plainly while it is hidden).
+    pub(super) fn println(&self, line: &str) {
+        if self.shown {
+            self.bar.println(line);
+        } else {
+            eprintln!("{line}");
+        }
+    }
+
     /// Removes the bar.
     pub(super) fn finish(&self) {
         self.bar.finish_and_clear();

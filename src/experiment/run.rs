@@ -150,6 +150,9 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
         progress.trial_done(trial, &outcome.distances_mm, stats.nodes);
         if trial % config.depth_info == 0 || trial == config.trials {
             files.record_depth_info(trial, resident_kb(), &stats)?;
+            if config.verbose_output != 0 {
+                progress.println(&tree_line(trial, &stats));
+            }
         }
     }
     files.flush()?;
@@ -203,6 +206,19 @@ fn build_camera(config: &Config) -> Result<Box<dyn Camera>, RunError> {
             config.raycast_resolution,
         ))),
     }
+}
+
+/// One line on how the tree is built up, for `verbose_output`.
+fn tree_line(trial: usize, stats: &LearnerStats) -> String {
+    let mut line = format!(
+        "trial {trial}: {} nodes, {} bins, {} patterns |",
+        stats.nodes, stats.bins, stats.patterns
+    );
+    for (depth, level) in stats.levels.iter().enumerate().filter(|(_, l)| l.nodes > 0) {
+        let error = level.error.map_or("-".to_string(), |e| format!("{e:.2e}"));
+        line += &format!(" d{depth}: {} nodes, error {error};", level.nodes);
+    }
+    line
 }
 
 fn host_name() -> String {

@@ -69,11 +69,11 @@ impl DataFiles {
     ) -> io::Result<()> {
         let minutes = self.minutes();
         for (file, distance) in self.steps.iter_mut().zip(&outcome.distances_mm) {
-            writeln!(file, "{trial} {distance:.6} {minutes:.4}")?;
+            writeln!(file, "{trial} {distance:.6} {minutes:.6}")?;
         }
-        writeln!(self.nodes, "{trial} {} {minutes:.4}", stats.nodes)?;
-        writeln!(self.bins, "{trial} {} {minutes:.4}", stats.bins)?;
-        writeln!(self.patterns, "{trial} {} {minutes:.4}", stats.patterns)?;
+        writeln!(self.nodes, "{trial} {} {minutes:.6}", stats.nodes)?;
+        writeln!(self.bins, "{trial} {} {minutes:.6}", stats.bins)?;
+        writeln!(self.patterns, "{trial} {} {minutes:.6}", stats.patterns)?;
         if self.last_flush.elapsed() >= FLUSH_EVERY {
             self.flush()?;
         }
@@ -88,7 +88,7 @@ impl DataFiles {
         stats: &LearnerStats,
     ) -> io::Result<()> {
         let minutes = self.minutes();
-        writeln!(self.mem, "{trial} {memory_kb} {minutes:.4}")?;
+        writeln!(self.mem, "{trial} {memory_kb} {minutes:.6}")?;
         write!(self.abs_err, "{trial}")?;
         for level in &stats.levels {
             match level.error {

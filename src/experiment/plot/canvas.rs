@@ -65,7 +65,8 @@ fn bounds(lines: &[Line<'_>], log_y: bool) -> ((f64, f64), (f64, f64)) {
     let y = if log_y {
         (y.0 / 1.5, (y.1 * 1.5).max(y.0 * 10.0))
     } else {
-        let pad = ((y.1 - y.0) * 0.05).max(y.1.abs() * 0.05).max(0.5);
+        let span = y.1 - y.0;
+        let pad = if span > 0.0 { 0.05 * span } else { (0.05 * y.1.abs()).max(1.0) };
         let low = if y.0 >= 0.0 {
             (y.0 - pad).max(0.0)
         } else {
@@ -92,6 +93,7 @@ pub(super) fn draw_panel(area: &Area<'_>, panel: &Panel<'_>) -> Result<(), Strin
             chart
                 .configure_mesh()
                 .x_desc("trial")
+                .max_light_lines(2)
                 .y_desc(panel.y_label)
                 .label_style((FAMILY, 12))
                 .x_label_formatter(&|x| format!("{x:.0}"))

@@ -34,6 +34,22 @@ fn lin5_reaches_below_a_millimetre_after_four_steps_within_3000_trials() {
 }
 
 #[test]
+fn lin8_reaches_below_two_millimetres_after_four_steps_within_3000_trials() {
+    let summary = run_method(Method::Lin8, 3000, 1);
+    println!(
+        "lin8, 3000 trials: {:?} mm, {} nodes",
+        summary.mean_distance_mm, summary.nodes
+    );
+    assert!(
+        step(&summary, 4) < 2.0,
+        "4-step mean {} mm",
+        step(&summary, 4)
+    );
+    assert!(summary.nodes > 20, "the tree grew: {} nodes", summary.nodes);
+    assert!(summary.failures < 300, "{} failures", summary.failures);
+}
+
+#[test]
 fn ffn_gets_within_a_centimetre_after_five_steps_within_400_trials() {
     let summary = run_method(Method::Ffn, 400, 1);
     println!("ffn, 400 trials: {:?} mm", summary.mean_distance_mm);

@@ -66,7 +66,11 @@ fn bounds(lines: &[Line<'_>], log_y: bool) -> ((f64, f64), (f64, f64)) {
         (y.0 / 1.5, (y.1 * 1.5).max(y.0 * 10.0))
     } else {
         let span = y.1 - y.0;
-        let pad = if span > 0.0 { 0.05 * span } else { (0.05 * y.1.abs()).max(1.0) };
+        let pad = if span > 0.0 {
+            0.05 * span
+        } else {
+            (0.05 * y.1.abs()).max(1.0)
+        };
         let low = if y.0 >= 0.0 {
             (y.0 - pad).max(0.0)
         } else {

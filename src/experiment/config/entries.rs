@@ -1,0 +1,149 @@
+//! Every config entry: its name, type and meaning, in one list.
+
+use crate::experiment::config_values::{CameraKind, ConfigValue, MergeStrategy, SimKind};
+use crate::learn::Method;
+
+config_entries! {
+    /// The learning method.
+    method: Method,
+    /// The simulator: kinematic or dynamic.
+    sim: SimKind,
+    /// The camera model: projection or raycast.
+    camera: CameraKind,
+    /// Seed of the run's random generator.
+    seed: u64,
+    /// Trials to run.
+    trials: usize,
+    /// Input boundary 0 (θ2, degrees), low end.
+    boundary_0_low: f64,
+    /// Input boundary 0 (θ2, degrees), high end.
+    boundary_0_high: f64,
+    /// Input boundary 1 (θ3, degrees), low end.
+    boundary_1_low: f64,
+    /// Input boundary 1 (θ3, degrees), high end.
+    boundary_1_high: f64,
+    /// Input boundary 2 (cx, pixels), low end.
+    boundary_2_low: f64,
+    /// Input boundary 2 (cx, pixels), high end.
+    boundary_2_high: f64,
+    /// Input boundary 3 (cy, pixels), low end.
+    boundary_3_low: f64,
+    /// Input boundary 3 (cy, pixels), high end.
+    boundary_3_high: f64,
+    /// Input boundary 4 (cz), low end.
+    boundary_4_low: f64,
+    /// Input boundary 4 (cz), high end.
+    boundary_4_high: f64,
+    /// Input boundary 5 (dx, pixels, lin8), low end.
+    boundary_5_low: f64,
+    /// Input boundary 5 (dx, pixels, lin8), high end.
+    boundary_5_high: f64,
+    /// Input boundary 6 (dy, pixels, lin8), low end.
+    boundary_6_low: f64,
+    /// Input boundary 6 (dy, pixels, lin8), high end.
+    boundary_6_high: f64,
+    /// Input boundary 7 (dz, lin8), low end.
+    boundary_7_low: f64,
+    /// Input boundary 7 (dz, lin8), high end.
+    boundary_7_high: f64,
+    /// ε: a trial stops once the camera is this close to the target (cm).
+    min_target_distance: f64,
+    /// Kept from the study's config, whose author did not know its use; unused.
+    split_extension: f64,
+    /// Relative merge error.
+    merge_error: f64,
+    /// Split error.
+    split_error: f64,
+    /// At most this many feedback steps per trial.
+    feedback_steps: usize,
+    /// At least this many feedback steps per trial before ε can stop it.
+    min_feedback_steps: usize,
+    /// Maximum depth of the tree.
+    tree_depth: usize,
+    /// Trial before which the camera is turned (0: never).
+    rotate_trial: usize,
+    /// Degrees the camera turns about its optical axis at `rotate_trial`.
+    rotate_degrees: f64,
+    /// Trial before which a link is stretched (0: never).
+    elongate_trial: usize,
+    /// The link stretched at `elongate_trial` (1, 2 or 3).
+    elongate_link: usize,
+    /// Signed length added to that link (cm).
+    elongate_cm: f64,
+    /// Staggered perceptrons (sum-sets) per node.
+    nr_of_matrices: usize,
+    /// Patterns a sum-set holds before it is cleared.
+    max_pats_in_mat: usize,
+    /// Patterns a sub-box needs before it can be split off.
+    min_pats_for_split: usize,
+    /// A pose pair is a learning pattern only if some joint moved at least this (degrees).
+    minimal_joint_move: f64,
+    /// Patterns averaged by the per-level error monitor.
+    monitor_ave: usize,
+    /// How changes of the mapping are handled: thesis or change_detection.
+    merge_strategy: MergeStrategy,
+    /// change_detection: rise of the log pattern error above its baseline that counts.
+    change_drift: f64,
+    /// change_detection: alarm level of the CUSUM statistic (log units).
+    change_threshold: f64,
+    /// change_detection: patterns the error baseline averages over.
+    change_baseline: usize,
+    /// change_detection: patterns watched before the first alarm can come.
+    change_warmup: usize,
+    /// Absolute merge threshold of a node's running error.
+    am_error_tresh: f64,
+    /// Patterns averaged for the absolute merge.
+    am_error_iters: usize,
+    /// lin8: shrink factor of the d boundaries per depth.
+    error_area_shrink: f64,
+    /// 0: store patterns in the run's `pat_file`; anything else: in memory.
+    use_pat_file: i64,
+    /// The tree's per-level figures are recorded every this many trials.
+    depth_info: usize,
+    /// 1: print progress information during a run; 0: quiet.
+    verbose_output: i64,
+    /// Top joint speed of a move (degrees per second).
+    robot_speed: f64,
+    /// Joint acceleration of a move (degrees per second²).
+    robot_accel: f64,
+    /// Dynamic simulator: physics and servo time step (seconds).
+    dt: f64,
+    /// Dynamic simulator: constraint solver iterations per step.
+    solver_iterations: usize,
+    /// Dynamic simulator: joint servo position gain (1/s², scaled by the joint's inertia).
+    motor_stiffness: f64,
+    /// Dynamic simulator: joint servo velocity gain (1/s, scaled by the joint's inertia).
+    motor_damping: f64,
+    /// Dynamic simulator: a move has settled once every joint is this close to its
+    /// set-point (degrees) …
+    settle_position_tol: f64,
+    /// … and turns slower than this (degrees per second).
+    settle_speed_tol: f64,
+    /// Dynamic simulator: simulated seconds a move may take to settle before it is
+    /// reported as not settled.
+    settle_timeout: f64,
+    /// Raycast camera: rays per image side (the 512×512 image is sampled N×N).
+    raycast_resolution: usize,
+    /// Known patterns trained per 100 regular patterns.
+    known_pattern_perc: f64,
+    /// Learning patterns each bin keeps.
+    bin_size: usize,
+    /// nnw: at most this many patterns re-trained per node after a trial.
+    nnw_train_limit: usize,
+    /// nnw: a node is re-trained once it got this many new patterns.
+    nnw_train_delay: usize,
+    /// nnw: initial weights are drawn in ±wrange.
+    wrange: f64,
+    /// nnw: hidden units per network.
+    hidden_units: usize,
+    /// ffn: hidden units of the single network.
+    ffn_hidden_units: usize,
+    /// ffn: most recent patterns the network is trained on.
+    ffn_window: usize,
+    /// ffn: conjugate-gradient iterations after each trial.
+    ffn_cg_iterations: usize,
+    /// kohonen: neurons per side of the 5-D lattice.
+    kohonen_side: usize,
+    /// kohonen: patterns over which neighbourhood and rates shrink.
+    kohonen_anneal_patterns: usize,
+}

@@ -4,10 +4,11 @@
 use eyehand::experiment::{run, Config, RunOptions, RunSummary};
 use eyehand::learn::Method;
 
+/// A run of `method` with its shipped config (`configs/<method>.conf`).
 fn run_method(method: Method, trials: usize, seed: u64) -> RunSummary {
     let data = tempfile::tempdir().unwrap();
-    let mut config = Config::default_config();
-    config.method = method;
+    let path = format!("{}/configs/{method}.conf", env!("CARGO_MANIFEST_DIR"));
+    let mut config = Config::from_file(std::path::Path::new(&path)).unwrap();
     config.trials = trials;
     config.seed = seed;
     run(&RunOptions::new(config, data.path())).unwrap().summary
@@ -47,6 +48,22 @@ fn lin8_reaches_below_two_millimetres_after_four_steps_within_3000_trials() {
     );
     assert!(summary.nodes > 20, "the tree grew: {} nodes", summary.nodes);
     assert!(summary.failures < 300, "{} failures", summary.failures);
+}
+
+#[test]
+fn nnw_gets_within_three_millimetres_after_three_steps_within_1000_trials() {
+    let summary = run_method(Method::Nnw, 1000, 1);
+    println!(
+        "nnw, 1000 trials: {:?} mm, {} nodes",
+        summary.mean_distance_mm, summary.nodes
+    );
+    assert!(
+        step(&summary, 3) < 3.0,
+        "3-step mean {} mm",
+        step(&summary, 3)
+    );
+    assert!(summary.nodes > 20, "the tree grew: {} nodes", summary.nodes);
+    assert!(summary.failures < 100, "{} failures", summary.failures);
 }
 
 #[test]

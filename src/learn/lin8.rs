@@ -40,7 +40,7 @@ impl Lin8 {
             config,
             TreeSettings::from_config(config),
             rule,
-            Perceptron::new(config.nr_of_matrices, config.max_pats_in_mat),
+            Perceptron::new(config.nr_of_matrices, config.max_pats_in_mat).asked_at_zero(5..8),
             unadjusted_pattern,
             pat_file,
             RNG_STREAM,

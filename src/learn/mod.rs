@@ -13,6 +13,7 @@ mod lin8;
 mod method;
 mod model_event;
 pub mod net;
+mod nnw;
 mod perceptron;
 mod stats;
 mod tree;
@@ -25,6 +26,7 @@ pub use lin5::Lin5;
 pub use lin8::Lin8;
 pub use method::Method;
 pub use model_event::{MergeKind, ModelEvent};
+pub use nnw::Nnw;
 pub use stats::{LearnerStats, LevelStats};
 
 use crate::camera::CameraModel;
@@ -76,12 +78,13 @@ pub fn build_learner(
     run_dir: Option<&Path>,
 ) -> Result<Box<dyn Learner>, LearnError> {
     match config.method {
-        Method::Lin5 | Method::Lin8 => {
+        Method::Lin5 | Method::Lin8 | Method::Nnw => {
             let pat_file = run_dir
                 .filter(|_| config.use_pat_file == 0)
                 .map(|dir| dir.join("pat_file"));
             let learner: Box<dyn Learner> = match config.method {
                 Method::Lin8 => Box::new(Lin8::new(config, pat_file)?),
+                Method::Nnw => Box::new(Nnw::new(config, pat_file)?),
                 _ => Box::new(Lin5::new(config, pat_file)?),
             };
             Ok(learner)
@@ -116,7 +119,6 @@ pub fn build_learner(
                 input_bounds(config),
             )))
         }
-        other => Err(LearnError::Unavailable(other)),
     }
 }
 

@@ -9,12 +9,14 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::cell::RefCell;
 
-/// The nets answer Δθ divided by this (degrees), so their targets stay near ±1.
-const OUTPUT_SCALE_DEG: f64 = 10.0;
+/// The nets answer Δθ divided by this (degrees), so their targets stay within about ±1.
+/// (10° gave twice the 3-step distance and more lost objects over 2,000 trials.)
+const OUTPUT_SCALE_DEG: f64 = 30.0;
 /// Learning rate of the back-propagation step for each pattern taken in.
 const ONLINE_RATE: f64 = 0.02;
-/// Conjugate-gradient iterations of a re-training.
-const CG_ITERATIONS: usize = 30;
+/// Conjugate-gradient iterations of a re-training. Over 2,000 trials, 30 leave the 3-step
+/// distance near 0.5 mm, 50 near 0.3 mm; 100 gain nothing more and cost twice the time.
+const CG_ITERATIONS: usize = 50;
 
 /// A 5 → `hidden_units` (tanh) → 3 net over the node's local coordinates.
 #[derive(Debug, Clone)]
@@ -31,8 +33,14 @@ pub(crate) struct NetModel {
 
 impl NetModel {
     /// A template for nets of `hidden` units whose weights are drawn in ±`wrange` when a
-    /// node is made; the template's own weights are zero and never answer.
+    /// node is made (a negative `wrange` counts as its size, a non-finite one as 0); the
+    /// template's own weights are zero and never answer.
     pub(crate) fn template(hidden: usize, wrange: f64) -> Self {
+        let wrange = if wrange.is_finite() {
+            wrange.abs()
+        } else {
+            0.0
+        };
         // (Every draw of an empty range is 0: the generator does not matter.)
         let net = DenseNet::new(hidden.max(1), 0.0, &mut ChaCha8Rng::seed_from_u64(0));
         NetModel {
@@ -154,7 +162,10 @@ mod tests {
         }
         let retrained = rms_miss(&model, &test);
         // The targets' RMS is about 6°.
-        assert!(retrained < 0.3, "RMS miss {retrained}° (online only: {online}°)");
+        assert!(
+            retrained < 0.3,
+            "RMS miss {retrained}° (online only: {online}°)"
+        );
         assert!(retrained < 0.2 * online, "{retrained} vs {online}");
     }
 }

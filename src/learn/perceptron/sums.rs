@@ -42,32 +42,36 @@ impl<const M: usize> NormalSums<M> {
     /// The least-squares coefficients (one row per joint), or `None` when the system is
     /// singular or ill-conditioned, or holds no pattern.
     ///
-    /// An input that never left the middle of the box (its root mean square is below
-    /// [`IDLE`]) is idle: its coefficient is undetermined and set to 0, the least-norm
-    /// choice, which answers exactly wherever that input is 0 again. (lin8's readings after
-    /// the move are idle at first: pre-learning and known patterns all end at d = 0, the
-    /// middle of its d box, as every query asks.) The matrix of the other inputs is
-    /// equilibrated to a unit diagonal; an LU decomposition with partial pivoting is made
-    /// once and solved for the three joints. The ratio of its smallest to largest pivot
-    /// estimates the reciprocal condition number.
-    pub(super) fn solve(&self) -> Option<SMatrix<f64, 3, M>>
+    /// An input that `may_idle` and never left the middle of the box (its root mean square
+    /// is below [`IDLE`]) is idle: its coefficient is undetermined and set to 0, the
+    /// least-norm choice, which answers exactly wherever that input is 0 again. The matrix
+    /// of the other inputs is equilibrated to a unit diagonal; an LU decomposition with
+    /// partial pivoting is made once and solved for the three joints. The ratio of its
+    /// smallest to largest pivot estimates the reciprocal condition number.
+    pub(super) fn solve(&self, may_idle: &[bool; M]) -> Option<SMatrix<f64, 3, M>>
     where
         Const<M>: DimMin<Const<M>, Output = Const<M>>,
     {
         let diagonal = self.zz.diagonal();
         // The constant's diagonal counts the patterns.
         let count = diagonal[M - 1];
-        if !(count > 0.0 && diagonal.iter().all(|&d| d >= 0.0 && d.is_finite())) {
+        let idle: [bool; M] =
+            std::array::from_fn(|i| may_idle[i] && diagonal[i] <= IDLE * IDLE * count);
+        let usable = |i: usize| idle[i] || (diagonal[i] > 0.0 && diagonal[i].is_finite());
+        if !(0..M).all(usable) {
             return None;
         }
-        let idle = |d: f64| d <= IDLE * IDLE * count;
         // A zero scale drops an idle input's row and column.
-        let scale: SVector<f64, M> = diagonal.map(|d| if idle(d) { 0.0 } else { d.sqrt().recip() });
-        let mut equilibrated = self.zz.component_mul(&(scale * scale.transpose()));
-        for (i, &d) in diagonal.iter().enumerate() {
-            if idle(d) {
-                equilibrated[(i, i)] = 1.0;
+        let scale = SVector::<f64, M>::from_fn(|i, _| {
+            if idle[i] {
+                0.0
+            } else {
+                diagonal[i].sqrt().recip()
             }
+        });
+        let mut equilibrated = self.zz.component_mul(&(scale * scale.transpose()));
+        for i in (0..M).filter(|&i| idle[i]) {
+            equilibrated[(i, i)] = 1.0;
         }
         let lu = equilibrated.lu();
         let pivots = lu.u().diagonal().map(f64::abs);

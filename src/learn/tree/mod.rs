@@ -3,7 +3,8 @@
 //! The root's model covers the whole input box; a child covers one of its parent's
 //! sub-boxes, so deeper nodes give finer approximations. The tree is generic over the
 //! node model ([`Approximator`]: a perceptron for lin5/lin8, a network for nnw), the input
-//! dimension `N` and the way boxes branch ([`BranchRule`]).
+//! dimension `N` and the way boxes branch ([`BranchRule`]: [`Halving`] for lin5 and nnw,
+//! [`Narrowing`] for lin8). [`NestedLearner`] is what the three learners share around it.
 //!
 //! How it works:
 //! - **Paths.** A point's branch numbers at each depth (its [`BinKey`]) lead from the root
@@ -36,6 +37,9 @@
 //!   generator.
 //! - **Split and merge**: see [`split`] and [`merge`] for the
 //!   exact tests. A merge of the root throws everything away.
+//! - **Re-training** (models that ask for it: nnw's nets): after a trial, nodes that took
+//!   in enough new patterns are trained again on a sample of their box's stored patterns;
+//!   see [`retrain`].
 //! - **Bookkeeping.** Nodes, bins and patterns per depth are counted as they change
 //!   ([`Levels`]); no step walks the tree except a merge, over the subtree it cuts.
 

@@ -3,6 +3,7 @@
 mod events;
 mod narrowing;
 mod retraining;
+mod tally;
 
 use super::*;
 use crate::control::Pattern;
@@ -12,6 +13,7 @@ use proptest::prelude::*;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::collections::BTreeSet;
+use tally::Tally;
 
 type Tree = NestedTree<Perceptron<5, 6>, Halving<5>, 5>;
 
@@ -123,32 +125,6 @@ fn counters<A: Approximator<N>, R: BranchRule<N>, const N: usize>(
         .iter()
         .map(|l| (l.nodes, l.bins, l.patterns))
         .collect()
-}
-
-/// A model that only keeps count: patterns taken in and the batches it was re-trained on
-/// (when `RETRAINED`). It answers zero.
-#[derive(Debug, Clone, Default)]
-struct Tally<const RETRAINED: bool, const N: usize> {
-    added: usize,
-    batches: Vec<Vec<Sample<N>>>,
-}
-
-impl<const RETRAINED: bool, const N: usize> Approximator<N> for Tally<RETRAINED, N> {
-    const RETRAINED: bool = RETRAINED;
-
-    fn add(&mut self, _input: &SVector<f64, N>, _target: &Vector3<f64>) {
-        self.added += 1;
-    }
-
-    fn refit(&mut self) {}
-
-    fn answer(&self, _input: &SVector<f64, N>) -> Option<Vector3<f64>> {
-        Some(Vector3::zeros())
-    }
-
-    fn retrain(&mut self, batch: &[Sample<N>]) {
-        self.batches.push(batch.to_vec());
-    }
 }
 
 fn bins_of(tree: &Tree, id: u32) -> BTreeSet<u32> {

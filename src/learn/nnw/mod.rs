@@ -1,0 +1,172 @@
+//! `nnw`: the Nested Network (study §3.2, §5.1) — lin5's tree with a net in every node.
+//!
+//! Inputs, patterns, queries, boundaries and the tree (splits, merges, bins) are lin5's:
+//! the adjusted 5-input patterns (θ2, θ3, c*) → Δθ over boxes halved at every depth. Each
+//! node holds a [`NetModel`]: `hidden_units` tanh units, weights drawn in ±`wrange` when
+//! the node is made, inputs in the node's local coordinates. A net takes one
+//! back-propagation step for every pattern trained to it; after a trial, each node that
+//! took in at least `nnw_train_delay` patterns since it was last re-trained is re-trained
+//! by conjugate gradients on the newest pattern of up to `nnw_train_limit` bins of its
+//! box, drawn at random (see the tree's re-training); a node split off is re-trained at
+//! once. Known patterns are lin5's and lin8's only (the study's `known_pattern_perc` is
+//! not an nnw entry): nnw trains none.
+
+mod net_model;
+
+use super::tree::{Halving, NestedLearner, Region, TreeSettings};
+use super::{LearnError, Learner, LearnerStats, Method};
+use crate::control::{adjusted_pattern, Observation, Query};
+use crate::experiment::Config;
+use nalgebra::{SVector, Vector3};
+use net_model::NetModel;
+use std::path::PathBuf;
+
+/// The stream of the run's seed that nnw's own draws (weights, re-training samples) come
+/// from.
+const RNG_STREAM: u64 = 0x006e_6e77;
+
+/// The `nnw` learner: a nested tree of feed-forward nets over the adjusted 5-input
+/// patterns.
+#[derive(Debug)]
+pub struct Nnw {
+    nested: NestedLearner<NetModel, Halving<5>, 5>,
+}
+
+impl Nnw {
+    /// An `nnw` learner set up by `config` (boundaries 0–4, the tree, split and merge
+    /// entries, `hidden_units`, `wrange`, `nnw_train_limit`, `nnw_train_delay`, `seed`),
+    /// keeping its patterns in `pat_file` when given (the file is created or emptied now),
+    /// otherwise in memory.
+    pub fn new(config: &Config, pat_file: Option<PathBuf>) -> Result<Self, LearnError> {
+        let low = SVector::<f64, 5>::from_fn(|i, _| config.boundary(i).0);
+        let high = SVector::<f64, 5>::from_fn(|i, _| config.boundary(i).1);
+        let settings = TreeSettings {
+            known_pattern_perc: 0.0,
+            ..TreeSettings::from_config(config)
+        };
+        let nested = NestedLearner::new(
+            config,
+            settings,
+            Halving::new(Region::from_bounds(low, high)),
+            NetModel::template(config.hidden_units, config.wrange),
+            adjusted_pattern,
+            pat_file,
+            RNG_STREAM,
+        )?;
+        Ok(Nnw { nested })
+    }
+}
+
+impl Learner for Nnw {
+    fn method(&self) -> Method {
+        Method::Nnw
+    }
+
+    fn propose(&mut self, query: &Query) -> Vector3<f64> {
+        let c = query.c;
+        let input = SVector::<f64, 5>::new(query.theta2_deg, query.theta3_deg, c.x, c.y, c.z);
+        self.nested.answer(&input)
+    }
+
+    fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
+        self.nested.learn(path)
+    }
+
+    fn stats(&self) -> LearnerStats {
+        self.nested.stats()
+    }
+
+    fn take_relearn_request(&mut self) -> bool {
+        self.nested.take_relearn_request()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Matrix3;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    fn config() -> Config {
+        let mut config = Config::default_config();
+        config.method = Method::Nnw;
+        config.seed = 13;
+        config
+    }
+
+    /// A smooth synthetic arm: Δθ = J(θ)·c, J curving with θ2 and θ3.
+    fn jacobian(theta: &Vector3<f64>) -> Matrix3<f64> {
+        let (s2, c3) = (theta.y.to_radians().sin(), theta.z.to_radians().cos());
+        Matrix3::new(0.05, -0.02, 0.0, 0.01, 0.03, 0.04, -0.02, 0.0, 0.06) * (1.0 + 0.4 * s2 * c3)
+    }
+
+    /// A trial of one move that hits the target: one exact pattern.
+    fn one_move(rng: &mut ChaCha8Rng) -> [Observation; 2] {
+        let theta = Vector3::new(
+            rng.random_range(-90.0..90.0),
+            rng.random_range(0.0..70.0),
+            rng.random_range(50.0..135.0),
+        );
+        let c = Vector3::new(
+            rng.random_range(-250.0..250.0),
+            rng.random_range(-250.0..250.0),
+            rng.random_range(-90.0..250.0),
+        );
+        let start = Observation {
+            theta_deg: theta,
+            c,
+        };
+        let end = Observation {
+            theta_deg: theta + jacobian(&theta) * c,
+            c: Vector3::zeros(),
+        };
+        [start, end]
+    }
+
+    /// Mean miss (degrees) over fresh queries, and the mean move asked for.
+    fn misses(nnw: &mut Nnw, rng: &mut ChaCha8Rng) -> (f64, f64) {
+        let n = 300;
+        let (miss, size) = (0..n).fold((0.0, 0.0), |(miss, size), _| {
+            let [start, end] = one_move(rng);
+            let wanted = end.theta_deg - start.theta_deg;
+            let got = nnw.propose(&start.query());
+            (miss + (got - wanted).norm(), size + wanted.norm())
+        });
+        (miss / f64::from(n), size / f64::from(n))
+    }
+
+    #[test]
+    fn learns_a_smooth_mapping_and_grows_its_tree() {
+        let mut nnw = Nnw::new(&config(), None).unwrap();
+        let mut rng = ChaCha8Rng::seed_from_u64(1);
+        assert_eq!(
+            nnw.propose(&one_move(&mut rng)[0].query()),
+            Vector3::zeros()
+        );
+        for _ in 0..2000 {
+            nnw.learn(&one_move(&mut rng)).unwrap();
+        }
+        let (miss, size) = misses(&mut nnw, &mut rng);
+        assert!(miss < 0.06 * size, "mean miss {miss}° on moves of {size}°");
+        let stats = nnw.stats();
+        assert!(stats.nodes > 1, "{stats:?}");
+        assert!(!nnw.take_relearn_request());
+    }
+
+    #[test]
+    fn answers_are_finite_for_any_query() {
+        let mut nnw = Nnw::new(&config(), None).unwrap();
+        let mut rng = ChaCha8Rng::seed_from_u64(2);
+        for _ in 0..30 {
+            nnw.learn(&one_move(&mut rng)).unwrap();
+        }
+        let odd = Vector3::new(f64::NAN, f64::INFINITY, -1e308);
+        let q = Query {
+            c: odd,
+            theta2_deg: f64::NAN,
+            theta3_deg: 1e300,
+        };
+        assert!(nnw.propose(&q).iter().all(|v| v.is_finite()));
+    }
+}

@@ -132,6 +132,7 @@ impl Config {
             "must be 1, 2 or 3",
         )?;
         check(self.hidden_units >= 1, "hidden_units", "must be at least 1")?;
+        check(self.wrange > 0.0, "wrange", "must be positive")?;
         check(
             self.change_drift >= 0.0,
             "change_drift",

@@ -2,6 +2,7 @@
 
 use super::Config;
 use crate::robot::{RobotError, Simulator};
+use crate::units::M_PER_CM;
 use std::fmt;
 use std::str::FromStr;
 
@@ -70,7 +71,7 @@ impl Event {
                 sim.rotate_camera(degrees.to_radians());
                 Ok(())
             }
-            Event::Elongate { link, cm, .. } => sim.stretch_link(link, cm / 100.0),
+            Event::Elongate { link, cm, .. } => sim.stretch_link(link, cm * M_PER_CM),
         }
     }
 }

@@ -15,6 +15,7 @@ use crate::learn::{build_learner, LearnError, LearnerStats};
 use crate::robot::{
     load_urdf, ArmModel, DynamicSim, KinematicSim, MoveSettings, RobotError, Simulator, UrdfError,
 };
+use crate::units::M_PER_CM;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -114,7 +115,7 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
     let settings = TrialSettings {
         feedback_steps: config.feedback_steps,
         min_feedback_steps: config.min_feedback_steps,
-        epsilon: config.min_target_distance / 100.0,
+        epsilon: config.min_target_distance * M_PER_CM,
         minimal_joint_move_deg: config.minimal_joint_move,
     };
     let mut trials = TrialLoop::new(sim, camera, settings, config.seed);

@@ -1,10 +1,14 @@
 //! Recovery from a changed robot: lin5 on the kinematic simulator, seeds 1–3, 4,500 trials,
-//! one event before trial 1,500, for the study's merges (`merge_strategy thesis`) and for
-//! change detection, beside the fixed-model `ik` controller. Prints a markdown table per
-//! scenario: the 4-step mean over trials 1,000–1,500 (before), trials after the event until
-//! the 4-step mean over a sliding window of 100 trials is back within 2× that level (or
-//! "never"), the detection delay (trials from the event to the first alarm), and the 4-step
-//! mean over the last 500 trials.
+//! one event before trial 1,500, for the study's merges (`merge_strategy thesis`, with the
+//! shipped `am_error_tresh` 20 and with 12, the value that repeats the study's 90° root
+//! merge) and for change detection, beside the fixed-model `ik` controller. Prints a
+//! markdown table, a row per scenario and learner, each cell the three seeds' figures: the
+//! 4-step mean over trials 1,000–1,500 (before), trials
+//! after the event until the 4-step mean over a sliding window of 100 trials is back within
+//! 2× that level (or "never"), the detection delay (trials from the event to the first
+//! alarm; alarms before the event are counted apart), the merges by kind, and the 4-step
+//! mean over the last 500 trials. Then 50,000 trials without an event per strategy: alarms
+//! and merges, and the 4-step mean over the last 1,000 trials.
 //!
 //! `cargo bench --bench adaptation`
 
@@ -23,10 +27,27 @@ const SCENARIOS: [(&str, &str); 5] = [
     ("link 2 +10 cm", "elongate:1500:2:10"),
     ("link 2 −10 cm", "elongate:1500:2:-10"),
 ];
+/// The learners compared: label, config, `--set` values.
+const LEARNERS: [(&str, &str, &[&str]); 4] = [
+    ("lin5 thesis", "lin5", &["merge_strategy=thesis"]),
+    (
+        "lin5 thesis, am_error_tresh 12",
+        "lin5",
+        &["merge_strategy=thesis", "am_error_tresh=12"],
+    ),
+    (
+        "lin5 change_detection",
+        "lin5",
+        &["merge_strategy=change_detection"],
+    ),
+    ("ik", "ik", &[]),
+];
+/// Trials of the runs without an event.
+const LONG_TRIALS: usize = 50_000;
 
-/// The 4-step distance of every trial (NaN where the trial had no 4th step).
-fn four_step(folder: &Path) -> Vec<f64> {
-    let mut by_trial = vec![f64::NAN; TRIALS + 1];
+/// The 4-step distance of every trial up to `trials` (NaN where the trial had no 4th step).
+fn four_step(folder: &Path, trials: usize) -> Vec<f64> {
+    let mut by_trial = vec![f64::NAN; trials + 1];
     let text = std::fs::read_to_string(folder.join("4step")).expect("4step");
     for line in text.lines() {
         let mut fields = line.split(' ');
@@ -44,65 +65,128 @@ fn mean(values: &[f64]) -> f64 {
     finite.iter().sum::<f64>() / finite.len().max(1) as f64
 }
 
+/// The trials of the alarms in a run's `changes` file.
+fn alarms(folder: &Path) -> Vec<usize> {
+    let changes = std::fs::read_to_string(folder.join("changes")).unwrap_or_default();
+    changes
+        .lines()
+        .filter_map(|l| l.split(' ').next()?.parse().ok())
+        .collect()
+}
+
+/// Merges by kind from a run's `merges` file: "absolute,relative,starved".
+fn merges(folder: &Path) -> String {
+    let text = std::fs::read_to_string(folder.join("merges")).unwrap_or_default();
+    let count = |kind: &str| {
+        text.lines()
+            .filter(|l| l.split(' ').nth(1) == Some(kind))
+            .count()
+    };
+    format!(
+        "{},{},{}",
+        count("absolute"),
+        count("relative"),
+        count("starved")
+    )
+}
+
 struct Recovery {
     before: f64,
     recovered_after: Option<usize>,
     detected_after: Option<usize>,
+    false_alarms: usize,
+    merges: String,
     last: f64,
 }
 
 fn recovery(folder: &Path) -> Recovery {
-    let d = four_step(folder);
+    let d = four_step(folder, TRIALS);
     let before = mean(&d[1000..=EVENT_TRIAL - 1]);
     let recovered_after = (EVENT_TRIAL + 100..=TRIALS)
         .find(|&t| mean(&d[t - 99..=t]) <= 2.0 * before)
         .map(|t| t - EVENT_TRIAL);
-    let changes = std::fs::read_to_string(folder.join("changes")).unwrap_or_default();
-    let detected_after = changes
-        .lines()
-        .filter_map(|l| l.split(' ').next()?.parse::<usize>().ok())
-        .find(|&t| t >= EVENT_TRIAL)
-        .map(|t| t - EVENT_TRIAL);
+    let alarms = alarms(folder);
     Recovery {
         before,
         recovered_after,
-        detected_after,
+        detected_after: alarms
+            .iter()
+            .find(|&&t| t >= EVENT_TRIAL)
+            .map(|t| t - EVENT_TRIAL),
+        false_alarms: alarms.iter().filter(|&&t| t < EVENT_TRIAL).count(),
+        merges: merges(folder),
         last: mean(&d[TRIALS - 499..=TRIALS]),
     }
 }
 
+fn config_path(name: &str) -> String {
+    format!("{}/configs/{name}.conf", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// `--set` flags for `sets`.
+fn set_flags<'a>(sets: &[&'a str]) -> Vec<&'a str> {
+    sets.iter().flat_map(|s| ["--set", *s]).collect()
+}
+
+/// The cells of one learner's row: each figure for seeds 1, 2, 3, separated by " / ".
+fn row(runs: &[Recovery]) -> [String; 5] {
+    let join = |f: &dyn Fn(&Recovery) -> String| runs.iter().map(f).collect::<Vec<_>>().join(" / ");
+    let trials_or = |v: Option<usize>, none: &str| v.map_or(none.to_string(), |t| t.to_string());
+    [
+        join(&|r| format!("{:.3}", r.before)),
+        join(&|r| trials_or(r.recovered_after, "never")),
+        join(&|r| match r.false_alarms {
+            0 => trials_or(r.detected_after, "-"),
+            n => format!("{} ({n} before)", trials_or(r.detected_after, "-")),
+        }),
+        join(&|r| r.merges.clone()),
+        join(&|r| format!("{:.3}", r.last)),
+    ]
+}
+
 fn main() {
-    let data = tempfile::tempdir().expect("a temporary data folder");
-    let lin5 = concat!(env!("CARGO_MANIFEST_DIR"), "/configs/lin5.conf");
-    let ik = concat!(env!("CARGO_MANIFEST_DIR"), "/configs/ik.conf");
     let trials = TRIALS.to_string();
+    println!("| event at trial {EVENT_TRIAL} | learner | 4-step before (mm) | recovered after (trials) | detected after (trials) | merges abs,rel,starved | 4-step last 500 (mm) |");
+    println!("|---|---|---|---|---|---|---|");
     for (name, event) in SCENARIOS {
-        println!("\n#### {name} at trial {EVENT_TRIAL}\n");
-        println!("| learner | seed | 4-step before (mm) | recovered after (trials) | detected after (trials) | 4-step last 500 (mm) |");
-        println!("|---|---|---|---|---|---|");
-        for (label, config, strategy) in [
-            ("lin5 thesis", lin5, "thesis"),
-            ("lin5 change_detection", lin5, "change_detection"),
-            ("ik", ik, "thesis"),
-        ] {
-            for seed in SEEDS {
-                let seed_text = seed.to_string();
-                let set = format!("merge_strategy={strategy}");
-                let args = [
-                    "--config", config, "--trials", &trials, "--seed", &seed_text, "--event",
-                    event, "--set", &set,
-                ];
-                let r = recovery(&run_cli(data.path(), &args).folder);
-                let trials_or =
-                    |v: Option<usize>, none: &str| v.map_or(none.to_string(), |t| t.to_string());
-                println!(
-                    "| {label} | {seed} | {:.4} | {} | {} | {:.4} |",
-                    r.before,
-                    trials_or(r.recovered_after, "never"),
-                    trials_or(r.detected_after, "-"),
-                    r.last
-                );
-            }
+        // (A data folder per scenario: a method's folder holds at most 36 runs.)
+        let data = tempfile::tempdir().expect("a temporary data folder");
+        for (label, config, sets) in LEARNERS {
+            let runs: Vec<Recovery> = SEEDS
+                .iter()
+                .map(|seed| {
+                    let (config, seed_text) = (config_path(config), seed.to_string());
+                    let mut args = vec![
+                        "--config", &config, "--trials", &trials, "--seed", &seed_text, "--event",
+                        event,
+                    ];
+                    args.extend(set_flags(sets));
+                    recovery(&run_cli(data.path(), &args).folder)
+                })
+                .collect();
+            let [before, recovered, detected, merges, last] = row(&runs);
+            println!(
+                "| {name} | {label} | {before} | {recovered} | {detected} | {merges} | {last} |"
+            );
+        }
+    }
+    println!("\n| no event, {LONG_TRIALS} trials | seed | alarms | merges abs,rel,starved | 4-step last 1,000 (mm) |");
+    println!("|---|---|---|---|---|");
+    let long = LONG_TRIALS.to_string();
+    let data = tempfile::tempdir().expect("a temporary data folder");
+    for (label, config, sets) in [LEARNERS[0], LEARNERS[2]] {
+        for seed in SEEDS {
+            let (config, seed_text) = (config_path(config), seed.to_string());
+            let mut args = vec!["--config", &config, "--trials", &long, "--seed", &seed_text];
+            args.extend(set_flags(sets));
+            let finished = run_cli(data.path(), &args);
+            let d = four_step(&finished.folder, LONG_TRIALS);
+            println!(
+                "| {label} | {seed} | {} | {} | {:.4} |",
+                alarms(&finished.folder).len(),
+                merges(&finished.folder),
+                mean(&d[LONG_TRIALS - 999..=LONG_TRIALS])
+            );
         }
     }
 }

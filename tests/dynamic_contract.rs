@@ -1,11 +1,12 @@
 //! The regression contract between the dynamic (Rapier) simulator and the kinematic model:
 //! for the same commanded moves both end at the same joint angles, camera centre and camera
 //! readings — on the nominal robot, after links are stretched or shortened, after the
-//! camera is turned, and when a joint limit stops a move. The arm holds a pose under
+//! camera is turned (also when such events come one on top of the other between moves, as
+//! a run applies them), and when a joint limit stops a move. The arm holds a pose under
 //! gravity, runs are deterministic, and every learner closes its loop over the dynamic sim.
 
 use eyehand::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
-use eyehand::experiment::{run, CameraKind, Config, RunError, RunOptions, SimKind};
+use eyehand::experiment::{run, CameraKind, Config, Event, RunError, RunOptions, SimKind};
 use eyehand::learn::{LearnError, Method};
 use eyehand::robot::{ArmModel, Controlled, DynamicSettings, DynamicSim, KinematicSim, Simulator};
 use nalgebra::{Point3, Vector3};
@@ -166,6 +167,46 @@ fn a_turned_camera_agrees() {
         .read(&dynamic.camera_pose(), &object)
         .unwrap();
     assert!(c.x.hypot(c.y) > 1.0, "the object is off-centre: {c}");
+}
+
+#[test]
+fn events_applied_between_moves_keep_both_simulators_in_agreement() {
+    // As a run applies them: each before a trial, after the arm has moved, one on top of
+    // the other.
+    let model = ArmModel::oscar6();
+    let (mut dynamic, mut kinematic) = pair(&model);
+    let object = Point3::new(0.62, 0.02, 0.0);
+    let start = pose_at(&model, &WAYPOINTS_CM[0]);
+    dynamic.place(&start).unwrap();
+    kinematic.place(&start).unwrap();
+    let events: [Event; 4] = [
+        "elongate:2:2:10".parse().unwrap(),
+        "rotate:3:30".parse().unwrap(),
+        "elongate:4:1:-5".parse().unwrap(),
+        "rotate:5:-90".parse().unwrap(),
+    ];
+    for (k, event) in events.iter().enumerate() {
+        let end = pose_at(
+            kinematic.model(),
+            &WAYPOINTS_CM[(k + 5) % WAYPOINTS_CM.len()],
+        );
+        let delta = end - kinematic.joints().fixed_rows::<3>(0).into_owned();
+        dynamic.execute(&delta);
+        kinematic.execute(&delta);
+        assert_agree(&dynamic, &kinematic, &object, &format!("before {event}"));
+        event.apply(&mut dynamic).unwrap();
+        event.apply(&mut kinematic).unwrap();
+        assert_agree(&dynamic, &kinematic, &object, &format!("after {event}"));
+        let nudge = Controlled::new(0.3, -0.2, 0.25).map(f64::to_radians);
+        dynamic.execute(&nudge);
+        kinematic.execute(&nudge);
+        assert_agree(
+            &dynamic,
+            &kinematic,
+            &object,
+            &format!("moved after {event}"),
+        );
+    }
 }
 
 #[test]

@@ -13,7 +13,7 @@
 
 use super::perceptron::Perceptron;
 use super::tree::{Narrowing, NestedLearner, Region, TreeSettings};
-use super::{LearnError, Learner, LearnerStats, Method};
+use super::{LearnError, Learner, LearnerStats, Method, ModelEvent};
 use crate::control::{unadjusted_pattern, Observation, Query};
 use crate::experiment::Config;
 use nalgebra::{SVector, Vector3};
@@ -83,6 +83,14 @@ impl Learner for Lin8 {
 
     fn take_relearn_request(&mut self) -> bool {
         self.nested.take_relearn_request()
+    }
+
+    fn start_trial(&mut self, trial: usize) {
+        self.nested.start_trial(trial);
+    }
+
+    fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
+        self.nested.drain_events(sink);
     }
 }
 

@@ -56,14 +56,16 @@ pub trait Learner: std::fmt::Debug {
     /// Figures for the run's data files.
     fn stats(&self) -> LearnerStats;
 
-    /// True once after the learner threw away everything it knew (a root merge): the trial
-    /// loop then repeats pre-learning before the next trial.
+    /// True once after the learner threw away everything it knew (a root merge), or after a
+    /// detected change left it nothing valid to answer from: the trial loop then repeats
+    /// pre-learning before the next trial.
     fn take_relearn_request(&mut self) -> bool {
         false
     }
 
     /// Tells the learner which trial comes next (1-based; 0 is pre-learning), so it can
-    /// date what it learns.
+    /// date what it learns. A learner watching for changes of the mapping weighs the trial
+    /// before here, and may forget or cut before this trial's first move.
     fn start_trial(&mut self, _trial: usize) {}
 
     /// Moves the merges and detected changes since the last call into `sink`.

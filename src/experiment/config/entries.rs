@@ -82,14 +82,24 @@ config_entries! {
     monitor_ave: usize,
     /// How changes of the mapping are handled: thesis or change_detection.
     merge_strategy: MergeStrategy,
-    /// change_detection: rise of the log pattern error above its baseline that counts.
+    /// change_detection: a trial counts towards an alarm by how far its mean log relative
+    /// pattern error is above the baseline, less this many spreads.
     change_drift: f64,
-    /// change_detection: alarm level of the CUSUM statistic (log units).
+    /// change_detection: alarm level of the CUSUM statistic (spreads).
     change_threshold: f64,
-    /// change_detection: patterns the error baseline averages over.
+    /// change_detection: trials the baseline averages over.
     change_baseline: usize,
-    /// change_detection: patterns watched before the first alarm can come.
+    /// change_detection: trials that pass before a trial's error enters the baseline.
+    change_lag: usize,
+    /// change_detection: trials watched before the first alarm can come (after the start
+    /// and after each alarm).
     change_warmup: usize,
+    /// change_detection: patterns from after a detected change a node needs before it
+    /// answers again.
+    change_min_fresh: usize,
+    /// change_detection: trials after a detected change, and between later checks, before
+    /// subtrees starved of new patterns are cut.
+    change_grace: usize,
     /// Absolute merge threshold of a node's running error.
     am_error_tresh: f64,
     /// Patterns averaged for the absolute merge.

@@ -149,6 +149,12 @@ impl Config {
             "must be at least 1",
         )?;
         check(
+            self.change_warmup > self.change_lag,
+            "change_warmup",
+            &format!("must be above change_lag ({})", self.change_lag),
+        )?;
+        check(self.change_grace >= 1, "change_grace", "must be at least 1")?;
+        check(
             self.ffn_hidden_units >= 1,
             "ffn_hidden_units",
             "must be at least 1",

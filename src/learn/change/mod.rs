@@ -2,5 +2,7 @@
 //! stream of pattern errors for the moment the mapping changed.
 
 mod detector;
+mod watch;
 
 pub use detector::{Alarm, ChangeDetector, DetectorSettings};
+pub(crate) use watch::{ChangeWatch, WatchStep};

@@ -14,7 +14,7 @@
 mod net_model;
 
 use super::tree::{Halving, NestedLearner, Region, TreeSettings};
-use super::{LearnError, Learner, LearnerStats, Method};
+use super::{LearnError, Learner, LearnerStats, Method, ModelEvent};
 use crate::control::{adjusted_pattern, Observation, Query};
 use crate::experiment::Config;
 use nalgebra::{SVector, Vector3};
@@ -78,6 +78,14 @@ impl Learner for Nnw {
 
     fn take_relearn_request(&mut self) -> bool {
         self.nested.take_relearn_request()
+    }
+
+    fn start_trial(&mut self, trial: usize) {
+        self.nested.start_trial(trial);
+    }
+
+    fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
+        self.nested.drain_events(sink);
     }
 }
 

@@ -65,7 +65,7 @@ impl Approximator<5> for NetModel {
         }
     }
 
-    fn add(&mut self, input: &SVector<f64, 5>, target: &Vector3<f64>) {
+    fn add(&mut self, input: &SVector<f64, 5>, target: &Vector3<f64>, _seq: u64) {
         let target = target / OUTPUT_SCALE_DEG;
         let net = self.net.get_mut();
         net.backprop_step(input, &target, ONLINE_RATE, &mut self.grad);
@@ -154,7 +154,7 @@ mod tests {
         let mut model = NetModel::template(8, 0.1).spawn(&mut rng);
         let (train, test) = (batch(300, &mut rng), batch(200, &mut rng));
         for (u, t) in &train {
-            model.add(u, t);
+            model.add(u, t, 0);
         }
         let online = rms_miss(&model, &test);
         for _ in 0..10 {

@@ -3,7 +3,11 @@
 //!
 //! A pattern (input u, target Δθ) adds z zᵀ and z Δθᵀ, z = (u, 1), to the sums of every
 //! sum-set taking patterns (see [`stagger`] for which). A refit solves the
-//! current set's normal equations once for all three joints. Inputs are in the node's
+//! current set's normal equations once for all three joints. Each set knows the sequence
+//! number of the oldest pattern in it; after a detected change of the mapping, a perceptron
+//! with a set older than the change drops all of them and starts over (the tree then gives
+//! it back the stored patterns from after the change), keeping the fit it had as its stale
+//! answer. Inputs are in the node's
 //! local coordinates (its box mapped to [−1, 1]), which keeps the sums well scaled however
 //! small the box. A singular or ill-conditioned fit gives no answer, so the tree asks the
 //! node's parent instead; the model never answers NaN. Inputs that queries always hold at
@@ -27,6 +31,8 @@ pub(crate) struct Perceptron<const N: usize, const M: usize> {
     weights: Option<SMatrix<f64, 3, M>>,
     /// Which of (u, 1) may be left out of a fit while they stay 0.
     may_idle: [bool; M],
+    /// The fit before the last start-over (after a detected change).
+    stale: Option<Box<SMatrix<f64, 3, M>>>,
 }
 
 impl<const N: usize, const M: usize> Perceptron<N, M> {
@@ -42,6 +48,7 @@ impl<const N: usize, const M: usize> Perceptron<N, M> {
             stagger,
             weights: None,
             may_idle: [false; M],
+            stale: None,
         }
     }
 
@@ -66,7 +73,7 @@ impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M>
 where
     Const<M>: DimMin<Const<M>, Output = Const<M>>,
 {
-    fn add(&mut self, input: &SVector<f64, N>, target: &Vector3<f64>) {
+    fn add(&mut self, input: &SVector<f64, N>, target: &Vector3<f64>, seq: u64) {
         let z = Self::augmented(input);
         let zz = z * z.transpose();
         let zt = z * target.transpose();
@@ -75,8 +82,24 @@ where
             self.sets[set].clear();
         }
         for set in &mut self.sets[..arrival.receivers] {
-            set.add(&zz, &zt);
+            set.add(&zz, &zt, seq);
         }
+    }
+
+    /// A set holding a pattern numbered below `cutoff` makes the perceptron start over:
+    /// every set cleared, the stagger schedule restarted, no answer until refitted; the fit
+    /// it had becomes its stale answer.
+    fn forget_before(&mut self, cutoff: u64) -> bool {
+        let stale = self
+            .sets
+            .iter()
+            .any(|set| set.oldest().is_some_and(|oldest| oldest < cutoff));
+        if stale {
+            self.sets.iter_mut().for_each(NormalSums::clear);
+            self.stagger.restart();
+            self.stale = self.weights.take().map(Box::new);
+        }
+        stale
     }
 
     fn refit(&mut self) {
@@ -86,197 +109,19 @@ where
     fn answer(&self, input: &SVector<f64, N>) -> Option<Vector3<f64>> {
         self.weights.map(|w| w * Self::augmented(input))
     }
+
+    fn stale_answer(&self, input: &SVector<f64, N>) -> Option<Vector3<f64>> {
+        self.stale.as_ref().map(|w| **w * Self::augmented(input))
+    }
+}
+
+impl<const N: usize, const M: usize> Perceptron<N, M> {
+    /// The sequence number of the oldest pattern in the set the answer is solved from.
+    #[cfg(test)]
+    pub(crate) fn answering_oldest(&self) -> Option<u64> {
+        self.sets[self.stagger.current()].oldest()
+    }
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use nalgebra::{DMatrix, SVector};
-    use rand::{Rng, SeedableRng};
-    use rand_chacha::ChaCha8Rng;
-
-    type P5 = Perceptron<5, 6>;
-
-    type P8 = Perceptron<8, 9>;
-
-    fn random_input<const N: usize>(rng: &mut ChaCha8Rng) -> SVector<f64, N> {
-        SVector::from_fn(|_, _| rng.random_range(-1.0..=1.0))
-    }
-
-    fn random_map<const M: usize>(rng: &mut ChaCha8Rng) -> SMatrix<f64, 3, M> {
-        SMatrix::from_fn(|_, _| rng.random_range(-10.0..=10.0))
-    }
-
-    fn apply<const N: usize, const M: usize>(
-        map: &SMatrix<f64, 3, M>,
-        u: &SVector<f64, N>,
-    ) -> Vector3<f64> {
-        map * Perceptron::<N, M>::augmented(u)
-    }
-
-    fn train(p: &mut P5, map: &SMatrix<f64, 3, 6>, n: usize, rng: &mut ChaCha8Rng) {
-        for _ in 0..n {
-            let u = random_input(rng);
-            p.add(&u, &apply(map, &u));
-        }
-        p.refit();
-    }
-
-    fn max_miss(p: &P5, map: &SMatrix<f64, 3, 6>, rng: &mut ChaCha8Rng) -> f64 {
-        (0..50)
-            .map(|_| {
-                let u = random_input(rng);
-                (p.answer(&u).expect("fitted") - apply(map, &u)).amax()
-            })
-            .fold(0.0, f64::max)
-    }
-
-    #[test]
-    fn recovers_a_linear_map_exactly() {
-        let mut rng = ChaCha8Rng::seed_from_u64(1);
-        let map = random_map(&mut rng);
-        let mut p = P5::new(5, 1000);
-        train(&mut p, &map, 40, &mut rng);
-        assert!(max_miss(&p, &map, &mut rng) < 1e-9);
-    }
-
-    #[test]
-    fn incremental_sums_equal_a_batch_least_squares_fit() {
-        let mut rng = ChaCha8Rng::seed_from_u64(2);
-        let map = random_map::<6>(&mut rng);
-        let mut p = P5::new(3, 10_000);
-        let n = 300;
-        let mut a = DMatrix::<f64>::zeros(n, 6);
-        let mut b = DMatrix::<f64>::zeros(n, 3);
-        for row in 0..n {
-            let u = random_input(&mut rng);
-            // A curved target, so the fit has residuals to balance.
-            let t = apply(&map, &u) + Vector3::repeat(3.0 * u[0] * u[1] + u[4].powi(3));
-            p.add(&u, &t);
-            a.row_mut(row).copy_from(&P5::augmented(&u).transpose());
-            b.row_mut(row).copy_from(&t.transpose());
-        }
-        p.refit();
-        let batch = a.svd(true, true).solve(&b, 1e-12).unwrap();
-        let fitted = p.weights.expect("fitted");
-        for joint in 0..3 {
-            for k in 0..6 {
-                let (inc, bat) = (fitted[(joint, k)], batch[(k, joint)]);
-                assert!(
-                    (inc - bat).abs() < 1e-9 * (1.0 + bat.abs()),
-                    "{inc} vs {bat}"
-                );
-            }
-        }
-    }
-
-    #[test]
-    fn forgets_an_old_map_within_one_set_size() {
-        let mut rng = ChaCha8Rng::seed_from_u64(3);
-        let (old, new) = (random_map(&mut rng), random_map(&mut rng));
-        let mut p = P5::new(5, 1000);
-        train(&mut p, &old, 1000, &mut rng);
-        assert!(max_miss(&p, &old, &mut rng) < 1e-9);
-        train(&mut p, &new, 500, &mut rng);
-        // The current set (started at pattern 601) still holds 400 old patterns.
-        assert!(max_miss(&p, &new, &mut rng) > 1e-3);
-        train(&mut p, &new, 500, &mut rng);
-        assert!(max_miss(&p, &new, &mut rng) < 1e-9);
-    }
-
-    #[test]
-    fn a_singular_system_has_no_answer() {
-        let mut rng = ChaCha8Rng::seed_from_u64(4);
-        let map = random_map::<6>(&mut rng);
-        let fit = |inputs: &mut dyn FnMut(&mut ChaCha8Rng) -> SVector<f64, 5>, n: usize| {
-            let mut rng = ChaCha8Rng::seed_from_u64(5);
-            let mut p = P5::new(2, 1000);
-            for _ in 0..n {
-                let u = inputs(&mut rng);
-                p.add(&u, &apply(&map, &u));
-            }
-            p.refit();
-            p.answer(&SVector::zeros())
-        };
-        assert_eq!(
-            P5::new(1, 10).answer(&SVector::zeros()),
-            None,
-            "no patterns"
-        );
-        assert_eq!(
-            fit(&mut random_input, 5),
-            None,
-            "fewer patterns than unknowns"
-        );
-        let mut flat = |rng: &mut ChaCha8Rng| {
-            let mut u = random_input::<5>(rng);
-            u[2] = 0.25;
-            u
-        };
-        assert_eq!(fit(&mut flat, 100), None, "an input that never varies");
-        let mut tied = |rng: &mut ChaCha8Rng| {
-            let mut u = random_input::<5>(rng);
-            u[3] = 0.5 * u[1] - 0.2 * u[0];
-            u
-        };
-        assert_eq!(fit(&mut tied, 100), None, "inputs that move together");
-        assert!(fit(&mut random_input, 100).is_some());
-    }
-
-    #[test]
-    fn recovers_a_linear_8_input_map_exactly() {
-        let mut rng = ChaCha8Rng::seed_from_u64(6);
-        let map = random_map::<9>(&mut rng);
-        let mut p = P8::new(5, 1000);
-        for _ in 0..60 {
-            let u = random_input::<8>(&mut rng);
-            p.add(&u, &apply(&map, &u));
-        }
-        p.refit();
-        for _ in 0..50 {
-            let u = random_input::<8>(&mut rng);
-            let miss = (p.answer(&u).expect("fitted") - apply(&map, &u)).amax();
-            assert!(miss < 1e-9, "{miss}");
-        }
-    }
-
-    #[test]
-    fn inputs_asked_at_zero_that_stayed_there_get_no_weight_and_the_rest_is_exact() {
-        // lin8 before its first trial: every pattern ends at d = 0 (give or take rounding).
-        let mut rng = ChaCha8Rng::seed_from_u64(7);
-        let map = random_map::<9>(&mut rng);
-        let mut p = P8::new(2, 1000).asked_at_zero(5..8);
-        let at_d_zero = |rng: &mut ChaCha8Rng| {
-            let mut u = random_input::<8>(rng);
-            u.fixed_rows_mut::<3>(5).fill(0.0);
-            u[6] = 1e-15;
-            u
-        };
-        let mut plain = P8::new(2, 1000);
-        for _ in 0..30 {
-            let u = at_d_zero(&mut rng);
-            p.add(&u, &apply(&map, &u));
-            plain.add(&u, &apply(&map, &u));
-        }
-        p.refit();
-        plain.refit();
-        assert_eq!(
-            plain.answer(&SVector::zeros()),
-            None,
-            "idle inputs are singular"
-        );
-        let u = at_d_zero(&mut rng);
-        assert!((p.answer(&u).expect("fitted") - apply(&map, &u)).amax() < 1e-9);
-        let weights = p.weights.expect("fitted");
-        assert!(weights.columns(5, 3).iter().all(|&w| w == 0.0));
-        // Once d varies, it is fitted like any input.
-        for _ in 0..30 {
-            let u = random_input::<8>(&mut rng);
-            p.add(&u, &apply(&map, &u));
-        }
-        p.refit();
-        let u = random_input::<8>(&mut rng);
-        // The current set still holds the d = 0 patterns, which the map fits too.
-        assert!((p.answer(&u).expect("fitted") - apply(&map, &u)).amax() < 1e-9);
-    }
-}
+mod tests;

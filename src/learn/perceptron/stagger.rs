@@ -41,6 +41,14 @@ impl Stagger {
         }
     }
 
+    /// Starts the schedule over, as if no pattern had arrived (every set must be cleared
+    /// with it).
+    pub(super) fn restart(&mut self) {
+        self.arrived = 0;
+        self.current = 0;
+        self.counts.fill(0);
+    }
+
     /// The set the answer is solved from.
     pub(super) fn current(&self) -> usize {
         self.current

@@ -11,11 +11,14 @@ const IDLE: f64 = 1e-9;
 
 /// Σ z zᵀ and Σ z tᵀ over the patterns (z the input with a trailing 1, t the target) of
 /// one sum-set: the normal equations (Σ z zᵀ) W = Σ z tᵀ of the least-squares fit
-/// t ≈ Wᵀ z for the three joints at once.
+/// t ≈ Wᵀ z for the three joints at once. The set also knows the sequence number of the
+/// oldest pattern in it, so patterns from before a change of the mapping can be told apart.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct NormalSums<const M: usize> {
     zz: SMatrix<f64, M, M>,
     zt: SMatrix<f64, M, 3>,
+    /// The lowest sequence number added since the last clear; `u64::MAX` when empty.
+    oldest: u64,
 }
 
 impl<const M: usize> NormalSums<M> {
@@ -24,19 +27,28 @@ impl<const M: usize> NormalSums<M> {
         NormalSums {
             zz: SMatrix::zeros(),
             zt: SMatrix::zeros(),
+            oldest: u64::MAX,
         }
     }
 
-    /// Adds one pattern, given as its products z zᵀ and z tᵀ.
-    pub(super) fn add(&mut self, zz: &SMatrix<f64, M, M>, zt: &SMatrix<f64, M, 3>) {
+    /// Adds pattern number `seq`, given as its products z zᵀ and z tᵀ.
+    #[inline]
+    pub(super) fn add(&mut self, zz: &SMatrix<f64, M, M>, zt: &SMatrix<f64, M, 3>, seq: u64) {
         self.zz += zz;
         self.zt += zt;
+        self.oldest = self.oldest.min(seq);
     }
 
     /// Forgets every pattern.
     pub(super) fn clear(&mut self) {
         self.zz.fill(0.0);
         self.zt.fill(0.0);
+        self.oldest = u64::MAX;
+    }
+
+    /// The sequence number of the oldest pattern in the set, `None` when it holds none.
+    pub(super) fn oldest(&self) -> Option<u64> {
+        (self.oldest != u64::MAX).then_some(self.oldest)
     }
 
     /// The least-squares coefficients (one row per joint), or `None` when the system is

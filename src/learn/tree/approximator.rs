@@ -23,8 +23,10 @@ pub(crate) trait Approximator<const N: usize>: Clone + std::fmt::Debug {
         self.clone()
     }
 
-    /// Takes in one pattern. The answer may lag behind until [`refit`](Self::refit).
-    fn add(&mut self, input: &SVector<f64, N>, target: &Vector3<f64>);
+    /// Takes in one pattern, number `seq` in the order the tree was given patterns (a known
+    /// pattern carries the number of the pattern that earned it). The answer may lag behind
+    /// until [`refit`](Self::refit).
+    fn add(&mut self, input: &SVector<f64, N>, target: &Vector3<f64>, seq: u64);
 
     /// Brings the answer up to date with every pattern taken in.
     fn refit(&mut self);
@@ -32,6 +34,20 @@ pub(crate) trait Approximator<const N: usize>: Clone + std::fmt::Debug {
     /// The model's Δθ at `input`, or `None` while it has no usable model (too few
     /// patterns, a singular fit). Never NaN or infinite for a finite input.
     fn answer(&self, input: &SVector<f64, N>) -> Option<Vector3<f64>>;
+
+    /// Forgets what came from patterns numbered below `cutoff` (the mapping changed there),
+    /// if the model can tell them apart. True when it started over and must be given the
+    /// stored patterns from `cutoff` on again; by default nothing is forgotten (a re-trained
+    /// model is re-trained on the stored patterns, which by then are all newer).
+    fn forget_before(&mut self, _cutoff: u64) -> bool {
+        false
+    }
+
+    /// The answer at `input` of the model as it was before it last forgot, if it kept it
+    /// (`None` by default).
+    fn stale_answer(&self, _input: &SVector<f64, N>) -> Option<Vector3<f64>> {
+        None
+    }
 
     /// Re-trains the model on `batch`, a sample of the stored patterns of its box. Only
     /// called when [`RETRAINED`](Self::RETRAINED); nothing by default.

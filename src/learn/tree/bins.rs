@@ -1,8 +1,10 @@
 //! Bins: the finest boxes of the input space, each keeping its last `bin_size` patterns.
 //!
 //! A bin is found by its [`BinKey`] through a hash map. Its patterns form a chain of
-//! records, oldest first; once the bin is full a new pattern overwrites the oldest record,
-//! which moves to the end of the chain. Which node a bin hangs on is the tree's business.
+//! records, oldest first, each with the pattern's sequence number; once the bin is full a
+//! new pattern overwrites the oldest record, which moves to the end of the chain. Patterns
+//! older than a change of the mapping can be dropped; their records are reused. Which node
+//! a bin hangs on is the tree's business.
 
 use super::{BinKey, Records};
 use crate::control::Pattern;
@@ -51,6 +53,10 @@ pub(crate) struct Bins<const N: usize> {
     index: HashMap<BinKey, u32, BuildHasherDefault<KeyHasher>>,
     /// For each record, the next newer record of its bin.
     next: Vec<u32>,
+    /// For each record, its pattern's sequence number.
+    seqs: Vec<u64>,
+    /// Records of dropped patterns, to be reused.
+    free: Vec<u32>,
     records: Records<N>,
 }
 
@@ -62,6 +68,8 @@ impl<const N: usize> Bins<N> {
             bins: Vec::new(),
             index: HashMap::default(),
             next: Vec::new(),
+            seqs: Vec::new(),
+            free: Vec::new(),
             records,
         }
     }
@@ -81,18 +89,34 @@ impl<const N: usize> Bins<N> {
         (id, id == new_id)
     }
 
-    /// Stores `pattern` in bin `id`; true when the bin grew, false when its oldest pattern
-    /// made room.
-    pub(crate) fn store(&mut self, id: u32, pattern: &Pattern<N>) -> Result<bool, LearnError> {
+    /// Stores `pattern`, number `seq`, in bin `id`; true when the bin grew, false when its
+    /// oldest pattern made room. Sequence numbers must grow from call to call.
+    pub(crate) fn store(
+        &mut self,
+        id: u32,
+        pattern: &Pattern<N>,
+        seq: u64,
+    ) -> Result<bool, LearnError> {
         let bin = self.bins[id as usize];
         let (record, grew) = if bin.len < self.capacity {
-            let record = self.records.push(pattern)?;
-            self.next.push(record);
+            let record = match self.free.pop() {
+                Some(record) => {
+                    self.records.overwrite(record, pattern)?;
+                    record
+                }
+                None => {
+                    let record = self.records.push(pattern)?;
+                    self.next.push(record);
+                    self.seqs.push(seq);
+                    record
+                }
+            };
             (record, true)
         } else {
             self.records.overwrite(bin.first, pattern)?;
             (bin.first, false)
         };
+        self.seqs[record as usize] = seq;
         let bin = &mut self.bins[id as usize];
         if bin.len == 0 {
             bin.first = record;
@@ -124,19 +148,33 @@ impl<const N: usize> Bins<N> {
         self.records.read(self.bins[id as usize].last)
     }
 
-    /// Calls `f` with each pattern of bin `id`, oldest first.
+    /// Calls `f` with each pattern of bin `id` and its sequence number, oldest first.
     pub(crate) fn for_each_pattern(
         &mut self,
         id: u32,
-        mut f: impl FnMut(&Pattern<N>),
+        mut f: impl FnMut(&Pattern<N>, u64),
     ) -> Result<(), LearnError> {
         let bin = self.bins[id as usize];
         let mut record = bin.first;
         for _ in 0..bin.len {
-            f(&self.records.read(record)?);
+            f(&self.records.read(record)?, self.seqs[record as usize]);
             record = self.next[record as usize];
         }
         Ok(())
+    }
+
+    /// Drops the patterns of bin `id` numbered below `cutoff`; returns how many. The bin
+    /// stays, empty if nothing was newer.
+    pub(crate) fn drop_before(&mut self, id: u32, cutoff: u64) -> usize {
+        let bin = &mut self.bins[id as usize];
+        let mut dropped = 0;
+        while bin.len > 0 && self.seqs[bin.first as usize] < cutoff {
+            self.free.push(bin.first);
+            bin.first = self.next[bin.first as usize];
+            bin.len -= 1;
+            dropped += 1;
+        }
+        dropped
     }
 
     /// Bins there are.
@@ -150,6 +188,8 @@ impl<const N: usize> Bins<N> {
         self.bins.clear();
         self.index.clear();
         self.next.clear();
+        self.seqs.clear();
+        self.free.clear();
         self.records.clear()
     }
 }
@@ -168,8 +208,11 @@ mod tests {
 
     fn kept(bins: &mut Bins<5>, id: u32) -> Vec<usize> {
         let mut seen = Vec::new();
-        bins.for_each_pattern(id, |p| seen.push(p.input[0] as usize))
-            .unwrap();
+        bins.for_each_pattern(id, |p, seq| {
+            assert_eq!(p.input[0], seq as f64, "each pattern keeps its number");
+            seen.push(seq as usize);
+        })
+        .unwrap();
         seen
     }
 
@@ -187,14 +230,14 @@ mod tests {
         let (b, _) = bins.find_or_create(key(&[1, 3]));
         assert_eq!(bins.find_or_create(key(&[1, 2])), (a, false));
         let grew: Vec<bool> = (0..5)
-            .map(|i| bins.store(a, &pattern(i)).unwrap())
+            .map(|i| bins.store(a, &pattern(i), i as u64).unwrap())
             .collect();
         assert_eq!(grew, [true, true, true, false, false]);
-        bins.store(b, &pattern(7)).unwrap();
+        bins.store(b, &pattern(7), 7).unwrap();
         assert_eq!(kept(&mut bins, a), [2, 3, 4]);
         assert_eq!(kept(&mut bins, b), [7]);
         assert_eq!(bins.len(a), 3);
-        bins.store(a, &pattern(5)).unwrap();
+        bins.store(a, &pattern(5), 5).unwrap();
         assert_eq!(kept(&mut bins, a), [3, 4, 5]);
         assert_eq!(bins.latest(a).unwrap(), pattern(5));
         assert_eq!(bins.latest(b).unwrap(), pattern(7));
@@ -206,9 +249,34 @@ mod tests {
         let mut bins = Bins::new(1, Records::in_memory());
         let (a, _) = bins.find_or_create(key(&[0]));
         for i in 0..4 {
-            bins.store(a, &pattern(i)).unwrap();
+            bins.store(a, &pattern(i), i as u64).unwrap();
         }
         assert_eq!(kept(&mut bins, a), [3]);
         assert_eq!(bins.latest(a).unwrap(), pattern(3));
+    }
+
+    #[test]
+    fn patterns_older_than_a_change_are_dropped_and_their_records_reused() {
+        let mut bins = Bins::new(3, Records::in_memory());
+        let (a, _) = bins.find_or_create(key(&[4]));
+        let (b, _) = bins.find_or_create(key(&[5]));
+        for i in 0..5 {
+            bins.store(a, &pattern(i), i as u64).unwrap();
+        }
+        bins.store(b, &pattern(5), 5).unwrap();
+        assert_eq!(bins.drop_before(a, 4), 2);
+        assert_eq!(kept(&mut bins, a), [4]);
+        assert_eq!(bins.drop_before(b, 4), 0);
+        assert_eq!(bins.drop_before(b, 6), 1);
+        assert_eq!((bins.len(b), kept(&mut bins, b)), (0, vec![]));
+        let records = bins.records.len();
+        let grew: Vec<bool> = (6..10)
+            .map(|i| bins.store(a, &pattern(i), i as u64).unwrap())
+            .collect();
+        assert_eq!(grew, [true, true, false, false]);
+        assert_eq!(kept(&mut bins, a), [7, 8, 9]);
+        bins.store(b, &pattern(10), 10).unwrap();
+        assert_eq!(kept(&mut bins, b), [10]);
+        assert_eq!(bins.records.len(), records, "freed records were reused");
     }
 }

@@ -50,6 +50,16 @@ impl Levels {
         self.0[depth].patterns += 1;
     }
 
+    /// `patterns` patterns were dropped from bins on nodes at `depth`.
+    pub(crate) fn patterns_removed(&mut self, depth: usize, patterns: usize) {
+        self.0[depth].patterns -= patterns;
+    }
+
+    /// Nodes at every depth.
+    pub(crate) fn total_nodes(&self) -> usize {
+        self.0.iter().map(|level| level.nodes).sum()
+    }
+
     /// `bins` bins holding `patterns` patterns moved from a node at `from` to one at `to`.
     pub(crate) fn bins_moved(&mut self, from: usize, to: usize, bins: usize, patterns: usize) {
         self.0[from].bins -= bins;

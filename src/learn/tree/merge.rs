@@ -8,51 +8,72 @@
 //!   has its two sides swapped; this is the rule its text describes.)
 //!
 //! A merge cuts the node and its whole subtree; their bins, with their patterns, go back to
-//! the parent. Merging the root throws everything away: the tree starts afresh.
+//! the parent. Merging the root throws everything away: the tree starts afresh. Every merge
+//! is booked as a [`ModelEvent::Merge`]: its kind, the depth of the cut node and the nodes
+//! cut (a root merge: every node there was).
 
 use super::{Approximator, BranchRule, NestedTree, Path, TreeEvent, NONE, ROOT};
-use crate::learn::LearnError;
+use crate::learn::{LearnError, MergeKind, ModelEvent};
 
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// Merges the shallowest node on `path` that is due, if any.
     pub(super) fn merge_if_due(&mut self, path: &Path) -> Result<Option<TreeEvent>, LearnError> {
         let s = &self.settings;
-        let due = path.nodes().iter().copied().find(|&id| {
+        let due = path.nodes().iter().find_map(|&id| {
             let node = &self.nodes[id as usize];
-            let Some(own) = node.errors.mean().filter(|_| node.errors.is_full()) else {
-                return false;
-            };
+            let own = node.errors.mean().filter(|_| node.errors.is_full())?;
             let parents = (id != ROOT)
                 .then(|| self.nodes[node.parent as usize].box_errors(node.branch))
                 .flatten()
                 .filter(|errors| errors.is_full())
                 .and_then(|errors| errors.mean());
-            own > s.am_error_tresh || parents.is_some_and(|parents| own > parents + s.merge_error)
+            if own > s.am_error_tresh {
+                Some((id, MergeKind::Absolute))
+            } else if parents.is_some_and(|parents| own > parents + s.merge_error) {
+                Some((id, MergeKind::Relative))
+            } else {
+                None
+            }
         });
         match due {
             None => Ok(None),
-            Some(ROOT) => {
+            Some((ROOT, kind)) => {
+                let nodes = self.levels.total_nodes();
+                self.events.push(ModelEvent::Merge {
+                    kind,
+                    depth: 0,
+                    nodes,
+                });
                 self.reset()?;
                 Ok(Some(TreeEvent::Reset))
             }
-            Some(id) => {
-                self.cut(id);
+            Some((id, kind)) => {
+                self.cut_as(id, kind);
                 Ok(Some(TreeEvent::Merged))
             }
         }
     }
 
+    /// Cuts node `id` (not the root) and its subtree, and books it as a merge of `kind`.
+    pub(super) fn cut_as(&mut self, id: u32, kind: MergeKind) {
+        let depth = self.nodes[id as usize].depth;
+        let nodes = self.cut(id);
+        self.events.push(ModelEvent::Merge { kind, depth, nodes });
+    }
+
     /// Cuts node `id` (not the root) and its subtree; every bin they held goes back to the
-    /// parent, patterns and all.
-    pub(super) fn cut(&mut self, id: u32) {
+    /// parent, patterns and all. Returns the nodes cut.
+    pub(super) fn cut(&mut self, id: u32) -> usize {
         let node = &self.nodes[id as usize];
         let (parent, branch) = (node.parent, node.branch);
         let parent_depth = node.depth - 1;
         let mut bins = std::mem::take(&mut self.nodes[parent as usize].bins);
         let mut patterns = 0;
+        let mut cut = 0;
         let mut stack = std::mem::take(&mut self.scratch);
         stack.push(id);
         while let Some(x) = stack.pop() {
+            cut += 1;
             let node = &mut self.nodes[x as usize];
             stack.extend(node.children.iter().copied().filter(|&c| c != NONE));
             self.levels.node_removed(node.depth);
@@ -70,5 +91,6 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         p.children[usize::from(branch)] = NONE;
         // Evidence for splitting this sub-box again must be fresh.
         p.clear_box_errors(branch);
+        cut
     }
 }

@@ -36,7 +36,15 @@
 //!   (they would lie outside its box). The draws come from the learner's own seeded
 //!   generator.
 //! - **Split and merge**: see [`split`] and [`merge`] for the
-//!   exact tests. A merge of the root throws everything away.
+//!   exact tests. A merge of the root throws everything away. Every merge is booked (kind,
+//!   depth, nodes cut) for the learner to report.
+//! - **Dates.** Patterns are numbered in the order they are trained; a stored pattern and
+//!   every perceptron sum-set know their numbers, so what was learned before a detected
+//!   change can be told from what came after. The learner ([`NestedLearner`]) dates trials.
+//! - **Recovery** (merge strategy `change_detection`): after a detected change the tree
+//!   forgets what came before it, lets nodes short of new patterns defer to their
+//!   ancestors (or answer from their stale fits while those do better), and later cuts the
+//!   subtrees starved of new patterns; see [`recovery`].
 //! - **Re-training** (models that ask for it: nnw's nets): after a trial, nodes that took
 //!   in enough new patterns are trained again on a sample of their box's stored patterns;
 //!   see [`retrain`].
@@ -53,6 +61,7 @@ mod narrowing;
 mod nested_learner;
 mod nested_tree;
 mod node;
+mod recovery;
 mod region;
 mod retrain;
 mod settings;
@@ -60,6 +69,7 @@ mod split;
 mod store;
 #[cfg(test)]
 mod tests;
+mod training;
 
 pub(crate) use approximator::{Approximator, Sample};
 pub(crate) use bins::Bins;
@@ -70,6 +80,7 @@ pub(crate) use narrowing::Narrowing;
 pub(crate) use nested_learner::NestedLearner;
 pub(crate) use nested_tree::{NestedTree, TreeEvent};
 pub(crate) use node::{Node, NONE};
+pub(crate) use recovery::StaleVerdict;
 pub(crate) use region::Region;
 pub(crate) use settings::TreeSettings;
 pub(crate) use store::Records;

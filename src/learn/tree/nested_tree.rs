@@ -1,11 +1,11 @@
-//! The nested tree itself: answering, training a pattern down its path, storing it.
+//! The nested tree itself: its nodes, answering, the paths down it, adding and releasing
+//! nodes (training a pattern is in `training`).
 
 use super::{
-    Approximator, BinKey, Bins, BranchRule, Levels, Node, Records, Sample, TreeSettings, MAX_DEPTH,
-    NONE,
+    Approximator, BinKey, Bins, BranchRule, Levels, Node, Records, Sample, StaleVerdict,
+    TreeSettings, MAX_DEPTH, NONE,
 };
-use crate::control::Pattern;
-use crate::learn::{LearnError, LearnerStats};
+use crate::learn::{LearnError, LearnerStats, ModelEvent};
 use nalgebra::{SVector, Vector3};
 use rand_chacha::ChaCha8Rng;
 
@@ -51,7 +51,9 @@ impl Path {
 /// node on its path and is kept in its bin; sub-boxes that stay badly approximated are
 /// split off, subtrees that do worse than they should are cut.
 ///
-/// Nodes live in an arena (`Vec` plus free list) and link by `u32` indices.
+/// Nodes live in an arena (`Vec` plus free list) and link by `u32` indices. Patterns are
+/// numbered in the order they are trained (from 0, never reset), so what was learned can be
+/// dated.
 #[derive(Debug)]
 pub(crate) struct NestedTree<A, R, const N: usize> {
     pub(super) settings: TreeSettings,
@@ -63,6 +65,19 @@ pub(crate) struct NestedTree<A, R, const N: usize> {
     pub(super) bins: Bins<N>,
     pub(super) levels: Levels,
     pub(super) rng: ChaCha8Rng,
+    /// The number the next pattern trained gets.
+    pub(super) next_seq: u64,
+    /// The error of the deepest node that answered the last pattern trained, before it was
+    /// trained (`None` if no node had an answer).
+    pub(super) last_error: Option<f64>,
+    /// Merges since they were last taken.
+    pub(super) events: Vec<ModelEvent>,
+    /// After a detected change: whether nodes that await new patterns answer from their
+    /// stale fits.
+    pub(super) verdict: StaleVerdict,
+    /// The last detected change: the first valid pattern's number, and the patterns a node
+    /// needs from then on (`change_min_fresh`).
+    pub(super) change: Option<(u64, usize)>,
     /// Reused by subtree walks.
     pub(super) scratch: Vec<u32>,
     /// Nodes that took in patterns since their last re-training (re-trained models only);
@@ -100,6 +115,11 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             nodes: Vec::new(),
             free: Vec::new(),
             rng,
+            next_seq: 0,
+            last_error: None,
+            events: Vec::new(),
+            verdict: StaleVerdict::default(),
+            change: None,
             scratch: Vec::new(),
             touched: Vec::new(),
             picked: Vec::new(),
@@ -110,37 +130,15 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     }
 
     /// Δθ at `x`: the answer of the deepest node on its path that has one; zero if none
-    /// has. Always finite.
+    /// has. Always finite. (After a detected change, a node awaiting new patterns answers
+    /// from its stale fit if that has done better than deferring.)
     pub(crate) fn answer(&self, x: &SVector<f64, N>) -> Vector3<f64> {
         let path = self.descend(self.rule.key(x, self.settings.max_depth));
         path.nodes()
             .iter()
             .rev()
-            .find_map(|&id| self.nodes[id as usize].answer(x))
+            .find_map(|&id| self.nodes[id as usize].answer_or_stale(x, &self.verdict))
             .unwrap_or_else(Vector3::zeros)
-    }
-
-    /// Trains `pattern` to every node on its path, stores it in its bin, then merges or
-    /// splits where that is due.
-    pub(crate) fn train(&mut self, pattern: &Pattern<N>) -> Result<TreeEvent, LearnError> {
-        let finite = |v: &f64| v.is_finite();
-        if !(pattern.input.iter().all(finite) && pattern.target.iter().all(finite)) {
-            return Ok(TreeEvent::Ignored);
-        }
-        let key = self.rule.key(&pattern.input, self.settings.max_depth);
-        let path = self.descend(key);
-        for &id in path.nodes() {
-            self.train_node(id, key, pattern);
-        }
-        self.store(path.deepest(), key, pattern)?;
-        if let Some(event) = self.merge_if_due(&path)? {
-            return Ok(event);
-        }
-        Ok(if self.split_if_due(path.deepest(), key)? {
-            TreeEvent::Split
-        } else {
-            TreeEvent::Trained
-        })
     }
 
     /// Nodes, bins and patterns, in total and per depth.
@@ -158,6 +156,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     pub(super) fn reset(&mut self) -> Result<(), LearnError> {
         self.bins.clear()?;
         self.levels.clear();
+        self.change = None;
+        self.verdict = StaleVerdict::default();
         self.plant_root();
         Ok(())
     }
@@ -168,7 +168,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         self.touched.clear();
         let window = self.settings.am_error_iters;
         let model = self.template.spawn(&mut self.rng);
-        let root = Node::new(model, *self.rule.root(), NONE, 0, 0, window);
+        let mut root = Node::new(model, *self.rule.root(), NONE, 0, 0, window);
+        root.born = self.next_seq;
         self.nodes.push(root);
         self.levels.node_added(0);
     }
@@ -193,47 +194,6 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         path
     }
 
-    /// Measures node `id`'s error on the pattern (if it has its own answer), then trains it.
-    fn train_node(&mut self, id: u32, key: BinKey, pattern: &Pattern<N>) {
-        let window = self.settings.am_error_iters;
-        let known_share = self.settings.known_pattern_perc / 100.0;
-        let node = &mut self.nodes[id as usize];
-        if let Some(output) = node.answer(&pattern.input) {
-            let error = (output - pattern.target).norm();
-            node.errors.push(error);
-            self.levels.record_error(node.depth, error);
-            if let Some(branch) = key.branch(node.depth + 1) {
-                node.box_errors_mut(branch, window).push(error);
-            }
-        }
-        node.take_in(&pattern.input, &pattern.target, known_share, &mut self.rng);
-        node.model.refit();
-        if A::RETRAINED {
-            if node.fresh == 0 {
-                self.touched.push(id);
-            }
-            node.fresh += 1;
-        }
-    }
-
-    /// Keeps the pattern in its bin, which hangs on node `id`, the deepest on its path.
-    fn store(&mut self, id: u32, key: BinKey, pattern: &Pattern<N>) -> Result<(), LearnError> {
-        let (bin, created) = self.bins.find_or_create(key);
-        let node = &mut self.nodes[id as usize];
-        if created {
-            node.bins.push(bin);
-            self.levels.bin_added(node.depth);
-        }
-        if self.bins.store(bin, pattern)? {
-            node.patterns += 1;
-            if let Some(branch) = key.branch(node.depth + 1) {
-                node.box_patterns[usize::from(branch)] += 1;
-            }
-            self.levels.pattern_added(node.depth);
-        }
-        Ok(())
-    }
-
     /// A new child of `parent` at `branch`, with a fresh model and nothing else yet.
     pub(super) fn add_child(&mut self, parent: u32, branch: u8) -> u32 {
         let (region, depth) = {
@@ -242,7 +202,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         };
         let window = self.settings.am_error_iters;
         let model = self.template.spawn(&mut self.rng);
-        let node = Node::new(model, region, parent, branch, depth, window);
+        let mut node = Node::new(model, region, parent, branch, depth, window);
+        node.born = self.next_seq;
         let id = match self.free.pop() {
             Some(id) => {
                 self.nodes[id as usize] = node;

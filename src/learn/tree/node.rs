@@ -1,6 +1,6 @@
 //! A tree node: its box, its model, its error monitors and the bins that hang on it.
 
-use super::{Approximator, Monitor, Region, BRANCHES};
+use super::{Approximator, Monitor, Region, StaleVerdict, BRANCHES};
 use nalgebra::{SVector, Vector3};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
@@ -36,6 +36,20 @@ pub(crate) struct Node<A, const N: usize> {
     pub(super) box_patterns: [usize; BRANCHES],
     /// Patterns taken in since the model was last re-trained (re-trained models only).
     pub(super) fresh: usize,
+    /// The number of the first pattern trained to the tree after this node was made.
+    pub(super) born: u64,
+    /// Patterns taken in since it was made (known patterns, and those it was split off
+    /// with, aside).
+    pub(super) taken: u64,
+    /// At the last detected change: patterns it took in per pattern trained to the tree
+    /// until then.
+    pub(super) pace: f64,
+    /// After a detected change: patterns from after it the node still needs before its
+    /// model answers again (0: it answers whenever its model can). Meanwhile it may answer
+    /// from its model's stale fit, see [`answer_or_stale`](Self::answer_or_stale).
+    pub(super) awaiting: usize,
+    /// Meanwhile: how its stale fit did against its nearest answering ancestor.
+    pub(super) verdict: StaleVerdict,
     known_anchor: Option<SVector<f64, N>>,
     /// Known patterns owed: a fraction of one.
     known_credit: f64,
@@ -64,29 +78,69 @@ impl<A: Approximator<N>, const N: usize> Node<A, N> {
             patterns: 0,
             box_patterns: [0; BRANCHES],
             fresh: 0,
+            born: 0,
+            taken: 0,
+            pace: 0.0,
+            awaiting: 0,
+            verdict: StaleVerdict::default(),
             known_anchor: region.known_anchor(),
             known_credit: 0.0,
         }
     }
 
-    /// The node's own answer at global input `x`, if its model has one.
+    /// The node's own answer at global input `x`, if its model has one and it is not
+    /// awaiting patterns from after a change.
     pub(super) fn answer(&self, x: &SVector<f64, N>) -> Option<Vector3<f64>> {
+        if self.awaiting > 0 {
+            return None;
+        }
         self.model
             .answer(&self.region.local(x))
             .filter(|o| o.iter().all(|v| v.is_finite()))
     }
 
-    /// Trains the pattern (`x` global, `target`) to the model, followed by the known
-    /// patterns it earns: `known_share` of one per pattern, drawn with `rng`. A node whose
-    /// box does not hold the camera zero gets none. The model still needs a refit.
+    /// While the node awaits patterns from after a change: its model's fit from before
+    /// the change at global input `x`, if it kept one.
+    pub(super) fn stale_answer(&self, x: &SVector<f64, N>) -> Option<Vector3<f64>> {
+        if self.awaiting == 0 {
+            return None;
+        }
+        self.model
+            .stale_answer(&self.region.local(x))
+            .filter(|o| o.iter().all(|v| v.is_finite()))
+    }
+
+    /// Whether the node, while it awaits patterns, answers from its stale fit: by its own
+    /// verdict once that has enough comparisons, by the tree's (`tree`) until then.
+    pub(super) fn stale_ok(&self, tree: &StaleVerdict) -> bool {
+        self.verdict.decided().unwrap_or_else(|| tree.stale_ok())
+    }
+
+    /// The node's answer at `x`: its own, or while it awaits patterns its stale one if
+    /// that does better (see [`stale_ok`](Self::stale_ok)).
+    pub(super) fn answer_or_stale(
+        &self,
+        x: &SVector<f64, N>,
+        tree: &StaleVerdict,
+    ) -> Option<Vector3<f64>> {
+        self.answer(x)
+            .or_else(|| self.stale_ok(tree).then(|| self.stale_answer(x)).flatten())
+    }
+
+    /// Trains pattern number `seq` (`x` global, `target`) to the model, followed by the
+    /// known patterns it earns: `known_share` of one per pattern, drawn with `rng`. A node
+    /// whose box does not hold the camera zero gets none. The model still needs a refit.
     pub(super) fn take_in(
         &mut self,
         x: &SVector<f64, N>,
         target: &Vector3<f64>,
+        seq: u64,
         known_share: f64,
         rng: &mut ChaCha8Rng,
     ) {
-        self.model.add(&self.region.local(x), target);
+        self.awaiting = self.awaiting.saturating_sub(1);
+        self.taken += 1;
+        self.model.add(&self.region.local(x), target, seq);
         let Some(anchor) = self.known_anchor else {
             return;
         };
@@ -96,7 +150,7 @@ impl<A: Approximator<N>, const N: usize> Node<A, N> {
             let mut known = anchor;
             known[0] = rng.random_range(-1.0..=1.0);
             known[1] = rng.random_range(-1.0..=1.0);
-            self.model.add(&known, &Vector3::zeros());
+            self.model.add(&known, &Vector3::zeros(), seq);
         }
     }
 
@@ -108,6 +162,14 @@ impl<A: Approximator<N>, const N: usize> Node<A, N> {
     /// The running error on sub-box `branch`, made with `window` on first use.
     pub(super) fn box_errors_mut(&mut self, branch: u8, window: usize) -> &mut Monitor {
         self.box_errors[usize::from(branch)].get_or_insert_with(|| Monitor::new(window))
+    }
+
+    /// Starts measuring every sub-box anew.
+    pub(super) fn clear_all_box_errors(&mut self) {
+        self.box_errors
+            .iter_mut()
+            .flatten()
+            .for_each(Monitor::clear);
     }
 
     /// Starts measuring sub-box `branch` anew.

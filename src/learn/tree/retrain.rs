@@ -6,7 +6,8 @@
 //! is the newest pattern of each bin in its box — its own bins and those of its
 //! descendants, since a bin hangs on the deepest node covering it — and when there are
 //! more than `nnw_train_limit` such bins, that many of them drawn at random (from the
-//! tree's seeded generator). Models that are not re-trained never get here.
+//! tree's seeded generator). After a detected change every node is re-trained this way on
+//! the patterns from after it. Models that are not re-trained never get here.
 
 use super::{Approximator, BranchRule, NestedTree, NONE};
 use crate::learn::LearnError;
@@ -45,7 +46,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         stack.push(id);
         while let Some(x) = stack.pop() {
             let node = &self.nodes[x as usize];
-            picked.extend_from_slice(&node.bins);
+            // (A bin emptied by a detected change has nothing to give.)
+            picked.extend(node.bins.iter().copied().filter(|&b| self.bins.len(b) > 0));
             stack.extend(node.children.iter().copied().filter(|&c| c != NONE));
         }
         self.scratch = stack;

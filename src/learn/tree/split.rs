@@ -81,11 +81,13 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         let node = &mut self.nodes[child as usize];
         for i in 0..node.bins.len() {
             let (bin, rng) = (node.bins[i], &mut self.rng);
-            self.bins.for_each_pattern(bin, |pattern| {
-                node.take_in(&pattern.input, &pattern.target, known_share, rng);
+            self.bins.for_each_pattern(bin, |pattern, seq| {
+                node.take_in(&pattern.input, &pattern.target, seq, known_share, rng);
             })?;
         }
         node.model.refit();
+        // (Its pace counts the patterns that come after it was made.)
+        node.taken = 0;
         if A::RETRAINED {
             self.retrain(child)?;
         }

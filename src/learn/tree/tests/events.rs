@@ -1,6 +1,7 @@
 //! Tests of what training does by itself: splits, relative merges and root merges.
 
 use super::*;
+use crate::learn::{MergeKind, ModelEvent};
 
 #[test]
 fn sub_boxes_with_enough_patterns_and_error_are_split_off() {
@@ -30,10 +31,20 @@ fn a_root_absolute_merge_throws_everything_away() {
     let mut rng = ChaCha8Rng::seed_from_u64(6);
     // The curved mapping misses by more than 0.05° on average, even split.
     let mut trained = 0;
-    while t.train(&random_pattern(&mut rng)).unwrap() != TreeEvent::Reset {
+    let nodes = loop {
+        let nodes = t.stats().nodes;
+        if t.train(&random_pattern(&mut rng)).unwrap() == TreeEvent::Reset {
+            break nodes;
+        }
         trained += 1;
         assert!(trained < 5000, "no reset");
-    }
+    };
+    let merge = ModelEvent::Merge {
+        kind: MergeKind::Absolute,
+        depth: 0,
+        nodes,
+    };
+    assert_eq!(t.events, [merge], "every node there was, logged once");
     let stats = t.stats();
     assert_eq!((stats.nodes, stats.bins, stats.patterns), (1, 0, 0));
     assert!(stats.levels.iter().all(|l| l.error.is_none()));
@@ -67,7 +78,19 @@ fn a_relative_merge_compares_a_child_with_its_parent_on_the_same_patterns() {
         t.train(&elsewhere(&mut rng)).unwrap();
     }
     assert_eq!(t.nodes[child as usize].errors.len(), window - 1);
+    let grandchild = t.split(child, 0).unwrap();
+    assert_eq!(t.nodes[grandchild as usize].depth, 2);
     assert_eq!(t.train(&in_box(&mut rng)).unwrap(), TreeEvent::Merged);
     assert_eq!(t.nodes[ROOT as usize].children[31], NONE);
+    let merge = ModelEvent::Merge {
+        kind: MergeKind::Relative,
+        depth: 1,
+        nodes: 2,
+    };
+    assert_eq!(
+        t.events,
+        [merge],
+        "the child and its own child, logged once"
+    );
     assert_eq!(recount(&t), counters(&t));
 }

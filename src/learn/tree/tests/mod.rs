@@ -2,6 +2,7 @@
 
 mod events;
 mod narrowing;
+mod recovery;
 mod retraining;
 mod tally;
 

@@ -14,7 +14,7 @@ pub(super) struct Tally<const RETRAINED: bool, const N: usize> {
 impl<const RETRAINED: bool, const N: usize> Approximator<N> for Tally<RETRAINED, N> {
     const RETRAINED: bool = RETRAINED;
 
-    fn add(&mut self, _input: &SVector<f64, N>, _target: &Vector3<f64>) {
+    fn add(&mut self, _input: &SVector<f64, N>, _target: &Vector3<f64>, _seq: u64) {
         self.added += 1;
     }
 

@@ -1,0 +1,120 @@
+//! Training one pattern down its path: each node's error measured before it learns (and,
+//! after a detected change, its stale fit weighed against its ancestors), the pattern taken
+//! in by every node on the path and kept in its bin, then a merge or split where due.
+
+use super::{Approximator, BinKey, BranchRule, NestedTree, TreeEvent};
+use crate::control::Pattern;
+use crate::learn::LearnError;
+use nalgebra::Vector3;
+
+impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
+    /// Trains `pattern` to every node on its path, stores it in its bin, then merges or
+    /// splits where that is due. The pattern gets the next sequence number.
+    pub(crate) fn train(&mut self, pattern: &Pattern<N>) -> Result<TreeEvent, LearnError> {
+        let finite = |v: &f64| v.is_finite();
+        if !(pattern.input.iter().all(finite) && pattern.target.iter().all(finite)) {
+            self.last_error = None;
+            return Ok(TreeEvent::Ignored);
+        }
+        let seq = self.next_seq;
+        self.next_seq += 1;
+        let key = self.rule.key(&pattern.input, self.settings.max_depth);
+        let path = self.descend(key);
+        self.last_error = None;
+        // The error of the deepest node so far that answered from its own model.
+        let mut fallback = None;
+        for &id in path.nodes() {
+            let (answered, own) = self.train_node(id, key, pattern, seq, fallback);
+            self.last_error = answered.or(self.last_error);
+            fallback = own.or(fallback);
+        }
+        self.store(path.deepest(), key, pattern, seq)?;
+        if let Some(event) = self.merge_if_due(&path)? {
+            return Ok(event);
+        }
+        Ok(if self.split_if_due(path.deepest(), key)? {
+            TreeEvent::Split
+        } else {
+            TreeEvent::Trained
+        })
+    }
+
+    /// Measures node `id`'s error on pattern number `seq` (if it answers), then trains it.
+    /// `fallback` is the error of the nearest ancestor that answered from its own model;
+    /// a node awaiting new patterns weighs its stale fit against it. Returns the error of
+    /// the node's answer and, if that came from its own model, that error again.
+    fn train_node(
+        &mut self,
+        id: u32,
+        key: BinKey,
+        pattern: &Pattern<N>,
+        seq: u64,
+        fallback: Option<f64>,
+    ) -> (Option<f64>, Option<f64>) {
+        let window = self.settings.am_error_iters;
+        let known_share = self.settings.known_pattern_perc / 100.0;
+        let node = &mut self.nodes[id as usize];
+        let miss = |output: Vector3<f64>| (output - pattern.target).norm();
+        let own = node.answer(&pattern.input).map(miss);
+        let stale = node.stale_answer(&pattern.input).map(miss);
+        if let (Some(stale), Some(fallback)) = (stale, fallback) {
+            self.verdict.compare(stale, fallback);
+            node.verdict.compare(stale, fallback);
+        }
+        let error = own.or(stale.filter(|_| node.stale_ok(&self.verdict)));
+        if let Some(error) = error {
+            node.errors.push(error);
+            self.levels.record_error(node.depth, error);
+            if let Some(branch) = key.branch(node.depth + 1) {
+                node.box_errors_mut(branch, window).push(error);
+            }
+        }
+        node.take_in(
+            &pattern.input,
+            &pattern.target,
+            seq,
+            known_share,
+            &mut self.rng,
+        );
+        node.model.refit();
+        self.mark_touched(id);
+        (error, own)
+    }
+
+    /// Books node `id` as having taken in one more pattern since its last re-training
+    /// (re-trained models only).
+    pub(super) fn mark_touched(&mut self, id: u32) {
+        if A::RETRAINED {
+            let node = &mut self.nodes[id as usize];
+            if node.fresh == 0 {
+                self.touched.push(id);
+            }
+            node.fresh += 1;
+        }
+    }
+
+    /// Keeps pattern number `seq` in its bin, which hangs on node `id`, the deepest on its
+    /// path.
+    fn store(
+        &mut self,
+        id: u32,
+        key: BinKey,
+        pattern: &Pattern<N>,
+        seq: u64,
+    ) -> Result<(), LearnError> {
+        let (bin, created) = self.bins.find_or_create(key);
+        let node = &mut self.nodes[id as usize];
+        if created {
+            node.bins.push(bin);
+            self.levels.bin_added(node.depth);
+        }
+        if self.bins.store(bin, pattern, seq)? {
+            node.patterns += 1;
+            if let Some(branch) = key.branch(node.depth + 1) {
+                node.box_patterns[usize::from(branch)] += 1;
+            }
+            self.levels.pattern_added(node.depth);
+        }
+        Ok(())
+    }
+}

@@ -1,6 +1,6 @@
 //! What the controller sees at one pose: joint sensors and the camera reading.
 
-use nalgebra::Vector3;
+use nalgebra::{SVector, Vector3};
 
 /// The robot's state at one pose of a trial, in the learners' units.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -31,4 +31,17 @@ pub struct Query {
     pub theta2_deg: f64,
     /// Elbow angle θ3 in degrees.
     pub theta3_deg: f64,
+}
+
+impl Query {
+    /// The five inputs of the 5-input learners: (θ2, θ3, cx, cy, cz).
+    pub fn five_inputs(&self) -> SVector<f64, 5> {
+        SVector::<f64, 5>::new(
+            self.theta2_deg,
+            self.theta3_deg,
+            self.c.x,
+            self.c.y,
+            self.c.z,
+        )
+    }
 }

@@ -81,9 +81,7 @@ impl Learner for FfnLearner {
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        let c = query.c;
-        let input = SVector::<f64, 5>::new(query.theta2_deg, query.theta3_deg, c.x, c.y, c.z);
-        let out = self.net.forward(&self.scaling.apply(&input)) * OUTPUT_SCALE_DEG;
+        let out = self.net.forward(&self.scaling.apply(&query.five_inputs())) * OUTPUT_SCALE_DEG;
         if out.iter().all(|v| v.is_finite()) {
             out
         } else {

@@ -12,11 +12,11 @@
 //! inside, as queries and known patterns live at d = 0.
 
 use super::perceptron::Perceptron;
-use super::tree::{Narrowing, NestedLearner, Region, TreeSettings};
-use super::{LearnError, Learner, LearnerStats, Method, ModelEvent};
-use crate::control::{unadjusted_pattern, Observation, Query};
+use super::tree::{learner_on_nested_tree, Narrowing, NestedLearner, Region, TreeSettings};
+use super::{LearnError, Method};
+use crate::control::{unadjusted_pattern, Query};
 use crate::experiment::Config;
-use nalgebra::{SVector, Vector3};
+use nalgebra::SVector;
 use std::path::PathBuf;
 
 /// The stream of the run's seed that lin8's own draws (known patterns) come from.
@@ -64,41 +64,15 @@ impl Lin8 {
     }
 }
 
-impl Learner for Lin8 {
-    fn method(&self) -> Method {
-        Method::Lin8
-    }
-
-    fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        self.nested.answer(&Self::input(query))
-    }
-
-    fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
-        self.nested.learn(path)
-    }
-
-    fn stats(&self) -> LearnerStats {
-        self.nested.stats()
-    }
-
-    fn take_relearn_request(&mut self) -> bool {
-        self.nested.take_relearn_request()
-    }
-
-    fn start_trial(&mut self, trial: usize) {
-        self.nested.start_trial(trial);
-    }
-
-    fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
-        self.nested.drain_events(sink);
-    }
-}
+learner_on_nested_tree!(Lin8, Method::Lin8, Lin8::input);
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::learn::Lin5;
+    use crate::control::Observation;
+    use crate::learn::{Learner, Lin5};
     use nalgebra::Matrix3;
+    use nalgebra::Vector3;
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 

@@ -117,14 +117,7 @@ impl Learner for KohonenLearner {
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        let c = query.c;
-        let x = self.scaling.apply(&SVector::<f64, 5>::new(
-            query.theta2_deg,
-            query.theta3_deg,
-            c.x,
-            c.y,
-            c.z,
-        ));
+        let x = self.scaling.apply(&query.five_inputs());
         let winner = self.lattice.winner(&x);
         let map = &self.maps[winner];
         let out = map.output + map.jacobian * (x - self.lattice.weight(winner));

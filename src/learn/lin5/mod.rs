@@ -12,11 +12,11 @@
 //! interpolate rather than extrapolate.
 
 use super::perceptron::Perceptron;
-use super::tree::{Halving, NestedLearner, Region, TreeSettings};
-use super::{LearnError, Learner, LearnerStats, Method, ModelEvent};
-use crate::control::{adjusted_pattern, Observation, Query};
+use super::tree::{learner_on_nested_tree, Halving, NestedLearner, Region, TreeSettings};
+use super::{LearnError, Method};
+use crate::control::{adjusted_pattern, Query};
 use crate::experiment::Config;
-use nalgebra::{SVector, Vector3};
+use nalgebra::SVector;
 use std::path::PathBuf;
 
 /// The stream of the run's seed that lin5's own draws (known patterns) come from, apart
@@ -49,39 +49,7 @@ impl Lin5 {
     }
 }
 
-impl Learner for Lin5 {
-    fn method(&self) -> Method {
-        Method::Lin5
-    }
-
-    fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        let c = query.c;
-        let input = SVector::<f64, 5>::new(query.theta2_deg, query.theta3_deg, c.x, c.y, c.z);
-        self.nested.answer(&input)
-    }
-
-    /// Fails only when the patterns are kept in a file that can no longer be written or
-    /// read: the run cannot go on without them.
-    fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
-        self.nested.learn(path)
-    }
-
-    fn stats(&self) -> LearnerStats {
-        self.nested.stats()
-    }
-
-    fn take_relearn_request(&mut self) -> bool {
-        self.nested.take_relearn_request()
-    }
-
-    fn start_trial(&mut self, trial: usize) {
-        self.nested.start_trial(trial);
-    }
-
-    fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
-        self.nested.drain_events(sink);
-    }
-}
+learner_on_nested_tree!(Lin5, Method::Lin5, Query::five_inputs);
 
 #[cfg(test)]
 mod tests;

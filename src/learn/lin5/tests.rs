@@ -2,8 +2,10 @@
 //! and change detection.
 
 use super::*;
+use crate::control::Observation;
 use crate::experiment::MergeStrategy;
-use nalgebra::{Matrix3, Rotation3};
+use crate::learn::{Learner, ModelEvent};
+use nalgebra::{Matrix3, Rotation3, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 

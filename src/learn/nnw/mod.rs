@@ -13,11 +13,11 @@
 
 mod net_model;
 
-use super::tree::{Halving, NestedLearner, Region, TreeSettings};
-use super::{LearnError, Learner, LearnerStats, Method, ModelEvent};
-use crate::control::{adjusted_pattern, Observation, Query};
+use super::tree::{learner_on_nested_tree, Halving, NestedLearner, Region, TreeSettings};
+use super::{LearnError, Method};
+use crate::control::{adjusted_pattern, Query};
 use crate::experiment::Config;
-use nalgebra::{SVector, Vector3};
+use nalgebra::SVector;
 use net_model::NetModel;
 use std::path::PathBuf;
 
@@ -57,42 +57,14 @@ impl Nnw {
     }
 }
 
-impl Learner for Nnw {
-    fn method(&self) -> Method {
-        Method::Nnw
-    }
-
-    fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        let c = query.c;
-        let input = SVector::<f64, 5>::new(query.theta2_deg, query.theta3_deg, c.x, c.y, c.z);
-        self.nested.answer(&input)
-    }
-
-    fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
-        self.nested.learn(path)
-    }
-
-    fn stats(&self) -> LearnerStats {
-        self.nested.stats()
-    }
-
-    fn take_relearn_request(&mut self) -> bool {
-        self.nested.take_relearn_request()
-    }
-
-    fn start_trial(&mut self, trial: usize) {
-        self.nested.start_trial(trial);
-    }
-
-    fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
-        self.nested.drain_events(sink);
-    }
-}
+learner_on_nested_tree!(Nnw, Method::Nnw, Query::five_inputs);
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Matrix3;
+    use crate::control::Observation;
+    use crate::learn::Learner;
+    use nalgebra::{Matrix3, Vector3};
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 

@@ -77,7 +77,7 @@ pub(crate) use branch::{BinKey, BranchRule, Halving, BRANCHES, MAX_DEPTH};
 pub(crate) use levels::Levels;
 pub(crate) use monitor::Monitor;
 pub(crate) use narrowing::Narrowing;
-pub(crate) use nested_learner::NestedLearner;
+pub(crate) use nested_learner::{learner_on_nested_tree, NestedLearner};
 pub(crate) use nested_tree::{NestedTree, TreeEvent};
 pub(crate) use node::{Node, NONE};
 pub(crate) use recovery::StaleVerdict;

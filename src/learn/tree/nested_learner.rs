@@ -139,3 +139,44 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
         sink.append(&mut self.tree.events);
     }
 }
+
+/// Implements [`Learner`](crate::learn::Learner) for a learner that keeps its
+/// [`NestedLearner`] in a field `nested`: `$method` is its [`Method`](crate::learn::Method),
+/// `$input` turns a [`Query`](crate::control::Query) into the tree's input.
+macro_rules! learner_on_nested_tree {
+    ($learner:ty, $method:expr, $input:expr) => {
+        impl $crate::learn::Learner for $learner {
+            fn method(&self) -> $crate::learn::Method {
+                $method
+            }
+
+            fn propose(&mut self, query: &$crate::control::Query) -> nalgebra::Vector3<f64> {
+                self.nested.answer(&$input(query))
+            }
+
+            fn learn(
+                &mut self,
+                path: &[$crate::control::Observation],
+            ) -> Result<(), $crate::learn::LearnError> {
+                self.nested.learn(path)
+            }
+
+            fn stats(&self) -> $crate::learn::LearnerStats {
+                self.nested.stats()
+            }
+
+            fn take_relearn_request(&mut self) -> bool {
+                self.nested.take_relearn_request()
+            }
+
+            fn start_trial(&mut self, trial: usize) {
+                self.nested.start_trial(trial);
+            }
+
+            fn drain_events(&mut self, sink: &mut Vec<$crate::learn::ModelEvent>) {
+                self.nested.drain_events(sink);
+            }
+        }
+    };
+}
+pub(crate) use learner_on_nested_tree;

@@ -16,6 +16,8 @@ pub mod net;
 mod nnw;
 mod perceptron;
 mod stats;
+#[cfg(test)]
+mod synthetic;
 mod tree;
 
 pub use error::LearnError;

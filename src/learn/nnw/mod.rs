@@ -63,9 +63,10 @@ learner_on_nested_tree!(Nnw, Method::Nnw, Query::five_inputs);
 mod tests {
     use super::*;
     use crate::control::Observation;
+    use crate::learn::synthetic::{curved, one_move_trial};
     use crate::learn::Learner;
-    use nalgebra::{Matrix3, Vector3};
-    use rand::{Rng, SeedableRng};
+    use nalgebra::Vector3;
+    use rand::SeedableRng;
     use rand_chacha::ChaCha8Rng;
 
     fn config() -> Config {
@@ -75,33 +76,9 @@ mod tests {
         config
     }
 
-    /// A smooth synthetic arm: Δθ = J(θ)·c, J curving with θ2 and θ3.
-    fn jacobian(theta: &Vector3<f64>) -> Matrix3<f64> {
-        let (s2, c3) = (theta.y.to_radians().sin(), theta.z.to_radians().cos());
-        Matrix3::new(0.05, -0.02, 0.0, 0.01, 0.03, 0.04, -0.02, 0.0, 0.06) * (1.0 + 0.4 * s2 * c3)
-    }
-
-    /// A trial of one move that hits the target: one exact pattern.
+    /// A trial of one move on the curved synthetic arm that hits the target.
     fn one_move(rng: &mut ChaCha8Rng) -> [Observation; 2] {
-        let theta = Vector3::new(
-            rng.random_range(-90.0..90.0),
-            rng.random_range(0.0..70.0),
-            rng.random_range(50.0..135.0),
-        );
-        let c = Vector3::new(
-            rng.random_range(-250.0..250.0),
-            rng.random_range(-250.0..250.0),
-            rng.random_range(-90.0..250.0),
-        );
-        let start = Observation {
-            theta_deg: theta,
-            c,
-        };
-        let end = Observation {
-            theta_deg: theta + jacobian(&theta) * c,
-            c: Vector3::zeros(),
-        };
-        [start, end]
+        one_move_trial(curved, rng)
     }
 
     /// Mean miss (degrees) over fresh queries, and the mean move asked for.

@@ -9,8 +9,9 @@
 
 use eyehand::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
 use eyehand::control::{TrialLoop, TrialSettings};
+use eyehand::experiment::setup::build_learner;
 use eyehand::experiment::{Config, SimKind, StepFigures};
-use eyehand::learn::{build_learner, Method};
+use eyehand::learn::Method;
 use eyehand::robot::{ArmModel, Controlled, DynamicSettings, DynamicSim, KinematicSim, Simulator};
 use nalgebra::{Point3, Vector3};
 use std::time::Instant;

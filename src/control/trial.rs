@@ -3,8 +3,8 @@
 //! `min_feedback_steps` steps) or `feedback_steps` are used; the trial's poses are then
 //! learned.
 
-use super::Observation;
 use crate::camera::{Camera, NotSeen};
+use crate::learn::Observation;
 use crate::learn::{LearnError, Learner};
 use crate::robot::{ReachSpace, Simulator};
 use crate::units::MM_PER_M;

@@ -12,6 +12,7 @@ pub mod plot;
 mod progress;
 mod run;
 mod run_folder;
+pub mod setup;
 mod summary;
 mod sweep;
 

@@ -4,18 +4,12 @@
 use super::output::DataFiles;
 use super::plot::{plot_run, PlotError};
 use super::progress::RunProgress;
+use super::setup::{build_camera, build_learner, build_simulator, trial_settings};
 use super::summary::{RunSummary, StepFigures};
-use super::{
-    allocate_run_folder, peak_rss_kb, resident_kb, CameraKind, Config, Event, RunFolderError,
-    SimKind,
-};
-use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
-use crate::control::{TrialLoop, TrialSettings};
-use crate::learn::{build_learner, LearnError, LearnerStats};
-use crate::robot::{
-    load_urdf, ArmModel, DynamicSim, KinematicSim, MoveSettings, RobotError, Simulator, UrdfError,
-};
-use crate::units::M_PER_CM;
+use super::{allocate_run_folder, peak_rss_kb, resident_kb, Config, Event, RunFolderError};
+use crate::control::TrialLoop;
+use crate::learn::{LearnError, LearnerStats};
+use crate::robot::{load_urdf, ArmModel, RobotError, UrdfError};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -103,8 +97,8 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
         Some(path) => load_urdf(path)?,
         None => ArmModel::oscar6(),
     };
-    let sim = build_simulator(config, model.clone())?;
-    let camera = build_camera(config)?;
+    let sim = build_simulator(config, model.clone());
+    let camera = build_camera(config);
     let folder = allocate_run_folder(&options.data_dir, config.method.name())?;
     let mut learner = build_learner(config, &model, Some(&folder))?;
     let mut events = Event::from_config(config);
@@ -112,13 +106,7 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
     events.sort_by_key(Event::trial);
     write_info_header(&folder, options, &events)?;
 
-    let settings = TrialSettings {
-        feedback_steps: config.feedback_steps,
-        min_feedback_steps: config.min_feedback_steps,
-        epsilon: config.min_target_distance * M_PER_CM,
-        minimal_joint_move_deg: config.minimal_joint_move,
-    };
-    let mut trials = TrialLoop::new(sim, camera, settings, config.seed);
+    let mut trials = TrialLoop::new(sim, camera, trial_settings(config), config.seed);
     let mut files = DataFiles::create(&folder)?;
     let mut figures = StepFigures::new(config.trials, config.feedback_steps);
     let mut failures = 0;
@@ -186,27 +174,6 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
         plot_run(&folder, PLOT_SMOOTHING)?;
     }
     Ok(RunResult { folder, summary })
-}
-
-fn build_simulator(config: &Config, model: ArmModel) -> Result<Box<dyn Simulator>, RunError> {
-    match config.sim {
-        SimKind::Kinematic => Ok(Box::new(KinematicSim::new(
-            model,
-            MoveSettings::from_degrees(config.robot_speed, config.robot_accel),
-        ))),
-        SimKind::Dynamic => Ok(Box::new(DynamicSim::new(model, config.dynamic_settings()))),
-    }
-}
-
-fn build_camera(config: &Config) -> Result<Box<dyn Camera>, RunError> {
-    let model = CameraModel::default();
-    match config.camera {
-        CameraKind::Projection => Ok(Box::new(ProjectionCamera::new(model))),
-        CameraKind::Raycast => Ok(Box::new(RaycastCamera::new(
-            model,
-            config.raycast_resolution,
-        ))),
-    }
 }
 
 /// One line on how the tree is built up, for `verbose_output`.

@@ -5,7 +5,7 @@
 
 use super::net::{minimize, BatchLoss, DenseNet, InputScaling};
 use super::{LearnError, Learner, LearnerStats, Method};
-use crate::control::{adjusted_pattern, pose_pairs, Observation, Query};
+use crate::learn::{adjusted_pattern, pose_pairs, Observation, Query};
 use nalgebra::{SVector, Vector3};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

@@ -6,7 +6,7 @@
 
 use super::{LearnError, Learner, LearnerStats, Method};
 use crate::camera::{Camera, CameraModel, ProjectionCamera};
-use crate::control::{Observation, Query};
+use crate::learn::{Observation, Query};
 use crate::robot::{ArmModel, Controlled};
 use nalgebra::Vector3;
 

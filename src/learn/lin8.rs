@@ -14,8 +14,8 @@
 use super::perceptron::Perceptron;
 use super::tree::{learner_on_nested_tree, Narrowing, NestedLearner, Region, TreeSettings};
 use super::{LearnError, Method};
-use crate::control::{unadjusted_pattern, Query};
 use crate::experiment::Config;
+use crate::learn::{unadjusted_pattern, Query};
 use nalgebra::SVector;
 use std::path::PathBuf;
 
@@ -69,7 +69,7 @@ learner_on_nested_tree!(Lin8, Method::Lin8, Lin8::input);
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::control::Observation;
+    use crate::learn::Observation;
     use crate::learn::{Learner, Lin5};
     use nalgebra::Matrix3;
     use nalgebra::Vector3;

@@ -1,7 +1,7 @@
 //! The learners: everything that maps a camera reading and two joint angles to a joint move.
 //!
-//! Every learner implements [`Learner`]; the trial loop only talks to that trait. A learner
-//! is built by [`build_learner`] from the run's [`Config`](crate::experiment::Config).
+//! Every learner implements [`Learner`]; the trial loop only talks to that trait. Each
+//! learner takes its own settings; `experiment::setup` builds the one a run's config names.
 
 pub mod change;
 mod error;
@@ -14,6 +14,8 @@ mod method;
 mod model_event;
 pub mod net;
 mod nnw;
+mod observation;
+mod patterns;
 mod perceptron;
 mod stats;
 #[cfg(test)]
@@ -29,14 +31,11 @@ pub use lin8::Lin8;
 pub use method::Method;
 pub use model_event::{MergeKind, ModelEvent};
 pub use nnw::Nnw;
+pub use observation::{Observation, Query};
+pub use patterns::{adjusted_pattern, pose_pairs, unadjusted_pattern, Pattern, Pattern5, Pattern8};
 pub use stats::{LearnerStats, LevelStats};
 
-use crate::camera::CameraModel;
-use crate::control::{Observation, Query};
-use crate::experiment::Config;
-use crate::robot::ArmModel;
 use nalgebra::Vector3;
-use std::path::Path;
 
 /// A learner of the eye-hand mapping `Δθ = N(c, θ2, θ3)`.
 ///
@@ -72,61 +71,4 @@ pub trait Learner: std::fmt::Debug {
 
     /// Moves the merges and detected changes since the last call into `sink`.
     fn drain_events(&mut self, _sink: &mut Vec<ModelEvent>) {}
-}
-
-/// Builds the learner the config names. `model` is the nominal robot (for `ik`); a
-/// learner that stores patterns in a file puts it in `run_dir`.
-pub fn build_learner(
-    config: &Config,
-    model: &ArmModel,
-    run_dir: Option<&Path>,
-) -> Result<Box<dyn Learner>, LearnError> {
-    match config.method {
-        Method::Lin5 | Method::Lin8 | Method::Nnw => {
-            let pat_file = run_dir
-                .filter(|_| config.use_pat_file == 0)
-                .map(|dir| dir.join("pat_file"));
-            let learner: Box<dyn Learner> = match config.method {
-                Method::Lin8 => Box::new(Lin8::new(config, pat_file)?),
-                Method::Nnw => Box::new(Nnw::new(config, pat_file)?),
-                _ => Box::new(Lin5::new(config, pat_file)?),
-            };
-            Ok(learner)
-        }
-        Method::Ik => Ok(Box::new(IkLearner::new(
-            model.clone(),
-            CameraModel::default(),
-        ))),
-        Method::Ffn => {
-            let settings = FfnSettings {
-                hidden_units: config.ffn_hidden_units,
-                wrange: config.wrange,
-                window: config.ffn_window,
-                cg_iterations: config.ffn_cg_iterations,
-                minimal_joint_move: config.minimal_joint_move,
-            };
-            Ok(Box::new(FfnLearner::new(
-                settings,
-                input_bounds(config),
-                config.seed,
-            )))
-        }
-        Method::Kohonen => {
-            let settings = KohonenSettings {
-                side: config.kohonen_side,
-                anneal_patterns: config.kohonen_anneal_patterns,
-                minimal_joint_move: config.minimal_joint_move,
-                ..KohonenSettings::default()
-            };
-            Ok(Box::new(KohonenLearner::new(
-                settings,
-                input_bounds(config),
-            )))
-        }
-    }
-}
-
-/// The config's boundaries of the five inputs (θ2, θ3, cx, cy, cz).
-fn input_bounds(config: &Config) -> [(f64, f64); 5] {
-    std::array::from_fn(|i| config.boundary(i))
 }

@@ -1,7 +1,7 @@
 //! Synthetic arms for the learners' unit tests: a mapping Δθ = J(θ)·c given by its
 //! Jacobian, and trials drawn from it.
 
-use crate::control::Observation;
+use crate::learn::Observation;
 use nalgebra::{Matrix3, Vector3};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;

@@ -5,8 +5,8 @@
 //! exponentially over `anneal_patterns` patterns.
 
 use super::Lattice;
-use crate::control::{adjusted_pattern, pose_pairs, Observation, Query};
 use crate::learn::net::InputScaling;
+use crate::learn::{adjusted_pattern, pose_pairs, Observation, Query};
 use crate::learn::{LearnError, Learner, LearnerStats, Method};
 use nalgebra::{SMatrix, SVector, Vector3};
 

@@ -14,8 +14,8 @@
 use super::perceptron::Perceptron;
 use super::tree::{learner_on_nested_tree, Halving, NestedLearner, Region, TreeSettings};
 use super::{LearnError, Method};
-use crate::control::{adjusted_pattern, Query};
 use crate::experiment::Config;
+use crate::learn::{adjusted_pattern, Query};
 use nalgebra::SVector;
 use std::path::PathBuf;
 

@@ -15,8 +15,8 @@ mod net_model;
 
 use super::tree::{learner_on_nested_tree, Halving, NestedLearner, Region, TreeSettings};
 use super::{LearnError, Method};
-use crate::control::{adjusted_pattern, Query};
 use crate::experiment::Config;
+use crate::learn::{adjusted_pattern, Query};
 use nalgebra::SVector;
 use net_model::NetModel;
 use std::path::PathBuf;
@@ -62,9 +62,9 @@ learner_on_nested_tree!(Nnw, Method::Nnw, Query::five_inputs);
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::control::Observation;
     use crate::learn::synthetic::{curved, one_move_trial};
     use crate::learn::Learner;
+    use crate::learn::Observation;
     use nalgebra::Vector3;
     use rand::SeedableRng;
     use rand_chacha::ChaCha8Rng;

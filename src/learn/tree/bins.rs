@@ -7,8 +7,8 @@
 //! a bin hangs on is the tree's business.
 
 use super::{BinKey, Records};
-use crate::control::Pattern;
 use crate::learn::LearnError;
+use crate::learn::Pattern;
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
 

@@ -5,9 +5,9 @@
 //! [`ModelEvent`]s.
 
 use super::{Approximator, BranchRule, NestedTree, Records, TreeEvent, TreeSettings};
-use crate::control::{pose_pairs, Observation, Pattern};
 use crate::experiment::{Config, MergeStrategy};
 use crate::learn::change::{ChangeWatch, WatchStep};
+use crate::learn::{pose_pairs, Observation, Pattern};
 use crate::learn::{LearnError, LearnerStats, ModelEvent};
 use nalgebra::{SVector, Vector3};
 use rand::SeedableRng;
@@ -142,7 +142,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
 
 /// Implements [`Learner`](crate::learn::Learner) for a learner that keeps its
 /// [`NestedLearner`] in a field `nested`: `$method` is its [`Method`](crate::learn::Method),
-/// `$input` turns a [`Query`](crate::control::Query) into the tree's input.
+/// `$input` turns a [`Query`](crate::learn::Query) into the tree's input.
 macro_rules! learner_on_nested_tree {
     ($learner:ty, $method:expr, $input:expr) => {
         impl $crate::learn::Learner for $learner {
@@ -150,13 +150,13 @@ macro_rules! learner_on_nested_tree {
                 $method
             }
 
-            fn propose(&mut self, query: &$crate::control::Query) -> nalgebra::Vector3<f64> {
+            fn propose(&mut self, query: &$crate::learn::Query) -> nalgebra::Vector3<f64> {
                 self.nested.answer(&$input(query))
             }
 
             fn learn(
                 &mut self,
-                path: &[$crate::control::Observation],
+                path: &[$crate::learn::Observation],
             ) -> Result<(), $crate::learn::LearnError> {
                 self.nested.learn(path)
             }

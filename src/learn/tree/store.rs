@@ -5,8 +5,8 @@
 //! grows only with new records. On disk a record is the input followed by the target, each
 //! value a little-endian `f64`; the file has no header and is meant for this program only.
 
-use crate::control::Pattern;
 use crate::learn::LearnError;
+use crate::learn::Pattern;
 use nalgebra::{SVector, Vector3};
 use std::fs::File;
 use std::io::{Read, Seek, SeekFrom, Write};

@@ -3,8 +3,8 @@
 //! in by every node on the path and kept in its bin, then a merge or split where due.
 
 use super::{Approximator, BinKey, BranchRule, NestedTree, TreeEvent};
-use crate::control::Pattern;
 use crate::learn::LearnError;
+use crate::learn::Pattern;
 use nalgebra::Vector3;
 
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {

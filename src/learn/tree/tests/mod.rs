@@ -7,8 +7,8 @@ mod retraining;
 mod tally;
 
 use super::*;
-use crate::control::Pattern;
 use crate::learn::perceptron::Perceptron;
+use crate::learn::Pattern;
 use nalgebra::{SVector, Vector3};
 use proptest::prelude::*;
 use rand::{Rng, SeedableRng};

@@ -9,7 +9,7 @@
 
 use eyehand::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
 use eyehand::control::{TrialLoop, TrialSettings};
-use eyehand::experiment::setup::build_learner;
+use eyehand::experiment::setup::{build_learner, dynamic_settings};
 use eyehand::experiment::{Config, SimKind, StepFigures};
 use eyehand::learn::Method;
 use eyehand::robot::{ArmModel, Controlled, DynamicSettings, DynamicSim, KinematicSim, Simulator};
@@ -40,12 +40,12 @@ fn trials(method: Method, sim: SimKind, count: usize) -> Row {
         SimKind::Kinematic => (
             Box::new(KinematicSim::new(
                 model.clone(),
-                config.dynamic_settings().moves,
+                dynamic_settings(&config).moves,
             )),
             None,
         ),
         SimKind::Dynamic => {
-            let dynamic = DynamicSim::new(model.clone(), config.dynamic_settings());
+            let dynamic = DynamicSim::new(model.clone(), dynamic_settings(&config));
             let counters = dynamic.counters();
             (Box::new(dynamic), Some(counters))
         }
@@ -105,7 +105,7 @@ fn micros_per_step() -> f64 {
         settle_position_tol: 1e-300,
         settle_speed_tol: 1e-300,
         settle_timeout: 5.0,
-        ..Config::default_config().dynamic_settings()
+        ..dynamic_settings(&Config::default_config())
     };
     let mut sim = DynamicSim::new(ArmModel::oscar6(), hold);
     sim.place(&Controlled::new(0.3, 0.2, 0.6))

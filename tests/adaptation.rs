@@ -3,7 +3,8 @@
 //! over; change detection finds a camera turn within 50 trials, dates it, forgets and
 //! recovers; and a long run without a change raises no alarm and cuts nothing.
 
-use eyehand::experiment::{run, Config, MergeStrategy, RunOptions};
+use eyehand::experiment::{run, Config, RunOptions};
+use eyehand::learn::MergeStrategy;
 use std::path::{Path, PathBuf};
 
 /// A lin5 run of `trials` trials with `events`, `merge_strategy` and `am_error_tresh` set;

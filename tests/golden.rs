@@ -4,8 +4,8 @@
 //! is measured, written down, and recorded anew with `EYEHAND_BLESS=1 cargo test --test
 //! golden`.
 
-use eyehand::experiment::{run, Config, Event, MergeStrategy, RunOptions};
-use eyehand::learn::Method;
+use eyehand::experiment::{run, Config, Event, RunOptions};
+use eyehand::learn::{MergeStrategy, Method};
 use serde_json::{json, Map, Value};
 use std::path::{Path, PathBuf};
 

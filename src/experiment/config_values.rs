@@ -1,6 +1,6 @@
 //! Typed values of config entries: how each kind is parsed and written back.
 
-use crate::learn::Method;
+use crate::learn::{MergeStrategy, Method};
 use std::fmt;
 use std::str::FromStr;
 
@@ -80,15 +80,6 @@ pub enum CameraKind {
     Projection,
     /// Rays through every pixel against the object's collider.
     Raycast,
-}
-
-/// How a nested learner gets rid of what a change of the mapping made wrong.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum MergeStrategy {
-    /// The study's absolute and relative merges (§2.4.3), as it ran them.
-    Thesis,
-    /// Global change detection on the stream of pattern errors (§4.4.6) on top of them.
-    ChangeDetection,
 }
 
 macro_rules! choice_names {

@@ -21,7 +21,7 @@ pub use compare::{
     compare_cells, compare_table, run_compare, CompareError, CompareReport, CompareRequest,
 };
 pub use config::{Config, ConfigError, DEFAULT_CONFIG_NAME, ENTRY_NAMES};
-pub use config_values::{CameraKind, MergeStrategy, SimKind};
+pub use config_values::{CameraKind, SimKind};
 pub use events::{Event, EventError};
 pub use memory::{peak_rss_kb, resident_kb};
 pub use output::DataFiles;

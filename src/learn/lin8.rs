@@ -11,76 +11,116 @@
 //! Input boundaries are `boundary_0` … `boundary_7`; those of d (5–7) should hold zero well
 //! inside, as queries and known patterns live at d = 0.
 
-use super::perceptron::Perceptron;
-use super::tree::{learner_on_nested_tree, Narrowing, NestedLearner, Region, TreeSettings};
-use super::{LearnError, Method};
-use crate::experiment::Config;
-use crate::learn::{unadjusted_pattern, Query};
+use super::lin5::FIVE_INPUT_BOUNDS;
+use super::perceptron::{Perceptron, PerceptronSettings};
+use super::tree::{Narrowing, NestedLearner, NestedSettings, Region};
+use super::{unadjusted_pattern, LearnError, Method, Query};
 use nalgebra::SVector;
 use std::path::PathBuf;
 
 /// The stream of the run's seed that lin8's own draws (known patterns) come from.
 const RNG_STREAM: u64 = 0x6c69_6e38;
 
-/// The `lin8` learner: a nested tree of perceptrons over the unadjusted 8-input patterns.
-#[derive(Debug)]
-pub struct Lin8 {
-    nested: NestedLearner<Perceptron<8, 9>, Narrowing, 8>,
+/// Settings of `lin8`, the Nested Perceptron without input adjustment. The defaults are
+/// those of the shipped `configs/lin8.conf`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lin8Settings {
+    /// The root box of the inputs (θ2, θ3, c, d) as (low, high) per input (`boundary_0` …
+    /// `boundary_7`; degrees, pixels, the area measure); by default lin5's five, then
+    /// (−256, 256), (−256, 256), (−200, 200) for d.
+    pub bounds: [(f64, f64); 8],
+    /// The factor by which the d box narrows around zero at each depth
+    /// (`error_area_shrink`); 0.5 by default.
+    pub error_area_shrink: f64,
+    /// The tree, merges, change detection, `minimal_joint_move` and the seed.
+    pub nested: NestedSettings,
+    /// Each node's perceptron.
+    pub perceptron: PerceptronSettings,
 }
+
+impl Default for Lin8Settings {
+    fn default() -> Self {
+        let [a, b, c, d, e] = FIVE_INPUT_BOUNDS;
+        Lin8Settings {
+            bounds: [
+                a,
+                b,
+                c,
+                d,
+                e,
+                (-256.0, 256.0),
+                (-256.0, 256.0),
+                (-200.0, 200.0),
+            ],
+            error_area_shrink: 0.5,
+            nested: NestedSettings::default(),
+            perceptron: PerceptronSettings::default(),
+        }
+    }
+}
+
+/// The `lin8` learner: a nested tree of perceptrons over the unadjusted 8-input patterns.
+pub type Lin8 = NestedLearner<Perceptron<8, 9>, Narrowing, 8>;
 
 impl Lin8 {
-    /// A `lin8` learner set up by `config` (boundaries 0–7, `error_area_shrink`, tree,
-    /// perceptron and split and merge entries, `seed`), keeping its patterns in `pat_file`
-    /// when given (the file is created or emptied now), otherwise in memory.
-    pub fn new(config: &Config, pat_file: Option<PathBuf>) -> Result<Self, LearnError> {
-        let low = SVector::<f64, 8>::from_fn(|i, _| config.boundary(i).0);
-        let high = SVector::<f64, 8>::from_fn(|i, _| config.boundary(i).1);
-        let rule = Narrowing::new(Region::from_bounds(low, high), config.error_area_shrink);
-        let nested = NestedLearner::new(
-            config,
-            TreeSettings::from_config(config),
-            rule,
-            Perceptron::new(config.nr_of_matrices, config.max_pats_in_mat).asked_at_zero(5..8),
-            unadjusted_pattern,
+    /// A `lin8` learner set up by `settings`, keeping its patterns in `pat_file` when given
+    /// (the file is created or emptied now), otherwise in memory.
+    pub fn new(settings: &Lin8Settings, pat_file: Option<PathBuf>) -> Result<Self, LearnError> {
+        let low = SVector::<f64, 8>::from_fn(|i, _| settings.bounds[i].0);
+        let high = SVector::<f64, 8>::from_fn(|i, _| settings.bounds[i].1);
+        let rule = Narrowing::new(Region::from_bounds(low, high), settings.error_area_shrink);
+        NestedLearner::build(
+            Method::Lin8,
+            &settings.nested,
+            (
+                rule,
+                Perceptron::new(settings.perceptron).asked_at_zero(5..8),
+            ),
+            (unadjusted_pattern, lin8_input),
             pat_file,
             RNG_STREAM,
-        )?;
-        Ok(Lin8 { nested })
-    }
-
-    /// The input of a query: the reading now, and d = 0 (the target reached).
-    fn input(query: &Query) -> SVector<f64, 8> {
-        let c = query.c;
-        SVector::<f64, 8>::from([
-            query.theta2_deg,
-            query.theta3_deg,
-            c.x,
-            c.y,
-            c.z,
-            0.0,
-            0.0,
-            0.0,
-        ])
+        )
     }
 }
 
-learner_on_nested_tree!(Lin8, Method::Lin8, Lin8::input);
+/// The input of a query: the reading now, and d = 0 (the target reached).
+fn lin8_input(query: &Query) -> SVector<f64, 8> {
+    let c = query.c;
+    SVector::<f64, 8>::from([
+        query.theta2_deg,
+        query.theta3_deg,
+        c.x,
+        c.y,
+        c.z,
+        0.0,
+        0.0,
+        0.0,
+    ])
+}
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::learn::Observation;
-    use crate::learn::{Learner, Lin5};
+    use crate::learn::{Learner, Lin5, Lin5Settings, Observation};
     use nalgebra::Matrix3;
     use nalgebra::Vector3;
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 
-    fn config() -> Config {
-        let mut config = Config::default_config();
-        config.method = Method::Lin8;
-        config.seed = 12;
-        config
+    /// The shared settings of both learners, seed 12.
+    fn nested() -> NestedSettings {
+        NestedSettings {
+            seed: 12,
+            ..NestedSettings::default()
+        }
+    }
+
+    fn settings() -> Lin8Settings {
+        Lin8Settings {
+            error_area_shrink: 0.2,
+            nested: nested(),
+            ..Lin8Settings::default()
+        }
     }
 
     /// A mapping both learners fit exactly: Δθ = J·(c − d), the base never turning (the
@@ -119,8 +159,12 @@ mod tests {
 
     #[test]
     fn the_lin8_answer_equals_the_lin5_answer_where_both_are_exact() {
-        let mut lin8 = Lin8::new(&config(), None).unwrap();
-        let mut lin5 = Lin5::new(&config(), None).unwrap();
+        let mut lin8 = Lin8::new(&settings(), None).unwrap();
+        let lin5_settings = Lin5Settings {
+            nested: nested(),
+            ..Lin5Settings::default()
+        };
+        let mut lin5 = Lin5::new(&lin5_settings, None).unwrap();
         let mut rng = ChaCha8Rng::seed_from_u64(1);
         for _ in 0..300 {
             let trial = one_move(&mut rng);
@@ -139,7 +183,7 @@ mod tests {
 
     #[test]
     fn answers_are_finite_for_any_query() {
-        let mut lin8 = Lin8::new(&config(), None).unwrap();
+        let mut lin8 = Lin8::new(&settings(), None).unwrap();
         let mut rng = ChaCha8Rng::seed_from_u64(3);
         for _ in 0..100 {
             lin8.learn(&one_move(&mut rng)).unwrap();

@@ -10,6 +10,7 @@ mod ik;
 mod kohonen;
 mod lin5;
 mod lin8;
+mod merge_strategy;
 mod method;
 mod model_event;
 pub mod net;
@@ -26,14 +27,17 @@ pub use error::LearnError;
 pub use ffn::{FfnLearner, FfnSettings};
 pub use ik::IkLearner;
 pub use kohonen::{KohonenLearner, KohonenSettings, Lattice, Neighbourhood};
-pub use lin5::Lin5;
-pub use lin8::Lin8;
+pub use lin5::{Lin5, Lin5Settings};
+pub use lin8::{Lin8, Lin8Settings};
+pub use merge_strategy::MergeStrategy;
 pub use method::Method;
 pub use model_event::{MergeKind, ModelEvent};
-pub use nnw::Nnw;
+pub use nnw::{Nnw, NnwSettings};
 pub use observation::{Observation, Query};
 pub use patterns::{adjusted_pattern, pose_pairs, unadjusted_pattern, Pattern, Pattern5, Pattern8};
+pub use perceptron::PerceptronSettings;
 pub use stats::{LearnerStats, LevelStats};
+pub use tree::{NestedLearner, NestedSettings, TreeSettings};
 
 use nalgebra::Vector3;
 

@@ -1,7 +1,7 @@
 //! Every config entry: its name, type and meaning, in one list.
 
-use crate::experiment::config_values::{CameraKind, ConfigValue, MergeStrategy, SimKind};
-use crate::learn::Method;
+use crate::experiment::config_values::{CameraKind, ConfigValue, SimKind};
+use crate::learn::{MergeStrategy, Method};
 
 config_entries! {
     /// The learning method.

@@ -3,7 +3,6 @@
 //! name given twice, a missing name, a value of the wrong kind (a real number for an
 //! integer) or a value out of range stops with `file:line: reason`.
 
-use crate::robot::{DynamicSettings, MoveSettings};
 use std::fmt;
 use std::path::Path;
 
@@ -100,21 +99,6 @@ impl Config {
             .iter()
             .map(|(n, v)| format!("{n} {v}\n"))
             .collect()
-    }
-
-    /// The dynamic simulator's settings (SI units) from `robot_speed`, `robot_accel`, `dt`,
-    /// `solver_iterations`, the motor gains and the settling entries.
-    pub fn dynamic_settings(&self) -> DynamicSettings {
-        DynamicSettings {
-            moves: MoveSettings::from_degrees(self.robot_speed, self.robot_accel),
-            dt: self.dt,
-            solver_iterations: self.solver_iterations,
-            motor_stiffness: self.motor_stiffness,
-            motor_damping: self.motor_damping,
-            settle_position_tol: self.settle_position_tol.to_radians(),
-            settle_speed_tol: self.settle_speed_tol.to_radians(),
-            settle_timeout: self.settle_timeout,
-        }
     }
 
     /// Input boundaries (low, high) of dimension `i` (0–7).

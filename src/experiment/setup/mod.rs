@@ -1,25 +1,27 @@
 //! Setting a run up: the one place where a [`Config`] becomes the simulator, the camera,
 //! the learner and the trial loop's settings.
 
+mod learners;
+
+pub use learners::{
+    ffn_settings, input_bounds, kohonen_settings, lin5_settings, lin8_settings, nnw_settings,
+};
+
 use super::{CameraKind, Config, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
 use crate::control::TrialSettings;
 use crate::learn::{
-    FfnLearner, FfnSettings, IkLearner, KohonenLearner, KohonenSettings, LearnError, Learner, Lin5,
-    Lin8, Method, Nnw,
+    FfnLearner, IkLearner, KohonenLearner, LearnError, Learner, Lin5, Lin8, Method, Nnw,
 };
-use crate::robot::{ArmModel, DynamicSim, KinematicSim, MoveSettings, Simulator};
+use crate::robot::{ArmModel, DynamicSettings, DynamicSim, KinematicSim, MoveSettings, Simulator};
 use crate::units::M_PER_CM;
 use std::path::Path;
 
 /// The simulator the config names, moving `model`.
 pub fn build_simulator(config: &Config, model: ArmModel) -> Box<dyn Simulator> {
     match config.sim {
-        SimKind::Kinematic => Box::new(KinematicSim::new(
-            model,
-            MoveSettings::from_degrees(config.robot_speed, config.robot_accel),
-        )),
-        SimKind::Dynamic => Box::new(DynamicSim::new(model, config.dynamic_settings())),
+        SimKind::Kinematic => Box::new(KinematicSim::new(model, move_settings(config))),
+        SimKind::Dynamic => Box::new(DynamicSim::new(model, dynamic_settings(config))),
     }
 }
 
@@ -43,59 +45,49 @@ pub fn trial_settings(config: &Config) -> TrialSettings {
     }
 }
 
-/// Builds the learner the config names. `model` is the nominal robot (for `ik`); a
-/// learner that stores patterns in a file puts it in `run_dir`.
+/// The dynamic simulator's settings (SI units) from `robot_speed`, `robot_accel`, `dt`,
+/// `solver_iterations`, the motor gains and the settling entries.
+pub fn dynamic_settings(config: &Config) -> DynamicSettings {
+    DynamicSettings {
+        moves: move_settings(config),
+        dt: config.dt,
+        solver_iterations: config.solver_iterations,
+        motor_stiffness: config.motor_stiffness,
+        motor_damping: config.motor_damping,
+        settle_position_tol: config.settle_position_tol.to_radians(),
+        settle_speed_tol: config.settle_speed_tol.to_radians(),
+        settle_timeout: config.settle_timeout,
+    }
+}
+
+/// The moves' speed profile from `robot_speed` and `robot_accel`.
+pub fn move_settings(config: &Config) -> MoveSettings {
+    MoveSettings::from_degrees(config.robot_speed, config.robot_accel)
+}
+
+/// The learner the config names. `model` is the nominal robot (for `ik`); a learner that
+/// stores patterns in a file (`use_pat_file` 0) puts it in `run_dir`.
 pub fn build_learner(
     config: &Config,
     model: &ArmModel,
     run_dir: Option<&Path>,
 ) -> Result<Box<dyn Learner>, LearnError> {
-    match config.method {
-        Method::Lin5 | Method::Lin8 | Method::Nnw => {
-            let pat_file = run_dir
-                .filter(|_| config.use_pat_file == 0)
-                .map(|dir| dir.join("pat_file"));
-            let learner: Box<dyn Learner> = match config.method {
-                Method::Lin8 => Box::new(Lin8::new(config, pat_file)?),
-                Method::Nnw => Box::new(Nnw::new(config, pat_file)?),
-                _ => Box::new(Lin5::new(config, pat_file)?),
-            };
-            Ok(learner)
-        }
-        Method::Ik => Ok(Box::new(IkLearner::new(
-            model.clone(),
-            CameraModel::default(),
-        ))),
-        Method::Ffn => {
-            let settings = FfnSettings {
-                hidden_units: config.ffn_hidden_units,
-                wrange: config.wrange,
-                window: config.ffn_window,
-                cg_iterations: config.ffn_cg_iterations,
-                minimal_joint_move: config.minimal_joint_move,
-            };
-            Ok(Box::new(FfnLearner::new(
-                settings,
-                input_bounds(config),
-                config.seed,
-            )))
-        }
-        Method::Kohonen => {
-            let settings = KohonenSettings {
-                side: config.kohonen_side,
-                anneal_patterns: config.kohonen_anneal_patterns,
-                minimal_joint_move: config.minimal_joint_move,
-                ..KohonenSettings::default()
-            };
-            Ok(Box::new(KohonenLearner::new(
-                settings,
-                input_bounds(config),
-            )))
-        }
-    }
-}
-
-/// The config's boundaries of the five inputs (θ2, θ3, cx, cy, cz).
-fn input_bounds(config: &Config) -> [(f64, f64); 5] {
-    std::array::from_fn(|i| config.boundary(i))
+    let pat_file = run_dir
+        .filter(|_| config.use_pat_file == 0)
+        .map(|dir| dir.join("pat_file"));
+    Ok(match config.method {
+        Method::Lin5 => Box::new(Lin5::new(&lin5_settings(config), pat_file)?),
+        Method::Lin8 => Box::new(Lin8::new(&lin8_settings(config), pat_file)?),
+        Method::Nnw => Box::new(Nnw::new(&nnw_settings(config), pat_file)?),
+        Method::Ik => Box::new(IkLearner::new(model.clone(), CameraModel::default())),
+        Method::Ffn => Box::new(FfnLearner::new(
+            ffn_settings(config),
+            input_bounds(config),
+            config.seed,
+        )),
+        Method::Kohonen => Box::new(KohonenLearner::new(
+            kohonen_settings(config),
+            input_bounds(config),
+        )),
+    })
 }

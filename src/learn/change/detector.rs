@@ -57,20 +57,6 @@ impl Default for DetectorSettings {
     }
 }
 
-impl DetectorSettings {
-    /// The settings a config gives (`change_baseline`, `change_lag`, `change_warmup`,
-    /// `change_drift`, `change_threshold`).
-    pub fn from_config(config: &crate::experiment::Config) -> DetectorSettings {
-        DetectorSettings {
-            baseline: config.change_baseline,
-            lag: config.change_lag,
-            warmup: config.change_warmup,
-            drift: config.change_drift,
-            threshold: config.change_threshold,
-        }
-    }
-}
-
 /// A detected change.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Alarm {

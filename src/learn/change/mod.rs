@@ -2,7 +2,9 @@
 //! stream of pattern errors for the moment the mapping changed.
 
 mod detector;
+mod settings;
 mod watch;
 
 pub use detector::{Alarm, ChangeDetector, DetectorSettings};
+pub use settings::ChangeSettings;
 pub(crate) use watch::{ChangeWatch, WatchStep};

@@ -17,8 +17,7 @@
 //! learner forgets every pattern numbered before that trial began; `change_grace` trials
 //! later it cuts what is still starved. See the tree's recovery.
 
-use super::{ChangeDetector, DetectorSettings};
-use crate::experiment::Config;
+use super::{ChangeDetector, ChangeSettings};
 
 /// Relative errors below this count as this (an exact answer).
 const MIN_RELATIVE_ERROR: f64 = 1e-6;
@@ -56,15 +55,15 @@ pub(crate) struct ChangeWatch {
 }
 
 impl ChangeWatch {
-    /// A watch set up by the config's `change_*` entries.
-    pub(crate) fn new(config: &Config) -> Self {
+    /// A watch set up by `settings`.
+    pub(crate) fn new(settings: &ChangeSettings) -> Self {
         ChangeWatch {
-            detector: ChangeDetector::new(DetectorSettings::from_config(config)),
+            detector: ChangeDetector::new(settings.detector),
             trial: 0,
             sum: 0.0,
             count: 0,
             starts: vec![0],
-            grace: config.change_grace,
+            grace: settings.grace,
             cut_at: None,
         }
     }

@@ -11,45 +11,43 @@
 //! keeps zero away from every box edge at every depth, so answers near the target
 //! interpolate rather than extrapolate.
 
+mod settings;
+
 use super::perceptron::Perceptron;
-use super::tree::{learner_on_nested_tree, Halving, NestedLearner, Region, TreeSettings};
-use super::{LearnError, Method};
-use crate::experiment::Config;
-use crate::learn::{adjusted_pattern, Query};
+use super::tree::{Halving, NestedLearner, Region};
+use super::{adjusted_pattern, LearnError, Method, Query};
 use nalgebra::SVector;
 use std::path::PathBuf;
+
+pub use settings::Lin5Settings;
+pub(crate) use settings::FIVE_INPUT_BOUNDS;
 
 /// The stream of the run's seed that lin5's own draws (known patterns) come from, apart
 /// from the trial loop's.
 const RNG_STREAM: u64 = 0x6c69_6e35;
 
 /// The `lin5` learner: a nested tree of perceptrons over the adjusted 5-input patterns.
-#[derive(Debug)]
-pub struct Lin5 {
-    nested: NestedLearner<Perceptron<5, 6>, Halving<5>, 5>,
-}
+pub type Lin5 = NestedLearner<Perceptron<5, 6>, Halving<5>, 5>;
 
 impl Lin5 {
-    /// A `lin5` learner set up by `config` (boundaries 0–4, tree, perceptron, split, merge
-    /// and change-detection entries, `seed`), keeping its patterns in `pat_file` when given
+    /// A `lin5` learner set up by `settings`, keeping its patterns in `pat_file` when given
     /// (the file is created or emptied now), otherwise in memory.
-    pub fn new(config: &Config, pat_file: Option<PathBuf>) -> Result<Self, LearnError> {
-        let low = SVector::<f64, 5>::from_fn(|i, _| config.boundary(i).0);
-        let high = SVector::<f64, 5>::from_fn(|i, _| config.boundary(i).1);
-        let nested = NestedLearner::new(
-            config,
-            TreeSettings::from_config(config),
-            Halving::new(Region::from_bounds(low, high)),
-            Perceptron::new(config.nr_of_matrices, config.max_pats_in_mat),
-            adjusted_pattern,
+    pub fn new(settings: &Lin5Settings, pat_file: Option<PathBuf>) -> Result<Self, LearnError> {
+        let low = SVector::<f64, 5>::from_fn(|i, _| settings.bounds[i].0);
+        let high = SVector::<f64, 5>::from_fn(|i, _| settings.bounds[i].1);
+        NestedLearner::build(
+            Method::Lin5,
+            &settings.nested,
+            (
+                Halving::new(Region::from_bounds(low, high)),
+                Perceptron::new(settings.perceptron),
+            ),
+            (adjusted_pattern, Query::five_inputs),
             pat_file,
             RNG_STREAM,
-        )?;
-        Ok(Lin5 { nested })
+        )
     }
 }
-
-learner_on_nested_tree!(Lin5, Method::Lin5, Query::five_inputs);
 
 #[cfg(test)]
 mod tests;

@@ -2,17 +2,16 @@
 //! and change detection.
 
 use super::*;
-use crate::experiment::MergeStrategy;
 use crate::learn::synthetic::{curved, linear, one_move_trial, random_start, Mapping};
-use crate::learn::{Learner, ModelEvent};
+use crate::learn::{Learner, MergeStrategy, ModelEvent};
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-fn config() -> Config {
-    let mut config = Config::default_config();
-    config.seed = 11;
-    config
+fn settings() -> Lin5Settings {
+    let mut settings = Lin5Settings::default();
+    settings.nested.seed = 11;
+    settings
 }
 
 fn query(theta: &Vector3<f64>, c: &Vector3<f64>) -> Query {
@@ -42,7 +41,7 @@ fn teach(learner: &mut Lin5, jacobian: Mapping, trials: usize, rng: &mut ChaCha8
 
 #[test]
 fn learns_a_linear_mapping_exactly() {
-    let mut lin5 = Lin5::new(&config(), None).unwrap();
+    let mut lin5 = Lin5::new(&settings(), None).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(1);
     assert_eq!(
         lin5.propose(&query(&Vector3::zeros(), &Vector3::repeat(9.0))),
@@ -52,19 +51,19 @@ fn learns_a_linear_mapping_exactly() {
     assert!(misses(&mut lin5, linear, &mut rng).1 < 1e-8);
     let stats = lin5.stats();
     assert_eq!(stats.nodes, 1, "an exact fit needs no split");
-    assert_eq!(stats.levels.len(), config().tree_depth + 1);
+    assert_eq!(stats.levels.len(), settings().nested.tree.max_depth + 1);
     assert!(stats.patterns > 250 && stats.patterns <= 300, "{stats:?}");
     assert!(!lin5.take_relearn_request());
 }
 
 #[test]
 fn a_curved_mapping_grows_the_tree_and_is_learned_better_than_by_one_node() {
-    let mut config = config();
-    config.min_pats_for_split = 25;
-    config.am_error_tresh = f64::INFINITY;
-    let mut nested = Lin5::new(&config, None).unwrap();
-    config.min_pats_for_split = usize::MAX;
-    let mut single = Lin5::new(&config, None).unwrap();
+    let mut settings = settings();
+    settings.nested.tree.min_pats_for_split = 25;
+    settings.nested.tree.am_error_tresh = f64::INFINITY;
+    let mut nested = Lin5::new(&settings, None).unwrap();
+    settings.nested.tree.min_pats_for_split = usize::MAX;
+    let mut single = Lin5::new(&settings, None).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(2);
     for _ in 0..4000 {
         let trial = one_move_trial(curved, &mut rng);
@@ -86,11 +85,11 @@ fn a_curved_mapping_grows_the_tree_and_is_learned_better_than_by_one_node() {
 fn patterns_in_the_pat_file_learn_exactly_like_patterns_in_memory() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("pat_file");
-    let mut config = config();
-    config.min_pats_for_split = 25;
-    config.am_error_tresh = f64::INFINITY;
-    let mut in_memory = Lin5::new(&config, None).unwrap();
-    let mut in_file = Lin5::new(&config, Some(path.clone())).unwrap();
+    let mut settings = settings();
+    settings.nested.tree.min_pats_for_split = 25;
+    settings.nested.tree.am_error_tresh = f64::INFINITY;
+    let mut in_memory = Lin5::new(&settings, None).unwrap();
+    let mut in_file = Lin5::new(&settings, Some(path.clone())).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(4);
     for _ in 0..1500 {
         let trial = one_move_trial(curved, &mut rng);
@@ -117,7 +116,7 @@ fn patterns_in_the_pat_file_learn_exactly_like_patterns_in_memory() {
 
 #[test]
 fn a_turned_mapping_throws_everything_away_and_asks_to_relearn_once() {
-    let mut lin5 = Lin5::new(&config(), None).unwrap();
+    let mut lin5 = Lin5::new(&settings(), None).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(5);
     teach(&mut lin5, linear, 300, &mut rng);
     fn turned(theta: &Vector3<f64>) -> Matrix3<f64> {
@@ -127,7 +126,10 @@ fn a_turned_mapping_throws_everything_away_and_asks_to_relearn_once() {
     while !lin5.take_relearn_request() {
         teach(&mut lin5, turned, 1, &mut rng);
         trials += 1;
-        assert!(trials <= config().am_error_iters, "no root merge");
+        assert!(
+            trials <= settings().nested.tree.am_error_iters,
+            "no root merge"
+        );
     }
     assert!(!lin5.take_relearn_request(), "asked once");
     let stats = lin5.stats();
@@ -138,10 +140,10 @@ fn a_turned_mapping_throws_everything_away_and_asks_to_relearn_once() {
 
 #[test]
 fn under_change_detection_a_turned_mapping_is_found_dated_and_relearned() {
-    let mut config = config();
-    config.merge_strategy = MergeStrategy::ChangeDetection;
-    config.min_pats_for_split = 25;
-    let mut lin5 = Lin5::new(&config, None).unwrap();
+    let mut settings = settings();
+    settings.nested.merge_strategy = MergeStrategy::ChangeDetection;
+    settings.nested.tree.min_pats_for_split = 25;
+    let mut lin5 = Lin5::new(&settings, None).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(7);
     fn turned(theta: &Vector3<f64>) -> Matrix3<f64> {
         curved(theta) * Rotation3::from_axis_angle(&Vector3::z_axis(), 0.5).matrix()
@@ -168,7 +170,7 @@ fn under_change_detection_a_turned_mapping_is_found_dated_and_relearned() {
     assert!(estimated_trial.abs_diff(3000) <= 2, "{estimated_trial}");
     trials(&mut lin5, turned, 3100, 4000);
     let (turned_miss, _) = misses(&mut lin5, turned, &mut ChaCha8Rng::seed_from_u64(8));
-    let mut fresh = Lin5::new(&config, None).unwrap();
+    let mut fresh = Lin5::new(&settings, None).unwrap();
     teach(&mut fresh, turned, 1000, &mut ChaCha8Rng::seed_from_u64(9));
     let (fresh_miss, _) = misses(&mut fresh, turned, &mut ChaCha8Rng::seed_from_u64(8));
     assert!(
@@ -179,7 +181,7 @@ fn under_change_detection_a_turned_mapping_is_found_dated_and_relearned() {
 
 #[test]
 fn answers_are_finite_for_any_query() {
-    let mut lin5 = Lin5::new(&config(), None).unwrap();
+    let mut lin5 = Lin5::new(&settings(), None).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(6);
     teach(&mut lin5, curved, 200, &mut rng);
     let odd = Vector3::new(f64::NAN, f64::INFINITY, -1e308);

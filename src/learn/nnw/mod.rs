@@ -13,10 +13,9 @@
 
 mod net_model;
 
-use super::tree::{learner_on_nested_tree, Halving, NestedLearner, Region, TreeSettings};
-use super::{LearnError, Method};
-use crate::experiment::Config;
-use crate::learn::{adjusted_pattern, Query};
+use super::lin5::FIVE_INPUT_BOUNDS;
+use super::tree::{Halving, NestedLearner, NestedSettings, Region};
+use super::{adjusted_pattern, LearnError, Method, Query};
 use nalgebra::SVector;
 use net_model::NetModel;
 use std::path::PathBuf;
@@ -25,39 +24,58 @@ use std::path::PathBuf;
 /// from.
 const RNG_STREAM: u64 = 0x006e_6e77;
 
-/// The `nnw` learner: a nested tree of feed-forward nets over the adjusted 5-input
-/// patterns.
-#[derive(Debug)]
-pub struct Nnw {
-    nested: NestedLearner<NetModel, Halving<5>, 5>,
+/// Settings of `nnw`, the Nested Network. The defaults are those of the shipped
+/// `configs/nnw.conf`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NnwSettings {
+    /// The root box of the inputs (θ2, θ3, cx*, cy*, cz*), as lin5's
+    /// ([`Lin5Settings::bounds`](crate::learn::Lin5Settings::bounds)).
+    pub bounds: [(f64, f64); 5],
+    /// The tree (its `known_pattern_perc` is not used: nnw trains no known patterns),
+    /// merges, change detection, `minimal_joint_move` and the seed.
+    pub nested: NestedSettings,
+    /// Hidden tanh units of each node's net (`hidden_units`); 5 by default.
+    pub hidden_units: usize,
+    /// A new net's weights are drawn in ±this (`wrange`); 0.1 by default.
+    pub wrange: f64,
 }
 
-impl Nnw {
-    /// An `nnw` learner set up by `config` (boundaries 0–4, the tree, split and merge
-    /// entries, `hidden_units`, `wrange`, `nnw_train_limit`, `nnw_train_delay`, `seed`),
-    /// keeping its patterns in `pat_file` when given (the file is created or emptied now),
-    /// otherwise in memory.
-    pub fn new(config: &Config, pat_file: Option<PathBuf>) -> Result<Self, LearnError> {
-        let low = SVector::<f64, 5>::from_fn(|i, _| config.boundary(i).0);
-        let high = SVector::<f64, 5>::from_fn(|i, _| config.boundary(i).1);
-        let settings = TreeSettings {
-            known_pattern_perc: 0.0,
-            ..TreeSettings::from_config(config)
-        };
-        let nested = NestedLearner::new(
-            config,
-            settings,
-            Halving::new(Region::from_bounds(low, high)),
-            NetModel::template(config.hidden_units, config.wrange),
-            adjusted_pattern,
-            pat_file,
-            RNG_STREAM,
-        )?;
-        Ok(Nnw { nested })
+impl Default for NnwSettings {
+    fn default() -> Self {
+        NnwSettings {
+            bounds: FIVE_INPUT_BOUNDS,
+            nested: NestedSettings::default(),
+            hidden_units: 5,
+            wrange: 0.1,
+        }
     }
 }
 
-learner_on_nested_tree!(Nnw, Method::Nnw, Query::five_inputs);
+/// The `nnw` learner: a nested tree of feed-forward nets over the adjusted 5-input
+/// patterns.
+pub type Nnw = NestedLearner<NetModel, Halving<5>, 5>;
+
+impl Nnw {
+    /// An `nnw` learner set up by `settings`, keeping its patterns in `pat_file` when given
+    /// (the file is created or emptied now), otherwise in memory.
+    pub fn new(settings: &NnwSettings, pat_file: Option<PathBuf>) -> Result<Self, LearnError> {
+        let low = SVector::<f64, 5>::from_fn(|i, _| settings.bounds[i].0);
+        let high = SVector::<f64, 5>::from_fn(|i, _| settings.bounds[i].1);
+        let mut nested = settings.nested.clone();
+        nested.tree.known_pattern_perc = 0.0;
+        NestedLearner::build(
+            Method::Nnw,
+            &nested,
+            (
+                Halving::new(Region::from_bounds(low, high)),
+                NetModel::template(settings.hidden_units, settings.wrange),
+            ),
+            (adjusted_pattern, Query::five_inputs),
+            pat_file,
+            RNG_STREAM,
+        )
+    }
+}
 
 #[cfg(test)]
 mod tests {
@@ -69,11 +87,14 @@ mod tests {
     use rand::SeedableRng;
     use rand_chacha::ChaCha8Rng;
 
-    fn config() -> Config {
-        let mut config = Config::default_config();
-        config.method = Method::Nnw;
-        config.seed = 13;
-        config
+    fn settings() -> NnwSettings {
+        NnwSettings {
+            nested: NestedSettings {
+                seed: 13,
+                ..NestedSettings::default()
+            },
+            ..NnwSettings::default()
+        }
     }
 
     /// A trial of one move on the curved synthetic arm that hits the target.
@@ -95,7 +116,7 @@ mod tests {
 
     #[test]
     fn learns_a_smooth_mapping_and_grows_its_tree() {
-        let mut nnw = Nnw::new(&config(), None).unwrap();
+        let mut nnw = Nnw::new(&settings(), None).unwrap();
         let mut rng = ChaCha8Rng::seed_from_u64(1);
         assert_eq!(
             nnw.propose(&one_move(&mut rng)[0].query()),
@@ -113,7 +134,7 @@ mod tests {
 
     #[test]
     fn answers_are_finite_for_any_query() {
-        let mut nnw = Nnw::new(&config(), None).unwrap();
+        let mut nnw = Nnw::new(&settings(), None).unwrap();
         let mut rng = ChaCha8Rng::seed_from_u64(2);
         for _ in 0..30 {
             nnw.learn(&one_move(&mut rng)).unwrap();

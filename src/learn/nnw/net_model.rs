@@ -20,7 +20,7 @@ const CG_ITERATIONS: usize = 50;
 
 /// A 5 → `hidden_units` (tanh) → 3 net over the node's local coordinates.
 #[derive(Debug, Clone)]
-pub(crate) struct NetModel {
+pub struct NetModel {
     /// In a cell because a forward pass writes the net's activation buffers, and answers
     /// are asked for through a shared reference.
     net: RefCell<DenseNet<5, 3>>,

@@ -13,8 +13,11 @@
 //! node's parent instead; the model never answers NaN. Inputs that queries always hold at
 //! 0 (lin8's readings after the move) may be left out of a fit while they have not varied.
 
+mod settings;
 mod stagger;
 mod sums;
+
+pub use settings::PerceptronSettings;
 
 use crate::learn::tree::Approximator;
 use nalgebra::{Const, DimMin, SMatrix, SVector, Vector3};
@@ -24,7 +27,7 @@ use sums::NormalSums;
 
 /// A perceptron over `N` inputs; `M` = N + 1 (the inputs and a constant).
 #[derive(Debug, Clone)]
-pub(crate) struct Perceptron<const N: usize, const M: usize> {
+pub struct Perceptron<const N: usize, const M: usize> {
     sets: Vec<NormalSums<M>>,
     stagger: Stagger,
     /// The current fit: Δθ = weights · (u, 1).
@@ -38,10 +41,14 @@ pub(crate) struct Perceptron<const N: usize, const M: usize> {
 impl<const N: usize, const M: usize> Perceptron<N, M> {
     const AUGMENTED: () = assert!(M == N + 1, "a perceptron has N inputs and a constant");
 
-    /// A perceptron with `sets` staggered sum-sets (`nr_of_matrices`) of at most
-    /// `set_size` patterns each (`max_pats_in_mat`); both at least 1.
-    pub(crate) fn new(sets: usize, set_size: usize) -> Self {
+    /// A perceptron with `settings.sum_sets` staggered sum-sets of at most
+    /// `settings.set_size` patterns each; both at least 1.
+    pub(crate) fn new(settings: PerceptronSettings) -> Self {
         let () = Self::AUGMENTED;
+        let PerceptronSettings {
+            sum_sets: sets,
+            set_size,
+        } = settings;
         let stagger = Stagger::new(sets, set_size);
         Perceptron {
             sets: vec![NormalSums::new(); sets.max(1)],

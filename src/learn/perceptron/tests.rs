@@ -5,6 +5,11 @@ use nalgebra::{DMatrix, SVector};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
+/// Perceptron settings of `sum_sets` sets of `set_size` patterns.
+fn sets(sum_sets: usize, set_size: usize) -> PerceptronSettings {
+    PerceptronSettings { sum_sets, set_size }
+}
+
 type P5 = Perceptron<5, 6>;
 
 type P8 = Perceptron<8, 9>;
@@ -45,7 +50,7 @@ fn max_miss(p: &P5, map: &SMatrix<f64, 3, 6>, rng: &mut ChaCha8Rng) -> f64 {
 fn recovers_a_linear_map_exactly() {
     let mut rng = ChaCha8Rng::seed_from_u64(1);
     let map = random_map(&mut rng);
-    let mut p = P5::new(5, 1000);
+    let mut p = P5::new(sets(5, 1000));
     train(&mut p, &map, 40, &mut rng);
     assert!(max_miss(&p, &map, &mut rng) < 1e-9);
 }
@@ -54,7 +59,7 @@ fn recovers_a_linear_map_exactly() {
 fn incremental_sums_equal_a_batch_least_squares_fit() {
     let mut rng = ChaCha8Rng::seed_from_u64(2);
     let map = random_map::<6>(&mut rng);
-    let mut p = P5::new(3, 10_000);
+    let mut p = P5::new(sets(3, 10_000));
     let n = 300;
     let mut a = DMatrix::<f64>::zeros(n, 6);
     let mut b = DMatrix::<f64>::zeros(n, 3);
@@ -84,7 +89,7 @@ fn incremental_sums_equal_a_batch_least_squares_fit() {
 fn forgets_an_old_map_within_one_set_size() {
     let mut rng = ChaCha8Rng::seed_from_u64(3);
     let (old, new) = (random_map(&mut rng), random_map(&mut rng));
-    let mut p = P5::new(5, 1000);
+    let mut p = P5::new(sets(5, 1000));
     train(&mut p, &old, 1000, &mut rng);
     assert!(max_miss(&p, &old, &mut rng) < 1e-9);
     train(&mut p, &new, 500, &mut rng);
@@ -100,7 +105,7 @@ fn a_singular_system_has_no_answer() {
     let map = random_map::<6>(&mut rng);
     let fit = |inputs: &mut dyn FnMut(&mut ChaCha8Rng) -> SVector<f64, 5>, n: usize| {
         let mut rng = ChaCha8Rng::seed_from_u64(5);
-        let mut p = P5::new(2, 1000);
+        let mut p = P5::new(sets(2, 1000));
         for _ in 0..n {
             let u = inputs(&mut rng);
             p.add(&u, &apply(&map, &u), 0);
@@ -109,7 +114,7 @@ fn a_singular_system_has_no_answer() {
         p.answer(&SVector::zeros())
     };
     assert_eq!(
-        P5::new(1, 10).answer(&SVector::zeros()),
+        P5::new(sets(1, 10)).answer(&SVector::zeros()),
         None,
         "no patterns"
     );
@@ -137,7 +142,7 @@ fn a_singular_system_has_no_answer() {
 fn recovers_a_linear_8_input_map_exactly() {
     let mut rng = ChaCha8Rng::seed_from_u64(6);
     let map = random_map::<9>(&mut rng);
-    let mut p = P8::new(5, 1000);
+    let mut p = P8::new(sets(5, 1000));
     for _ in 0..60 {
         let u = random_input::<8>(&mut rng);
         p.add(&u, &apply(&map, &u), 0);
@@ -155,14 +160,14 @@ fn inputs_asked_at_zero_that_stayed_there_get_no_weight_and_the_rest_is_exact() 
     // lin8 before its first trial: every pattern ends at d = 0 (give or take rounding).
     let mut rng = ChaCha8Rng::seed_from_u64(7);
     let map = random_map::<9>(&mut rng);
-    let mut p = P8::new(2, 1000).asked_at_zero(5..8);
+    let mut p = P8::new(sets(2, 1000)).asked_at_zero(5..8);
     let at_d_zero = |rng: &mut ChaCha8Rng| {
         let mut u = random_input::<8>(rng);
         u.fixed_rows_mut::<3>(5).fill(0.0);
         u[6] = 1e-15;
         u
     };
-    let mut plain = P8::new(2, 1000);
+    let mut plain = P8::new(sets(2, 1000));
     for _ in 0..30 {
         let u = at_d_zero(&mut rng);
         p.add(&u, &apply(&map, &u), 0);
@@ -208,7 +213,7 @@ fn train_numbered(
 fn a_change_drops_every_set_that_holds_an_older_pattern() {
     let mut rng = ChaCha8Rng::seed_from_u64(8);
     let (old, new) = (random_map(&mut rng), random_map(&mut rng));
-    let mut p = P5::new(5, 1000);
+    let mut p = P5::new(sets(5, 1000));
     train_numbered(&mut p, &old, 0..700, &mut rng);
     train_numbered(&mut p, &new, 700..760, &mut rng);
     assert_eq!(p.answering_oldest(), Some(0));

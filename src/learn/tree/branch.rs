@@ -64,7 +64,7 @@ pub(crate) trait BranchRule<const N: usize>: std::fmt::Debug {
 
 /// The plain rule: every dimension halved at every depth (lin5, nnw: 5 inputs, 32 branches).
 #[derive(Debug, Clone)]
-pub(crate) struct Halving<const N: usize> {
+pub struct Halving<const N: usize> {
     root: Region<N>,
     low: SVector<f64, N>,
     /// Finest cells per unit of input, per dimension, at [`MAX_DEPTH`].

@@ -77,12 +77,12 @@ pub(crate) use branch::{BinKey, BranchRule, Halving, BRANCHES, MAX_DEPTH};
 pub(crate) use levels::Levels;
 pub(crate) use monitor::Monitor;
 pub(crate) use narrowing::Narrowing;
-pub(crate) use nested_learner::{learner_on_nested_tree, NestedLearner};
+pub use nested_learner::NestedLearner;
 pub(crate) use nested_tree::{NestedTree, TreeEvent};
 pub(crate) use node::{Node, NONE};
 pub(crate) use recovery::StaleVerdict;
 pub(crate) use region::Region;
-pub(crate) use settings::TreeSettings;
+pub use settings::{NestedSettings, TreeSettings};
 pub(crate) use store::Records;
 
 use nested_tree::{Path, ROOT};

@@ -23,7 +23,7 @@ const D: usize = HALVED;
 
 /// How lin8's 8-input boxes branch: halving the first five inputs, narrowing d by depth.
 #[derive(Debug, Clone)]
-pub(crate) struct Narrowing {
+pub struct Narrowing {
     root: Region<8>,
     halving: Halving<HALVED>,
     /// The d box of each depth, lower and upper corner.

@@ -4,11 +4,12 @@
 //! mapping and recovering from it. Merges and detected changes are reported as
 //! [`ModelEvent`]s.
 
-use super::{Approximator, BranchRule, NestedTree, Records, TreeEvent, TreeSettings};
-use crate::experiment::{Config, MergeStrategy};
+use super::{Approximator, BranchRule, NestedSettings, NestedTree, Records, TreeEvent};
 use crate::learn::change::{ChangeWatch, WatchStep};
-use crate::learn::{pose_pairs, Observation, Pattern};
-use crate::learn::{LearnError, LearnerStats, ModelEvent};
+use crate::learn::{
+    pose_pairs, LearnError, Learner, LearnerStats, MergeStrategy, Method, ModelEvent, Observation,
+    Pattern, Query,
+};
 use nalgebra::{SVector, Vector3};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -17,13 +18,23 @@ use std::path::PathBuf;
 /// How a pose pair (before, after) becomes a learning pattern.
 pub(crate) type PatternOf<const N: usize> = fn(&Observation, &Observation) -> Pattern<N>;
 
-/// A nested tree of `A` models over `N` inputs branching by `R`, and how it learns from a
-/// trial: every pose pair that moved gives a pattern, trained to its node and all of the
-/// node's ancestors; nodes that are due are then re-trained.
+/// How a query becomes the tree's input.
+pub(crate) type InputOf<const N: usize> = fn(&Query) -> SVector<f64, N>;
+
+/// A nested learner: a tree of `A` models over `N` inputs branching by `R`, and how it
+/// learns from a trial: every pose pair that moved gives a pattern, trained to its node and
+/// all of the node's ancestors; nodes that are due are then re-trained. [`Lin5`],
+/// [`Lin8`] and [`Nnw`] are its three forms.
+///
+/// [`Lin5`]: crate::learn::Lin5
+/// [`Lin8`]: crate::learn::Lin8
+/// [`Nnw`]: crate::learn::Nnw
 #[derive(Debug)]
-pub(crate) struct NestedLearner<A, R, const N: usize> {
+pub struct NestedLearner<A, R, const N: usize> {
+    method: Method,
     tree: NestedTree<A, R, N>,
     pattern_of: PatternOf<N>,
+    input_of: InputOf<N>,
     minimal_joint_move: f64,
     relearn: bool,
     /// The change detection (`None` under `merge_strategy thesis`).
@@ -35,18 +46,19 @@ pub(crate) struct NestedLearner<A, R, const N: usize> {
     failed: Option<LearnError>,
 }
 
+// The node models and branching rules are the crate's own: users build the three forms
+// (`Lin5::new`, `Lin8::new`, `Nnw::new`), not their own trees.
+#[allow(private_bounds)]
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N> {
-    /// A learner growing its tree by `settings` from the box of `rule`, its models spawned
-    /// from `template`, its patterns made by `pattern_of`; `minimal_joint_move`,
-    /// `merge_strategy` and the `change_*` entries from `config`, its draws from stream
-    /// `stream` of the config's `seed`. Patterns are kept in `pat_file` when given (created
-    /// or emptied now), otherwise in memory.
-    pub(crate) fn new(
-        config: &Config,
-        settings: TreeSettings,
-        rule: R,
-        template: A,
-        pattern_of: PatternOf<N>,
+    /// A `method` learner growing its tree by `settings` from the box of `rule`, its models
+    /// spawned from `template`, its patterns made by `pattern_of`, its queries turned into
+    /// inputs by `input_of`, its draws from stream `stream` of the settings' seed. Patterns
+    /// are kept in `pat_file` when given (created or emptied now), otherwise in memory.
+    pub(crate) fn build(
+        method: Method,
+        settings: &NestedSettings,
+        (rule, template): (R, A),
+        (pattern_of, input_of): (PatternOf<N>, InputOf<N>),
         pat_file: Option<PathBuf>,
         stream: u64,
     ) -> Result<Self, LearnError> {
@@ -54,29 +66,37 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
             Some(path) => Records::in_file(&path)?,
             None => Records::in_memory(),
         };
-        let mut rng = ChaCha8Rng::seed_from_u64(config.seed);
+        let mut rng = ChaCha8Rng::seed_from_u64(settings.seed);
         rng.set_stream(stream);
-        let watch = (config.merge_strategy == MergeStrategy::ChangeDetection)
-            .then(|| ChangeWatch::new(config));
+        let watch = (settings.merge_strategy == MergeStrategy::ChangeDetection)
+            .then(|| ChangeWatch::new(&settings.change));
         Ok(NestedLearner {
-            tree: NestedTree::new(settings, rule, template, records, rng),
+            method,
+            tree: NestedTree::new(settings.tree.clone(), rule, template, records, rng),
             pattern_of,
-            minimal_joint_move: config.minimal_joint_move,
+            input_of,
+            minimal_joint_move: settings.minimal_joint_move,
             relearn: false,
             watch,
-            min_fresh: config.change_min_fresh,
+            min_fresh: settings.change.min_fresh,
             failed: None,
         })
     }
+}
 
-    /// The tree's Δθ at input `x`; always finite.
-    pub(crate) fn answer(&self, x: &SVector<f64, N>) -> Vector3<f64> {
-        self.tree.answer(x)
+impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLearner<A, R, N> {
+    fn method(&self) -> Method {
+        self.method
+    }
+
+    /// The tree's Δθ at the query's input; always finite.
+    fn propose(&mut self, query: &Query) -> Vector3<f64> {
+        self.tree.answer(&(self.input_of)(query))
     }
 
     /// Learns a trial's poses. Fails only when the patterns are kept in a file that can no
     /// longer be written or read: the run cannot go on without them.
-    pub(crate) fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
+    fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
         if let Some(error) = self.failed.take() {
             return Err(error);
         }
@@ -95,20 +115,20 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
     }
 
     /// Nodes, bins and patterns, in total and per depth.
-    pub(crate) fn stats(&self) -> LearnerStats {
+    fn stats(&self) -> LearnerStats {
         self.tree.stats()
     }
 
     /// True once after the root was merged (everything thrown away), or after a detected
     /// change left the root nothing to answer from.
-    pub(crate) fn take_relearn_request(&mut self) -> bool {
+    fn take_relearn_request(&mut self) -> bool {
         std::mem::take(&mut self.relearn)
     }
 
     /// What is learned from now on belongs to `trial` (0: pre-learning). Under change
     /// detection, the trial before is weighed first: after a detected change the tree
     /// forgets what came before it, and a grace period later cuts what is still starved.
-    pub(crate) fn start_trial(&mut self, trial: usize) {
+    fn start_trial(&mut self, trial: usize) {
         let Some(watch) = &mut self.watch else {
             return;
         };
@@ -135,48 +155,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
     }
 
     /// Moves the merges and detected changes since the last call into `sink`.
-    pub(crate) fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
+    fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
         sink.append(&mut self.tree.events);
     }
 }
-
-/// Implements [`Learner`](crate::learn::Learner) for a learner that keeps its
-/// [`NestedLearner`] in a field `nested`: `$method` is its [`Method`](crate::learn::Method),
-/// `$input` turns a [`Query`](crate::learn::Query) into the tree's input.
-macro_rules! learner_on_nested_tree {
-    ($learner:ty, $method:expr, $input:expr) => {
-        impl $crate::learn::Learner for $learner {
-            fn method(&self) -> $crate::learn::Method {
-                $method
-            }
-
-            fn propose(&mut self, query: &$crate::learn::Query) -> nalgebra::Vector3<f64> {
-                self.nested.answer(&$input(query))
-            }
-
-            fn learn(
-                &mut self,
-                path: &[$crate::learn::Observation],
-            ) -> Result<(), $crate::learn::LearnError> {
-                self.nested.learn(path)
-            }
-
-            fn stats(&self) -> $crate::learn::LearnerStats {
-                self.nested.stats()
-            }
-
-            fn take_relearn_request(&mut self) -> bool {
-                self.nested.take_relearn_request()
-            }
-
-            fn start_trial(&mut self, trial: usize) {
-                self.nested.start_trial(trial);
-            }
-
-            fn drain_events(&mut self, sink: &mut Vec<$crate::learn::ModelEvent>) {
-                self.nested.drain_events(sink);
-            }
-        }
-    };
-}
-pub(crate) use learner_on_nested_tree;

@@ -7,7 +7,7 @@ mod retraining;
 mod tally;
 
 use super::*;
-use crate::learn::perceptron::Perceptron;
+use crate::learn::perceptron::{Perceptron, PerceptronSettings};
 use crate::learn::Pattern;
 use nalgebra::{SVector, Vector3};
 use proptest::prelude::*;
@@ -41,7 +41,10 @@ fn tree(settings: TreeSettings) -> Tree {
     NestedTree::new(
         settings,
         Halving::new(root),
-        Perceptron::new(2, 200),
+        Perceptron::new(PerceptronSettings {
+            sum_sets: 2,
+            set_size: 200,
+        }),
         Records::in_memory(),
         ChaCha8Rng::seed_from_u64(7),
     )

@@ -1,0 +1,114 @@
+//! Each learner's settings from the config entries of the same names.
+
+use crate::experiment::Config;
+use crate::learn::change::{ChangeSettings, DetectorSettings};
+use crate::learn::{
+    FfnSettings, KohonenSettings, Lin5Settings, Lin8Settings, NestedSettings, NnwSettings,
+    PerceptronSettings, TreeSettings,
+};
+
+/// `lin5`: `boundary_0` … `boundary_4`, the tree, perceptron, merge and change entries,
+/// `minimal_joint_move` and `seed`.
+pub fn lin5_settings(config: &Config) -> Lin5Settings {
+    Lin5Settings {
+        bounds: input_bounds(config),
+        nested: nested_settings(config),
+        perceptron: perceptron_settings(config),
+    }
+}
+
+/// `lin8`: lin5's entries with `boundary_0` … `boundary_7` and `error_area_shrink`.
+pub fn lin8_settings(config: &Config) -> Lin8Settings {
+    Lin8Settings {
+        bounds: input_bounds(config),
+        error_area_shrink: config.error_area_shrink,
+        nested: nested_settings(config),
+        perceptron: perceptron_settings(config),
+    }
+}
+
+/// `nnw`: lin5's bounds and tree entries with `hidden_units` and `wrange`.
+pub fn nnw_settings(config: &Config) -> NnwSettings {
+    NnwSettings {
+        bounds: input_bounds(config),
+        nested: nested_settings(config),
+        hidden_units: config.hidden_units,
+        wrange: config.wrange,
+    }
+}
+
+/// `ffn`: `ffn_hidden_units`, `wrange`, `ffn_window`, `ffn_cg_iterations` and
+/// `minimal_joint_move`.
+pub fn ffn_settings(config: &Config) -> FfnSettings {
+    FfnSettings {
+        hidden_units: config.ffn_hidden_units,
+        wrange: config.wrange,
+        window: config.ffn_window,
+        cg_iterations: config.ffn_cg_iterations,
+        minimal_joint_move: config.minimal_joint_move,
+    }
+}
+
+/// `kohonen`: `kohonen_side`, `kohonen_anneal_patterns` and `minimal_joint_move`.
+pub fn kohonen_settings(config: &Config) -> KohonenSettings {
+    KohonenSettings {
+        side: config.kohonen_side,
+        anneal_patterns: config.kohonen_anneal_patterns,
+        minimal_joint_move: config.minimal_joint_move,
+        ..KohonenSettings::default()
+    }
+}
+
+/// The config's boundaries of the first `N` inputs.
+pub fn input_bounds<const N: usize>(config: &Config) -> [(f64, f64); N] {
+    std::array::from_fn(|i| config.boundary(i))
+}
+
+/// What the nested learners share: the tree, `merge_strategy`, the `change_*` entries,
+/// `minimal_joint_move` and `seed`.
+fn nested_settings(config: &Config) -> NestedSettings {
+    NestedSettings {
+        tree: tree_settings(config),
+        merge_strategy: config.merge_strategy,
+        change: change_settings(config),
+        minimal_joint_move: config.minimal_joint_move,
+        seed: config.seed,
+    }
+}
+
+fn tree_settings(config: &Config) -> TreeSettings {
+    TreeSettings {
+        max_depth: config.tree_depth,
+        bin_size: config.bin_size,
+        min_pats_for_split: config.min_pats_for_split,
+        split_error: config.split_error,
+        am_error_tresh: config.am_error_tresh,
+        am_error_iters: config.am_error_iters,
+        merge_error: config.merge_error,
+        monitor_ave: config.monitor_ave,
+        known_pattern_perc: config.known_pattern_perc,
+        retrain_limit: config.nnw_train_limit,
+        retrain_delay: config.nnw_train_delay,
+    }
+}
+
+fn change_settings(config: &Config) -> ChangeSettings {
+    ChangeSettings {
+        detector: DetectorSettings {
+            baseline: config.change_baseline,
+            lag: config.change_lag,
+            warmup: config.change_warmup,
+            drift: config.change_drift,
+            threshold: config.change_threshold,
+        },
+        grace: config.change_grace,
+        min_fresh: config.change_min_fresh,
+    }
+}
+
+fn perceptron_settings(config: &Config) -> PerceptronSettings {
+    PerceptronSettings {
+        sum_sets: config.nr_of_matrices,
+        set_size: config.max_pats_in_mat,
+    }
+}

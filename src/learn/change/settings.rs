@@ -1,0 +1,27 @@
+//! What the change watch is set up by.
+
+use super::DetectorSettings;
+
+/// Settings of change detection and of the recovery that follows an alarm.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ChangeSettings {
+    /// The CUSUM test on the per-trial values (`change_drift`, `change_threshold`,
+    /// `change_baseline`, `change_lag`, `change_warmup`); see [`DetectorSettings`].
+    pub detector: DetectorSettings,
+    /// Trials after an alarm (and between later checks) before starved subtrees are cut
+    /// (`change_grace`); 200 by default.
+    pub grace: usize,
+    /// Patterns from after a change a node needs before it answers again
+    /// (`change_min_fresh`); 20 by default.
+    pub min_fresh: usize,
+}
+
+impl Default for ChangeSettings {
+    fn default() -> Self {
+        ChangeSettings {
+            detector: DetectorSettings::default(),
+            grace: 200,
+            min_fresh: 20,
+        }
+    }
+}

@@ -1,15 +1,11 @@
 //! Errors of building or running a learner.
 
-use super::Method;
 use std::path::PathBuf;
 
 /// A learner that cannot be built or cannot go on.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum LearnError {
-    /// The method is not available in this build yet.
-    #[error("the `{0}` learner is not available yet")]
-    Unavailable(Method),
     /// The run's `pat_file` cannot be created, written or read.
     #[error("pattern file {path}: {source}")]
     PatFile {

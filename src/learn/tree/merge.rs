@@ -39,7 +39,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             None => Ok(None),
             Some((ROOT, kind)) => {
                 let nodes = self.levels.total_nodes();
-                self.events.push(ModelEvent::Merge {
+                self.journal.events.push(ModelEvent::Merge {
                     kind,
                     depth: 0,
                     nodes,
@@ -58,7 +58,9 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     pub(super) fn cut_as(&mut self, id: u32, kind: MergeKind) {
         let depth = self.nodes[id as usize].depth;
         let nodes = self.cut(id);
-        self.events.push(ModelEvent::Merge { kind, depth, nodes });
+        self.journal
+            .events
+            .push(ModelEvent::Merge { kind, depth, nodes });
     }
 
     /// Cuts node `id` (not the root) and its subtree; every bin they held goes back to the

@@ -52,6 +52,7 @@
 //!   ([`Levels`]); no step walks the tree except a merge, over the subtree it cuts.
 
 mod approximator;
+mod arena;
 mod bins;
 mod branch;
 mod levels;
@@ -61,6 +62,7 @@ mod narrowing;
 mod nested_learner;
 mod nested_tree;
 mod node;
+mod parts;
 mod recovery;
 mod region;
 mod retrain;
@@ -72,6 +74,7 @@ mod tests;
 mod training;
 
 pub(crate) use approximator::{Approximator, Sample};
+pub(crate) use arena::NodeArena;
 pub(crate) use bins::Bins;
 pub(crate) use branch::{BinKey, BranchRule, Halving, BRANCHES, MAX_DEPTH};
 pub(crate) use levels::Levels;
@@ -80,6 +83,7 @@ pub(crate) use narrowing::Narrowing;
 pub use nested_learner::NestedLearner;
 pub(crate) use nested_tree::{NestedTree, TreeEvent};
 pub(crate) use node::{Node, NONE};
+pub(crate) use parts::{Journal, RecoveryState, Retraining};
 pub(crate) use recovery::StaleVerdict;
 pub(crate) use region::Region;
 pub use settings::{NestedSettings, TreeSettings};

@@ -107,7 +107,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
                 if event == TreeEvent::Reset {
                     watch.restart();
                 }
-                watch.pattern(self.tree.last_error, pattern.target.norm());
+                watch.pattern(self.tree.journal.last_error, pattern.target.norm());
             }
             self.relearn |= event == TreeEvent::Reset;
         }
@@ -132,13 +132,14 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
         let Some(watch) = &mut self.watch else {
             return;
         };
-        match watch.start_trial(trial, self.tree.next_seq) {
+        match watch.start_trial(trial, self.tree.journal.next_seq) {
             WatchStep::Nothing => {}
             WatchStep::Forget {
                 estimated_trial,
                 cutoff,
             } => {
                 self.tree
+                    .journal
                     .events
                     .push(ModelEvent::Change { estimated_trial });
                 if let Err(error) = self.tree.forget_before(cutoff, self.min_fresh) {
@@ -156,6 +157,6 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
 
     /// Moves the merges and detected changes since the last call into `sink`.
     fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
-        sink.append(&mut self.tree.events);
+        sink.append(&mut self.tree.journal.events);
     }
 }

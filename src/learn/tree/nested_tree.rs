@@ -2,10 +2,10 @@
 //! nodes (training a pattern is in `training`).
 
 use super::{
-    Approximator, BinKey, Bins, BranchRule, Levels, Node, Records, Sample, StaleVerdict,
-    TreeSettings, MAX_DEPTH, NONE,
+    Approximator, BinKey, Bins, BranchRule, Journal, Levels, Node, NodeArena, Records,
+    RecoveryState, Retraining, TreeSettings, MAX_DEPTH, NONE,
 };
-use crate::learn::{LearnError, LearnerStats, ModelEvent};
+use crate::learn::{LearnError, LearnerStats};
 use nalgebra::{SVector, Vector3};
 use rand_chacha::ChaCha8Rng;
 
@@ -60,32 +60,16 @@ pub(crate) struct NestedTree<A, R, const N: usize> {
     pub(super) rule: R,
     /// The model new nodes' models are spawned from.
     template: A,
-    pub(super) nodes: Vec<Node<A, N>>,
-    free: Vec<u32>,
+    pub(super) nodes: NodeArena<A, N>,
+    /// Bins and the pattern store behind them.
     pub(super) bins: Bins<N>,
     pub(super) levels: Levels,
     pub(super) rng: ChaCha8Rng,
-    /// The number the next pattern trained gets.
-    pub(super) next_seq: u64,
-    /// The error of the deepest node that answered the last pattern trained, before it was
-    /// trained (`None` if no node had an answer).
-    pub(super) last_error: Option<f64>,
-    /// Merges since they were last taken.
-    pub(super) events: Vec<ModelEvent>,
-    /// After a detected change: whether nodes that await new patterns answer from their
-    /// stale fits.
-    pub(super) verdict: StaleVerdict,
-    /// The last detected change: the first valid pattern's number, and the patterns a node
-    /// needs from then on (`change_min_fresh`).
-    pub(super) change: Option<(u64, usize)>,
+    pub(super) journal: Journal,
+    pub(super) recovery: RecoveryState,
+    pub(super) retraining: Retraining<N>,
     /// Reused by subtree walks.
     pub(super) scratch: Vec<u32>,
-    /// Nodes that took in patterns since their last re-training (re-trained models only);
-    /// may hold a node twice or one that is gone.
-    pub(super) touched: Vec<u32>,
-    /// Reused by re-training: the bins sampled and their patterns.
-    pub(super) picked: Vec<u32>,
-    pub(super) batch: Vec<Sample<N>>,
 }
 
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
@@ -112,18 +96,12 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             settings,
             rule,
             template,
-            nodes: Vec::new(),
-            free: Vec::new(),
+            nodes: NodeArena::new(),
             rng,
-            next_seq: 0,
-            last_error: None,
-            events: Vec::new(),
-            verdict: StaleVerdict::default(),
-            change: None,
+            journal: Journal::default(),
+            recovery: RecoveryState::default(),
+            retraining: Retraining::default(),
             scratch: Vec::new(),
-            touched: Vec::new(),
-            picked: Vec::new(),
-            batch: Vec::new(),
         };
         tree.plant_root();
         tree
@@ -137,7 +115,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         path.nodes()
             .iter()
             .rev()
-            .find_map(|&id| self.nodes[id as usize].answer_or_stale(x, &self.verdict))
+            .find_map(|&id| self.nodes[id as usize].answer_or_stale(x, &self.recovery.verdict))
             .unwrap_or_else(Vector3::zeros)
     }
 
@@ -156,21 +134,18 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     pub(super) fn reset(&mut self) -> Result<(), LearnError> {
         self.bins.clear()?;
         self.levels.clear();
-        self.change = None;
-        self.verdict = StaleVerdict::default();
+        self.recovery = RecoveryState::default();
         self.plant_root();
         Ok(())
     }
 
     fn plant_root(&mut self) {
-        self.nodes.clear();
-        self.free.clear();
-        self.touched.clear();
+        self.retraining.touched.clear();
         let window = self.settings.am_error_iters;
         let model = self.template.spawn(&mut self.rng);
         let mut root = Node::new(model, *self.rule.root(), NONE, 0, 0, window);
-        root.born = self.next_seq;
-        self.nodes.push(root);
+        root.born = self.journal.next_seq;
+        self.nodes.replant(root);
         self.levels.node_added(0);
     }
 
@@ -203,17 +178,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         let window = self.settings.am_error_iters;
         let model = self.template.spawn(&mut self.rng);
         let mut node = Node::new(model, region, parent, branch, depth, window);
-        node.born = self.next_seq;
-        let id = match self.free.pop() {
-            Some(id) => {
-                self.nodes[id as usize] = node;
-                id
-            }
-            None => {
-                self.nodes.push(node);
-                (self.nodes.len() - 1) as u32
-            }
-        };
+        node.born = self.journal.next_seq;
+        let id = self.nodes.insert(node);
         self.nodes[parent as usize].children[usize::from(branch)] = id;
         self.levels.node_added(depth);
         id
@@ -221,7 +187,6 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
 
     /// Returns node `id`, already unlinked, to the arena.
     pub(super) fn release(&mut self, id: u32) {
-        self.nodes[id as usize].fresh = 0;
-        self.free.push(id);
+        self.nodes.release(id);
     }
 }

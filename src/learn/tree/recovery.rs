@@ -85,8 +85,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         cutoff: u64,
         min_fresh: usize,
     ) -> Result<(), LearnError> {
-        self.verdict = StaleVerdict::default();
-        self.change = Some((cutoff, min_fresh));
+        self.recovery.verdict = StaleVerdict::default();
+        self.recovery.change = Some((cutoff, min_fresh));
         let order = self.reachable();
         // Per node (by arena index): whether it is replayed, and the valid patterns in its box.
         let mut replayed = vec![false; self.nodes.len()];
@@ -132,7 +132,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             if A::RETRAINED {
                 // Re-trained after this trial, on the valid patterns only.
                 if node.fresh == 0 {
-                    self.touched.push(id);
+                    self.retraining.touched.push(id);
                 }
                 node.fresh = node.fresh.max(self.settings.retrain_delay.max(1));
             }
@@ -143,10 +143,10 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// Cuts every starved subtree (see the module doc), booking each as a starved merge.
     /// True when no node awaits patterns from after the last change any more.
     pub(crate) fn cut_starved(&mut self) -> bool {
-        let Some((cutoff, min_fresh)) = self.change else {
+        let Some((cutoff, min_fresh)) = self.recovery.change else {
             return true;
         };
-        let since = self.next_seq.saturating_sub(cutoff) as f64;
+        let since = self.journal.next_seq.saturating_sub(cutoff) as f64;
         let root = &self.nodes[ROOT as usize];
         let mut stack: Vec<u32> = root
             .children
@@ -159,7 +159,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             let node = &self.nodes[id as usize];
             let starved = node.awaiting > 0
                 && node.pace * since >= STARVED * min_fresh as f64
-                && !node.stale_ok(&self.verdict);
+                && !node.stale_ok(&self.recovery.verdict);
             if starved {
                 self.cut_as(id, MergeKind::Starved);
                 continue;
@@ -168,8 +168,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             stack.extend(node.children.iter().copied().filter(|&c| c != NONE));
         }
         if !waiting {
-            self.verdict = StaleVerdict::default();
-            self.change = None;
+            self.recovery.verdict = StaleVerdict::default();
+            self.recovery.change = None;
         }
         !waiting
     }

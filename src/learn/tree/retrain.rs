@@ -20,7 +20,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             return Ok(0);
         }
         let delay = self.settings.retrain_delay.max(1);
-        let mut touched = std::mem::take(&mut self.touched);
+        let mut touched = std::mem::take(&mut self.retraining.touched);
         let mut retrained = 0;
         let mut result = Ok(());
         touched.retain(|&id| {
@@ -33,14 +33,14 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             // (A node gone or listed twice has nothing new and drops out.)
             fresh > 0
         });
-        self.touched = touched;
+        self.retraining.touched = touched;
         result.map(|()| retrained)
     }
 
     /// Re-trains node `id` on the newest pattern of (at most `retrain_limit`) bins of its
     /// subtree.
     pub(super) fn retrain(&mut self, id: u32) -> Result<(), LearnError> {
-        let mut picked = std::mem::take(&mut self.picked);
+        let mut picked = std::mem::take(&mut self.retraining.picked);
         let mut stack = std::mem::take(&mut self.scratch);
         picked.clear();
         stack.push(id);
@@ -61,14 +61,16 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             picked.truncate(limit);
         }
         let region = self.nodes[id as usize].region;
-        self.batch.clear();
+        self.retraining.batch.clear();
         for &bin in &picked {
             let p = self.bins.latest(bin)?;
-            self.batch.push((region.local(&p.input), p.target));
+            self.retraining
+                .batch
+                .push((region.local(&p.input), p.target));
         }
-        self.picked = picked;
+        self.retraining.picked = picked;
         let node = &mut self.nodes[id as usize];
-        node.model.retrain(&self.batch);
+        node.model.retrain(&self.retraining.batch);
         node.fresh = 0;
         Ok(())
     }

@@ -13,19 +13,19 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     pub(crate) fn train(&mut self, pattern: &Pattern<N>) -> Result<TreeEvent, LearnError> {
         let finite = |v: &f64| v.is_finite();
         if !(pattern.input.iter().all(finite) && pattern.target.iter().all(finite)) {
-            self.last_error = None;
+            self.journal.last_error = None;
             return Ok(TreeEvent::Ignored);
         }
-        let seq = self.next_seq;
-        self.next_seq += 1;
+        let seq = self.journal.next_seq;
+        self.journal.next_seq += 1;
         let key = self.rule.key(&pattern.input, self.settings.max_depth);
         let path = self.descend(key);
-        self.last_error = None;
+        self.journal.last_error = None;
         // The error of the deepest node so far that answered from its own model.
         let mut fallback = None;
         for &id in path.nodes() {
             let (answered, own) = self.train_node(id, key, pattern, seq, fallback);
-            self.last_error = answered.or(self.last_error);
+            self.journal.last_error = answered.or(self.journal.last_error);
             fallback = own.or(fallback);
         }
         self.store(path.deepest(), key, pattern, seq)?;
@@ -58,10 +58,10 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         let own = node.answer(&pattern.input).map(miss);
         let stale = node.stale_answer(&pattern.input).map(miss);
         if let (Some(stale), Some(fallback)) = (stale, fallback) {
-            self.verdict.compare(stale, fallback);
+            self.recovery.verdict.compare(stale, fallback);
             node.verdict.compare(stale, fallback);
         }
-        let error = own.or(stale.filter(|_| node.stale_ok(&self.verdict)));
+        let error = own.or(stale.filter(|_| node.stale_ok(&self.recovery.verdict)));
         if let Some(error) = error {
             node.errors.push(error);
             self.levels.record_error(node.depth, error);
@@ -87,7 +87,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         if A::RETRAINED {
             let node = &mut self.nodes[id as usize];
             if node.fresh == 0 {
-                self.touched.push(id);
+                self.retraining.touched.push(id);
             }
             node.fresh += 1;
         }

@@ -44,7 +44,11 @@ fn a_root_absolute_merge_throws_everything_away() {
         depth: 0,
         nodes,
     };
-    assert_eq!(t.events, [merge], "every node there was, logged once");
+    assert_eq!(
+        t.journal.events,
+        [merge],
+        "every node there was, logged once"
+    );
     let stats = t.stats();
     assert_eq!((stats.nodes, stats.bins, stats.patterns), (1, 0, 0));
     assert!(stats.levels.iter().all(|l| l.error.is_none()));
@@ -88,7 +92,7 @@ fn a_relative_merge_compares_a_child_with_its_parent_on_the_same_patterns() {
         nodes: 2,
     };
     assert_eq!(
-        t.events,
+        t.journal.events,
         [merge],
         "the child and its own child, logged once"
     );

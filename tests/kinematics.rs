@@ -163,7 +163,8 @@ fn every_reach_space_point_has_an_elbow_up_pose_inside_limits_and_boundaries() {
             "θ3 {t3}"
         );
     }
-    // The ranges DESIGN.md measured: shoulder −1°…69°, elbow interior 47°…128°.
+    // The ranges a first check of the design measured: shoulder −1°…69°, elbow interior
+    // 47°…128° (docs/SIMULATION.md).
     assert!(t2_range.0 > -2.0 && t2_range.1 < 70.0, "{t2_range:?}");
     assert!(
         180.0 - t3_range.1 > 46.0 && 180.0 - t3_range.0 < 129.0,

@@ -1,4 +1,4 @@
-//! A run's folder: the files DESIGN.md lists, written the same way for the same seed.
+//! A run's folder: the files README.md lists, written the same way for the same seed.
 
 use eyehand::experiment::{run, Config, Event, RunOptions, RunResult, ENTRY_NAMES};
 use eyehand::learn::Method;

@@ -25,7 +25,7 @@ pub use config_values::{CameraKind, SimKind};
 pub use events::{Event, EventError};
 pub use memory::{peak_rss_kb, resident_kb};
 pub use output::DataFiles;
-pub use run::{run, RunError, RunOptions, RunResult};
+pub use run::{run, run_learner, RunError, RunOptions, RunResult};
 pub use run_folder::{allocate_run_folder, RunFolderError, RUN_IDS};
 pub use summary::{RunSummary, StepFigures};
 pub use sweep::{combinations, parse_seeds, slurm_script, sweep_cells, sweep_table, Setting};

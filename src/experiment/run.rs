@@ -8,7 +8,7 @@ use super::setup::{build_camera, build_learner, build_simulator, trial_settings}
 use super::summary::{RunSummary, StepFigures};
 use super::{allocate_run_folder, peak_rss_kb, resident_kb, Config, Event, RunFolderError};
 use crate::control::TrialLoop;
-use crate::learn::{LearnError, LearnerStats};
+use crate::learn::{LearnError, Learner, LearnerStats};
 use crate::robot::{load_urdf, ArmModel, RobotError, UrdfError};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -65,6 +65,9 @@ pub enum RunError {
     /// The learner could not be built or failed.
     #[error(transparent)]
     Learner(#[from] LearnError),
+    /// A learner's name that cannot name a folder (letters, digits, `_` and `-` only).
+    #[error("a learner's name must be letters, digits, `_` or `-`, not `{0}`")]
+    LearnerName(String),
     /// An event the robot cannot undergo.
     #[error("event {event}: {source}")]
     Event {
@@ -90,17 +93,47 @@ pub struct RunResult {
     pub summary: RunSummary,
 }
 
-/// Runs every trial of a run and fills its folder.
+/// Runs every trial of a run of the config's learner and fills its folder
+/// (`<data>/<method>/<id>/`).
 pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
-    let config = &options.config;
-    let model = match &options.urdf {
+    let model = load_model(options)?;
+    let folder = allocate_run_folder(&options.data_dir, options.config.method.name())?;
+    let learner = build_learner(&options.config, &model, Some(&folder))?;
+    drive(options, model, folder, learner)
+}
+
+/// Runs every trial of a run with a learner the caller built (one written outside the
+/// crate, say): the same trial loop, data files and summary as [`run`], in
+/// `<data>/<learner name>/<id>/`. The config's `method` entry is not used.
+pub fn run_learner(options: &RunOptions, learner: Box<dyn Learner>) -> Result<RunResult, RunError> {
+    let name = learner.name();
+    let plain = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '-';
+    if name.is_empty() || !name.chars().all(plain) {
+        return Err(RunError::LearnerName(name.to_string()));
+    }
+    let model = load_model(options)?;
+    let folder = allocate_run_folder(&options.data_dir, name)?;
+    drive(options, model, folder, learner)
+}
+
+/// The robot the run's URDF describes (the shipped OSCAR-6 without one).
+fn load_model(options: &RunOptions) -> Result<ArmModel, RunError> {
+    Ok(match &options.urdf {
         Some(path) => load_urdf(path)?,
         None => ArmModel::oscar6(),
-    };
-    let sim = build_simulator(config, model.clone());
+    })
+}
+
+/// Drives `learner` through the run's trials and events, filling `folder`.
+fn drive(
+    options: &RunOptions,
+    model: ArmModel,
+    folder: PathBuf,
+    mut learner: Box<dyn Learner>,
+) -> Result<RunResult, RunError> {
+    let config = &options.config;
+    let sim = build_simulator(config, model);
     let camera = build_camera(config);
-    let folder = allocate_run_folder(&options.data_dir, config.method.name())?;
-    let mut learner = build_learner(config, &model, Some(&folder))?;
     let mut events = Event::from_config(config);
     events.extend(options.events.iter().copied());
     events.sort_by_key(Event::trial);
@@ -149,7 +182,7 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
     let wall_seconds = started.elapsed().as_secs_f64();
     let stats = learner.stats();
     let summary = RunSummary {
-        method: config.method.to_string(),
+        method: learner.name().to_string(),
         sim: config.sim.to_string(),
         camera: config.camera.to_string(),
         seed: config.seed,

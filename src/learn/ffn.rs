@@ -76,8 +76,8 @@ impl FfnLearner {
 }
 
 impl Learner for FfnLearner {
-    fn method(&self) -> Method {
-        Method::Ffn
+    fn name(&self) -> &str {
+        Method::Ffn.name()
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {

@@ -43,8 +43,8 @@ impl IkLearner {
 }
 
 impl Learner for IkLearner {
-    fn method(&self) -> Method {
-        Method::Ik
+    fn name(&self) -> &str {
+        Method::Ik.name()
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {

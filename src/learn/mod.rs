@@ -46,8 +46,9 @@ use nalgebra::Vector3;
 /// Angles are in degrees, camera readings in the camera's units (pixels for cx, cy; the
 /// area measure for cz).
 pub trait Learner: std::fmt::Debug {
-    /// The method this learner implements.
-    fn method(&self) -> Method;
+    /// The learner's name: runs of it are filed under `data/<name>/` and reported under it
+    /// (summary.json's `method`). A built-in learner answers its [`Method`]'s name.
+    fn name(&self) -> &str;
 
     /// The joint move (Δθ1, Δθ2, Δθ3 in degrees) this learner proposes for `query`.
     /// Must always be finite.
@@ -58,8 +59,11 @@ pub trait Learner: std::fmt::Debug {
     /// the learner's storage (a pattern file) fails; the run then stops with what it wrote.
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError>;
 
-    /// Figures for the run's data files.
-    fn stats(&self) -> LearnerStats;
+    /// Figures for the run's data files (`nodes`, `bins`, `patterns`, `abs_err`); all zero
+    /// by default.
+    fn stats(&self) -> LearnerStats {
+        LearnerStats::default()
+    }
 
     /// True once after the learner threw away everything it knew (a root merge), or after a
     /// detected change left it nothing valid to answer from: the trial loop then repeats

@@ -112,8 +112,8 @@ impl KohonenLearner {
 }
 
 impl Learner for KohonenLearner {
-    fn method(&self) -> Method {
-        Method::Kohonen
+    fn name(&self) -> &str {
+        Method::Kohonen.name()
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {

@@ -85,8 +85,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
 }
 
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLearner<A, R, N> {
-    fn method(&self) -> Method {
-        self.method
+    fn name(&self) -> &str {
+        self.method.name()
     }
 
     /// The tree's Δθ at the query's input; always finite.

@@ -8,8 +8,8 @@
 //! `cargo bench --bench dynamic`
 
 use eyehand::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
-use eyehand::control::{TrialLoop, TrialSettings};
-use eyehand::experiment::setup::{build_learner, dynamic_settings};
+use eyehand::control::TrialLoop;
+use eyehand::experiment::setup::{build_learner, dynamic_settings, trial_settings};
 use eyehand::experiment::{Config, SimKind, StepFigures};
 use eyehand::learn::Method;
 use eyehand::robot::{ArmModel, Controlled, DynamicSettings, DynamicSim, KinematicSim, Simulator};
@@ -50,12 +50,7 @@ fn trials(method: Method, sim: SimKind, count: usize) -> Row {
             (Box::new(dynamic), Some(counters))
         }
     };
-    let settings = TrialSettings {
-        feedback_steps: config.feedback_steps,
-        min_feedback_steps: config.min_feedback_steps,
-        epsilon: config.min_target_distance / 100.0,
-        minimal_joint_move_deg: config.minimal_joint_move,
-    };
+    let settings = trial_settings(&config);
     let camera = Box::new(ProjectionCamera::new(CameraModel::default()));
     let mut learner = build_learner(&config, &model, None).expect("the learner builds");
     let mut loop_ = TrialLoop::new(simulator, camera, settings, SEED);

@@ -2,7 +2,7 @@
 //! is no longer as modelled.
 
 use eyehand::camera::{CameraModel, ProjectionCamera};
-use eyehand::control::{TrialLoop, TrialSettings};
+use eyehand::control::{SensorNoise, TrialLoop, TrialSettings};
 use eyehand::learn::{IkLearner, Learner};
 use eyehand::robot::{ArmModel, KinematicSim, MoveSettings};
 
@@ -15,6 +15,7 @@ fn trial_loop(seed: u64) -> TrialLoop {
         min_feedback_steps: 5,
         epsilon: EPSILON_MM / 1000.0,
         minimal_joint_move_deg: 0.01,
+        noise: SensorNoise::default(),
     };
     TrialLoop::new(
         Box::new(sim),

@@ -3,6 +3,7 @@
 //! `min_feedback_steps` steps) or `feedback_steps` are used; the trial's poses are then
 //! learned.
 
+use super::sensors::{NoisySensors, SensorNoise};
 use crate::camera::{Camera, NotSeen};
 use crate::learn::Observation;
 use crate::learn::{LearnError, Learner};
@@ -28,6 +29,8 @@ pub struct TrialSettings {
     pub epsilon: f64,
     /// A pose pair is a learning pattern only if a joint moved this much (degrees).
     pub minimal_joint_move_deg: f64,
+    /// The noise of the camera's and the encoders' reports.
+    pub noise: SensorNoise,
 }
 
 /// Why a trial could not be completed; counted, never fatal.
@@ -60,11 +63,13 @@ pub struct TrialLoop {
     reach: ReachSpace,
     settings: TrialSettings,
     rng: ChaCha8Rng,
+    sensors: NoisySensors,
     path: Vec<Observation>,
 }
 
 impl TrialLoop {
-    /// A loop whose every random draw comes from `seed`.
+    /// A loop whose every random draw comes from `seed` (the sensor noise from a stream of
+    /// its own).
     pub fn new(
         sim: Box<dyn Simulator>,
         camera: Box<dyn Camera>,
@@ -77,6 +82,7 @@ impl TrialLoop {
             reach: ReachSpace::OSCAR6,
             settings,
             rng: ChaCha8Rng::seed_from_u64(seed),
+            sensors: NoisySensors::new(settings.noise, seed),
             path: Vec::with_capacity(settings.feedback_steps + 1),
         }
     }
@@ -144,14 +150,16 @@ impl TrialLoop {
         Ok(outcome)
     }
 
-    /// What the sensors and camera give at the current pose.
-    pub fn observe(&self, object: &Point3<f64>) -> Result<Observation, NotSeen> {
+    /// What the sensors and camera report at the current pose (with their noise), or why
+    /// the object is not seen.
+    pub fn observe(&mut self, object: &Point3<f64>) -> Result<Observation, NotSeen> {
         let c = self.camera.read(&self.sim.camera_pose(), object)?;
         let q = self.sim.joints();
-        Ok(Observation {
+        let exact = Observation {
             theta_deg: Vector3::new(q[0], q[1], q[2]).map(f64::to_degrees),
             c,
-        })
+        };
+        Ok(self.sensors.report(exact, self.camera.model()))
     }
 
     /// The object's centre for a target drawn uniformly in the reach space and reachable by

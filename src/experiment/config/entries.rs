@@ -134,6 +134,12 @@ config_entries! {
     settle_timeout: f64,
     /// Raycast camera: rays per image side (the 512×512 image is sampled N×N).
     raycast_resolution: usize,
+    /// Sensor noise: σ of the blob centroid on each image axis (pixels); 0 = exact.
+    camera_noise_px: f64,
+    /// Sensor noise: σ of the blob area relative to itself; 0 = exact.
+    camera_area_noise: f64,
+    /// Sensor noise: σ of each joint encoder's reading (degrees); 0 = exact.
+    joint_noise_deg: f64,
     /// Known patterns trained per 100 regular patterns.
     known_pattern_perc: f64,
     /// Learning patterns each bin keeps.

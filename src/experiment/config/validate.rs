@@ -117,6 +117,21 @@ impl Config {
             "must be 16 to 4096",
         )?;
         check(
+            (0.0..=50.0).contains(&self.camera_noise_px),
+            "camera_noise_px",
+            "must be 0 to 50 (pixels)",
+        )?;
+        check(
+            (0.0..=0.5).contains(&self.camera_area_noise),
+            "camera_area_noise",
+            "must be 0 to 0.5 (a fraction of the area)",
+        )?;
+        check(
+            (0.0..=10.0).contains(&self.joint_noise_deg),
+            "joint_noise_deg",
+            "must be 0 to 10 (degrees)",
+        )?;
+        check(
             (0.0..=1000.0).contains(&self.known_pattern_perc),
             "known_pattern_perc",
             "must be 0 to 1000",

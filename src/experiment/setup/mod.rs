@@ -9,7 +9,7 @@ pub use learners::{
 
 use super::{CameraKind, Config, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
-use crate::control::TrialSettings;
+use crate::control::{SensorNoise, TrialSettings};
 use crate::learn::{
     FfnLearner, IkLearner, KohonenLearner, LearnError, Learner, Lin5, Lin8, Method, Nnw,
 };
@@ -35,13 +35,18 @@ pub fn build_camera(config: &Config) -> Box<dyn Camera> {
 }
 
 /// The trial loop's settings: `feedback_steps`, `min_feedback_steps`,
-/// `min_target_distance` and `minimal_joint_move`.
+/// `min_target_distance`, `minimal_joint_move` and the sensor noise entries.
 pub fn trial_settings(config: &Config) -> TrialSettings {
     TrialSettings {
         feedback_steps: config.feedback_steps,
         min_feedback_steps: config.min_feedback_steps,
         epsilon: config.min_target_distance * M_PER_CM,
         minimal_joint_move_deg: config.minimal_joint_move,
+        noise: SensorNoise {
+            centroid_px: config.camera_noise_px,
+            area_relative: config.camera_area_noise,
+            joint_deg: config.joint_noise_deg,
+        },
     }
 }
 

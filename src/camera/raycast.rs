@@ -12,6 +12,12 @@
 //! the blob's exact bounding box are cast: the planes through the camera centre tangent to
 //! the sphere bound its image column- and row-wise, so no ray outside them can hit (a
 //! one-pixel margin absorbs rounding).
+//!
+//! With pixel noise (`raycast_noise` σ > 0) every pixel's grey level (its coverage) gets
+//! Gaussian noise before the blob is measured, as a real sensor's pixels do; the detector
+//! then keeps the pixels brighter than a 3σ noise floor and weighs each by its grey level
+//! (clamped to [0, 1]). The noise of a pixel is a hash of the seed, the frame number and
+//! the pixel, so every read is reproducible and no generator is shared.
 
 use super::model::{CameraModel, NotSeen};
 use super::Camera;
@@ -19,6 +25,7 @@ use nalgebra::Vector3;
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::parry::query::{Ray, RayCast};
 use rapier3d_f64::parry::shape::Ball;
+use std::cell::Cell;
 use std::ops::RangeInclusive;
 
 /// The fewest pixels per image side.
@@ -28,10 +35,15 @@ const MIN_RESOLUTION: usize = 2;
 const SUPERSAMPLE: usize = 8;
 
 /// A camera that images the sphere by casting rays through its pixels.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct RaycastCamera {
     model: CameraModel,
     resolution: usize,
+    /// σ of each pixel's grey level (0: noiseless).
+    pixel_noise: f64,
+    seed: u64,
+    /// Frames read so far: the noise differs from frame to frame.
+    frames: Cell<u64>,
 }
 
 impl RaycastCamera {
@@ -41,7 +53,18 @@ impl RaycastCamera {
         RaycastCamera {
             model,
             resolution: resolution.max(MIN_RESOLUTION),
+            pixel_noise: 0.0,
+            seed: 0,
+            frames: Cell::new(0),
         }
+    }
+
+    /// This camera with Gaussian noise of σ `sigma` on each pixel's grey level (coverage
+    /// 0–1), reproducible from `seed`.
+    pub fn with_pixel_noise(mut self, sigma: f64, seed: u64) -> RaycastCamera {
+        self.pixel_noise = sigma.max(0.0);
+        self.seed = seed;
+        self
     }
 
     /// Rays per image side.
@@ -86,7 +109,9 @@ impl Camera for RaycastCamera {
         else {
             return Err(NotSeen::OutsideFrame);
         };
-        let blob = Coverage::measure(self, p, columns, rows);
+        let frame = self.frames.get();
+        self.frames.set(frame + 1);
+        let blob = Coverage::measure(self, p, (columns, rows), frame);
         if blob.area <= 0.0 || blob.on_border {
             return Err(NotSeen::OutsideFrame);
         }
@@ -115,12 +140,12 @@ struct Coverage {
 
 impl Coverage {
     /// Measures the blob of the sphere centred at `p` (camera frame) over the pixels in
-    /// `columns` × `rows`.
+    /// `columns` × `rows`, in frame number `frame` (for the pixel noise).
     fn measure(
         camera: &RaycastCamera,
         p: &Vector3<f64>,
-        columns: RangeInclusive<usize>,
-        rows: RangeInclusive<usize>,
+        (columns, rows): (RangeInclusive<usize>, RangeInclusive<usize>),
+        frame: u64,
     ) -> Coverage {
         let m = &camera.model;
         let n = camera.resolution;
@@ -153,17 +178,26 @@ impl Coverage {
             (j.saturating_sub(1)..=(j + 1).min(h - 1))
                 .any(|y| (i.saturating_sub(1)..=(i + 1).min(w - 1)).any(|x| mixed[y * w + x]))
         };
+        let sigma = camera.pixel_noise;
         let mut blob = Coverage::default();
         for j in 0..h {
             for i in 0..w {
                 let (u0, v0) = (corner_u(i), corner_v(j));
-                let (covered, mean_u, mean_v) = if near_edge(i, j) {
+                let (centre_u, centre_v) = (u0 + 0.5 * cell_u, v0 + 0.5 * cell_v);
+                let (mut covered, mean_u, mean_v) = if near_edge(i, j) {
                     Self::supersample(u0, v0, cell_u, cell_v, &hits)
-                } else if corner(i, j) {
-                    (1.0, u0 + 0.5 * cell_u, v0 + 0.5 * cell_v)
                 } else {
-                    continue;
+                    (f64::from(u8::from(corner(i, j))), centre_u, centre_v)
                 };
+                let (column, row) = (c0 + i, r0 + j);
+                if sigma > 0.0 {
+                    let grey = covered + sigma * pixel_gaussian(camera.seed, frame, column, row);
+                    covered = if grey >= 3.0 * sigma {
+                        grey.min(1.0)
+                    } else {
+                        0.0
+                    };
+                }
                 if covered == 0.0 {
                     continue;
                 }
@@ -171,7 +205,6 @@ impl Coverage {
                 blob.area += area;
                 blob.sum_u += area * mean_u;
                 blob.sum_v += area * mean_v;
-                let (column, row) = (c0 + i, r0 + j);
                 blob.on_border |= row == 0 || column == 0 || row == n - 1 || column == n - 1;
             }
         }
@@ -179,7 +212,8 @@ impl Coverage {
     }
 
     /// The covered fraction of the pixel with corner (u0, v0) and its covered part's
-    /// centroid, from rays through its sub-pixel centres.
+    /// centroid (the pixel's centre if nothing is covered), from rays through its sub-pixel
+    /// centres.
     fn supersample(
         u0: f64,
         v0: f64,
@@ -201,11 +235,28 @@ impl Coverage {
             }
         }
         if count == 0 {
-            return (0.0, 0.0, 0.0);
+            return (0.0, u0 + 0.5 * cell_u, v0 + 0.5 * cell_v);
         }
         let k = count as f64;
         (k / (SUPERSAMPLE * SUPERSAMPLE) as f64, sum_u / k, sum_v / k)
     }
+}
+
+/// A standard normal value that depends only on the seed, frame and pixel (two hashed
+/// uniforms through Box–Muller).
+fn pixel_gaussian(seed: u64, frame: u64, column: usize, row: usize) -> f64 {
+    let key = seed ^ frame.rotate_left(40) ^ ((column as u64) << 20) ^ row as u64;
+    let (a, b) = (splitmix(key), splitmix(key ^ 0x9e37_79b9_7f4a_7c15));
+    let uniform = |x: u64| ((x >> 11) as f64 + 0.5) / (1u64 << 53) as f64;
+    (-2.0 * uniform(a).ln()).sqrt() * (std::f64::consts::TAU * uniform(b)).cos()
+}
+
+/// The SplitMix64 finaliser: a well-mixed 64-bit hash of `x`.
+fn splitmix(x: u64) -> u64 {
+    let mut z = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
 }
 
 #[cfg(test)]
@@ -240,6 +291,25 @@ mod tests {
         }
         assert!(worst_px < 0.05, "centroid off by {worst_px} px");
         assert!(worst_area < 0.002, "area off by {worst_area} of itself");
+    }
+
+    #[test]
+    fn pixel_noise_jitters_the_reading_reproducibly_and_without_bias() {
+        let model = CameraModel::default();
+        let p = Vector3::new(0.011, -0.004, 0.2);
+        let exact = RaycastCamera::new(model, 256).read_local(&p).unwrap();
+        let (a, b) = (
+            RaycastCamera::new(model, 256).with_pixel_noise(0.1, 3),
+            RaycastCamera::new(model, 256).with_pixel_noise(0.1, 3),
+        );
+        let reads: Vec<Vector3<f64>> = (0..200).map(|_| a.read_local(&p).unwrap()).collect();
+        let replay: Vec<Vector3<f64>> = (0..200).map(|_| b.read_local(&p).unwrap()).collect();
+        assert_eq!(reads, replay, "the same seed gives the same frames");
+        assert_ne!(reads[0], reads[1], "each frame has its own noise");
+        let mean = reads.iter().sum::<Vector3<f64>>() / reads.len() as f64;
+        let spread = (reads.iter().map(|r| (r - mean).x.powi(2)).sum::<f64>() / 199.0).sqrt();
+        assert!(spread > 0.005 && spread < 0.2, "σ(cx) {spread} px");
+        assert!((mean - exact).xy().amax() < 0.05, "{mean} vs {exact}");
     }
 
     #[test]

@@ -134,6 +134,9 @@ config_entries! {
     settle_timeout: f64,
     /// Raycast camera: rays per image side (the 512×512 image is sampled N×N).
     raycast_resolution: usize,
+    /// Raycast camera: σ of each pixel's grey level (coverage 0–1) before the blob is
+    /// measured; 0 = noiseless.
+    raycast_noise: f64,
     /// Sensor noise: σ of the blob centroid on each image axis (pixels); 0 = exact.
     camera_noise_px: f64,
     /// Sensor noise: σ of the blob area relative to itself; 0 = exact.

@@ -117,6 +117,11 @@ impl Config {
             "must be 16 to 4096",
         )?;
         check(
+            (0.0..=0.3).contains(&self.raycast_noise),
+            "raycast_noise",
+            "must be 0 to 0.3 (of a pixel's full grey level)",
+        )?;
+        check(
             (0.0..=50.0).contains(&self.camera_noise_px),
             "camera_noise_px",
             "must be 0 to 50 (pixels)",

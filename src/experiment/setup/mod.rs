@@ -30,7 +30,10 @@ pub fn build_camera(config: &Config) -> Box<dyn Camera> {
     let model = CameraModel::default();
     match config.camera {
         CameraKind::Projection => Box::new(ProjectionCamera::new(model)),
-        CameraKind::Raycast => Box::new(RaycastCamera::new(model, config.raycast_resolution)),
+        CameraKind::Raycast => Box::new(
+            RaycastCamera::new(model, config.raycast_resolution)
+                .with_pixel_noise(config.raycast_noise, config.seed),
+        ),
     }
 }
 

@@ -1,7 +1,7 @@
-//! The config file format: every error kind stops with `file:line: reason`, and every
-//! shipped config parses.
+//! The config file format: every error kind stops with `file:line: reason` and is matched
+//! here by its kind; every shipped config parses.
 
-use eyehand::experiment::{Config, ENTRY_NAMES};
+use eyehand::experiment::{Config, ConfigErrorKind, ValueError, ENTRY_NAMES};
 use std::process::Command;
 
 fn shipped() -> String {
@@ -60,7 +60,13 @@ fn every_entry_is_in_the_shipped_config_once() {
 fn an_unknown_name_is_reported_at_its_line() {
     let (text, line) = with_line("split_error", "split_eror 0.0001");
     let err = Config::parse(&text, "x.conf").unwrap_err();
-    assert_eq!(err.line, line);
+    assert_eq!(err.line, Some(line));
+    assert_eq!(
+        err.kind,
+        ConfigErrorKind::UnknownEntry {
+            name: "split_eror".into()
+        }
+    );
     assert!(
         err.to_string()
             .starts_with(&format!("x.conf:{line}: unknown entry `split_eror`")),
@@ -73,10 +79,15 @@ fn a_name_given_twice_is_reported_at_the_second() {
     let text = shipped() + "\ntree_depth 6\n";
     let last = text.lines().count();
     let err = Config::parse(&text, "x.conf").unwrap_err();
-    assert_eq!(err.line, last);
+    assert_eq!(err.line, Some(last));
     assert!(
-        err.reason
-            .contains("`tree_depth` is given twice (first on line"),
+        matches!(
+            err.kind,
+            ConfigErrorKind::Repeated {
+                name: "tree_depth",
+                first_line
+            } if first_line < last
+        ),
         "{err}"
     );
 }
@@ -85,47 +96,135 @@ fn a_name_given_twice_is_reported_at_the_second() {
 fn a_missing_name_is_reported() {
     let (text, _) = with_line("monitor_ave", "# monitor_ave removed");
     let err = Config::parse(&text, "x.conf").unwrap_err();
-    assert_eq!(err.line, text.lines().count());
-    assert_eq!(err.reason, "missing entries: monitor_ave");
+    assert_eq!(err.line, Some(text.lines().count()));
+    assert_eq!(
+        err.kind,
+        ConfigErrorKind::Missing {
+            names: vec!["monitor_ave"]
+        }
+    );
 }
 
 #[test]
 fn a_real_number_for_an_integer_is_reported() {
     let (text, line) = with_line("feedback_steps", "feedback_steps 10.5");
     let err = Config::parse(&text, "x.conf").unwrap_err();
-    assert_eq!(err.line, line);
-    assert!(
-        err.reason
-            .contains("real number, but this entry takes an integer"),
-        "{err}"
+    assert_eq!(err.line, Some(line));
+    assert_eq!(
+        err.kind,
+        ConfigErrorKind::BadValue {
+            name: "feedback_steps",
+            problem: ValueError::RealForInteger("10.5".into())
+        }
     );
+}
+
+/// Which kind of error a replaced line gives, for the table below.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Expected {
+    BadValue,
+    OutOfRange,
+    NotNameValue,
+    EventAfterLastTrial,
+    TooMuchMemory,
+}
+
+fn expected_kind(kind: &ConfigErrorKind) -> Option<Expected> {
+    Some(match kind {
+        ConfigErrorKind::BadValue { .. } => Expected::BadValue,
+        ConfigErrorKind::OutOfRange { .. } => Expected::OutOfRange,
+        ConfigErrorKind::NotNameValue { .. } => Expected::NotNameValue,
+        ConfigErrorKind::EventAfterLastTrial { .. } => Expected::EventAfterLastTrial,
+        ConfigErrorKind::TooMuchMemory { .. } => Expected::TooMuchMemory,
+        _ => return None,
+    })
 }
 
 #[test]
 fn bad_values_and_bad_lines_are_reported() {
-    for (name, replacement, why) in [
-        ("split_error", "split_error abc", "not a finite real number"),
-        ("method", "method lin9", "unknown method `lin9`"),
-        ("sim", "sim rapier", "unknown simulator"),
-        ("tree_depth", "tree_depth 0", "tree_depth: must be 1 to 12"),
+    use Expected::*;
+    for (name, replacement, kind) in [
+        ("split_error", "split_error abc", BadValue),
+        ("method", "method lin9", BadValue),
+        ("sim", "sim rapier", BadValue),
+        ("tree_depth", "tree_depth 0", OutOfRange),
+        ("boundary_2_high", "boundary_2_high -600", OutOfRange),
+        ("min_feedback_steps", "min_feedback_steps 11", OutOfRange),
+        ("seed", "seed", NotNameValue),
+        ("trials", "trials 5 6", NotNameValue),
+        ("split_error", "split_error -1", OutOfRange),
+        ("min_pats_for_split", "min_pats_for_split 0", OutOfRange),
+        ("am_error_tresh", "am_error_tresh -1", OutOfRange),
+        ("merge_error", "merge_error -5", OutOfRange),
+        ("min_target_distance", "min_target_distance 1e9", OutOfRange),
+        ("minimal_joint_move", "minimal_joint_move 1e9", OutOfRange),
+        ("bin_size", "bin_size 1000000000000", OutOfRange),
+        ("robot_speed", "robot_speed 1e300", OutOfRange),
+        ("feedback_steps", "feedback_steps 1000000", OutOfRange),
         (
-            "boundary_2_high",
-            "boundary_2_high -600",
-            "must be above boundary_2_low",
+            "feedback_steps",
+            "feedback_steps 1000000000000",
+            TooMuchMemory,
         ),
+        ("monitor_ave", "monitor_ave 1000000000000", TooMuchMemory),
         (
-            "min_feedback_steps",
-            "min_feedback_steps 11",
-            "must not exceed feedback_steps",
+            "am_error_iters",
+            "am_error_iters 1000000000000",
+            TooMuchMemory,
         ),
-        ("seed", "seed", "expected `name value`"),
-        ("trials", "trials 5 6", "expected `name value`"),
+        ("ffn_window", "ffn_window 1000000000000", TooMuchMemory),
+        ("hidden_units", "hidden_units 100000000000", TooMuchMemory),
+        (
+            "ffn_hidden_units",
+            "ffn_hidden_units 100000000000",
+            TooMuchMemory,
+        ),
+        ("rotate_trial", "rotate_trial 20000", EventAfterLastTrial),
+        (
+            "elongate_trial",
+            "elongate_trial 10001",
+            EventAfterLastTrial,
+        ),
     ] {
         let (text, line) = with_line(name, replacement);
         let err = Config::parse(&text, "x.conf").unwrap_err();
-        assert_eq!(err.line, line, "{replacement}: {err}");
-        assert!(err.reason.contains(why), "{replacement}: {err}");
+        assert_eq!(err.line, Some(line), "{replacement}: {err}");
+        assert_eq!(expected_kind(&err.kind), Some(kind), "{replacement}: {err}");
+        assert_eq!(
+            err.kind.entry(),
+            (kind != NotNameValue).then_some(name),
+            "{replacement}: {err}"
+        );
+        assert!(
+            err.to_string().starts_with(&format!("x.conf:{line}: ")),
+            "{replacement}: {err}"
+        );
     }
+}
+
+#[test]
+fn a_byte_order_mark_is_skipped_and_a_huge_value_is_cut_short() {
+    let text = format!("\u{feff}{}", shipped());
+    assert_eq!(
+        Config::parse(&text, "x.conf").unwrap(),
+        Config::default_config()
+    );
+    let huge = "7".repeat(1_000_000);
+    let (text, _) = with_line("seed", &format!("seed {huge}"));
+    let message = Config::parse(&text, "x.conf").unwrap_err().to_string();
+    assert!(message.len() < 200, "{} characters", message.len());
+    assert!(message.contains("(1000000 characters)"), "{message}");
+}
+
+#[test]
+fn an_unreadable_file_is_named_without_a_line() {
+    let err = Config::from_file(std::path::Path::new("/no/such.conf")).unwrap_err();
+    assert_eq!(err.line, None);
+    assert!(matches!(err.kind, ConfigErrorKind::Unreadable { .. }));
+    assert!(
+        err.to_string().starts_with("/no/such.conf: cannot read"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -143,14 +242,33 @@ fn overrides_are_checked_like_config_lines() {
     let mut config = Config::default_config();
     config.set("split_error", "1e-5").unwrap();
     assert_eq!(config.split_error, 1e-5);
-    assert!(config
-        .set("tree_depth", "2.5")
-        .unwrap_err()
-        .contains("real number"));
-    assert!(config
-        .set("no_such", "1")
-        .unwrap_err()
-        .contains("unknown entry"));
+    assert!(matches!(
+        config.set("tree_depth", "2.5"),
+        Err(ConfigErrorKind::BadValue {
+            name: "tree_depth",
+            problem: ValueError::RealForInteger(_)
+        })
+    ));
+    assert!(matches!(
+        config.set("no_such", "1"),
+        Err(ConfigErrorKind::UnknownEntry { .. })
+    ));
+}
+
+#[test]
+fn values_set_together_are_checked_together_in_any_order() {
+    let mut config = Config::default_config();
+    assert!(config.set("feedback_steps", "2").is_err());
+    for order in [
+        [("feedback_steps", "2"), ("min_feedback_steps", "1")],
+        [("min_feedback_steps", "1"), ("feedback_steps", "2")],
+    ] {
+        let mut config = Config::default_config();
+        for (name, value) in order {
+            config.assign(name, value).unwrap();
+        }
+        assert_eq!(config.check(), Ok(()));
+    }
 }
 
 #[test]

@@ -59,6 +59,8 @@ pub(super) fn load_config(path: Option<&Path>) -> Result<(Config, String), Failu
     }
 }
 
+/// The config file with every `--set` and flag applied, checked as a whole once the last
+/// one is in (so values that depend on each other may be set in any order).
 fn resolve_config(args: &RunArgs) -> Result<(Config, String), Failure> {
     let (mut config, name) = load_config(args.config.as_deref())?;
     for set in &args.sets {
@@ -66,18 +68,17 @@ fn resolve_config(args: &RunArgs) -> Result<(Config, String), Failure> {
             .split_once('=')
             .ok_or_else(|| bad_input(format!("--set {set}: expected NAME=VALUE")))?;
         config
-            .set(entry, value)
+            .assign(entry, value)
             .map_err(|e| bad_input(format!("--set {set}: {e}")))?;
     }
     config.method = args.method.unwrap_or(config.method);
     config.sim = args.sim.unwrap_or(config.sim);
     config.camera = args.camera.unwrap_or(config.camera);
     config.seed = args.seed.unwrap_or(config.seed);
-    if let Some(trials) = args.trials {
-        config
-            .set("trials", &trials.to_string())
-            .map_err(|e| bad_input(format!("--trials: {e}")))?;
-    }
+    config.trials = args.trials.unwrap_or(config.trials);
+    config
+        .check()
+        .map_err(|e| bad_input(format!("{name} with the command line's settings: {e}")))?;
     Ok((config, name))
 }
 

@@ -1,5 +1,6 @@
 //! Typed values of config entries: how each kind is parsed and written back.
 
+use super::config::ValueError;
 use crate::learn::{MergeStrategy, Method};
 use std::fmt;
 use std::str::FromStr;
@@ -7,19 +8,24 @@ use std::str::FromStr;
 /// A value a config entry can hold.
 pub(crate) trait ConfigValue: Sized {
     /// Parses the text after the entry's name; the error says why it is not a value.
-    fn parse_value(raw: &str) -> Result<Self, String>;
+    fn parse_value(raw: &str) -> Result<Self, ValueError>;
     /// The value as it is written in a config file.
     fn render(&self) -> String;
 }
 
-fn parse_integer<T: FromStr>(raw: &str) -> Result<T, String> {
+fn parse_integer<T: FromStr>(raw: &str, min: i64, max: u64) -> Result<T, ValueError> {
     raw.parse().map_err(|_| {
-        if raw.parse::<i128>().is_ok() {
-            format!("`{raw}` is not an integer in this entry's range")
+        let digits = raw.strip_prefix(['-', '+']).unwrap_or(raw);
+        if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) {
+            ValueError::IntegerOutOfRange {
+                text: raw.to_string(),
+                min,
+                max,
+            }
         } else if raw.parse::<f64>().is_ok() {
-            format!("`{raw}` is a real number, but this entry takes an integer")
+            ValueError::RealForInteger(raw.to_string())
         } else {
-            format!("`{raw}` is not an integer")
+            ValueError::NotInteger(raw.to_string())
         }
     })
 }
@@ -27,8 +33,8 @@ fn parse_integer<T: FromStr>(raw: &str) -> Result<T, String> {
 macro_rules! integer_value {
     ($($t:ty),*) => {$(
         impl ConfigValue for $t {
-            fn parse_value(raw: &str) -> Result<Self, String> {
-                parse_integer(raw)
+            fn parse_value(raw: &str) -> Result<Self, ValueError> {
+                parse_integer(raw, <$t>::MIN as i64, <$t>::MAX as u64)
             }
             fn render(&self) -> String {
                 self.to_string()
@@ -39,10 +45,10 @@ macro_rules! integer_value {
 integer_value!(usize, u64, i64);
 
 impl ConfigValue for f64 {
-    fn parse_value(raw: &str) -> Result<Self, String> {
+    fn parse_value(raw: &str) -> Result<Self, ValueError> {
         match raw.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
-            _ => Err(format!("`{raw}` is not a finite real number")),
+            _ => Err(ValueError::NotFiniteReal(raw.to_string())),
         }
     }
     fn render(&self) -> String {
@@ -53,8 +59,8 @@ impl ConfigValue for f64 {
 macro_rules! named_value {
     ($($t:ty),*) => {$(
         impl ConfigValue for $t {
-            fn parse_value(raw: &str) -> Result<Self, String> {
-                raw.parse()
+            fn parse_value(raw: &str) -> Result<Self, ValueError> {
+                raw.parse().map_err(ValueError::UnknownChoice)
             }
             fn render(&self) -> String {
                 self.to_string()
@@ -114,11 +120,22 @@ mod tests {
 
     #[test]
     fn a_real_number_for_an_integer_says_so() {
-        let err = usize::parse_value("2.5").unwrap_err();
-        assert!(err.contains("real number"), "{err}");
-        assert!(usize::parse_value("-3")
-            .unwrap_err()
-            .contains("not an integer"));
+        assert_eq!(
+            usize::parse_value("2.5"),
+            Err(ValueError::RealForInteger("2.5".into()))
+        );
+        assert!(matches!(
+            usize::parse_value("-3"),
+            Err(ValueError::IntegerOutOfRange { min: 0, .. })
+        ));
+        assert!(matches!(
+            u64::parse_value("99999999999999999999999999999999999999999"),
+            Err(ValueError::IntegerOutOfRange { .. })
+        ));
+        assert_eq!(
+            usize::parse_value("x"),
+            Err(ValueError::NotInteger("x".into()))
+        );
         assert_eq!(i64::parse_value("-3"), Ok(-3));
         assert_eq!(usize::parse_value("42"), Ok(42));
     }
@@ -140,5 +157,9 @@ mod tests {
             .parse::<CameraKind>()
             .unwrap_err()
             .contains("projection, raycast"));
+        assert!(matches!(
+            CameraKind::parse_value("x"),
+            Err(ValueError::UnknownChoice(_))
+        ));
     }
 }

@@ -20,7 +20,9 @@ pub use cells::{run_cells, shell_quote, Cell, CellError, CellResult};
 pub use compare::{
     compare_cells, compare_table, run_compare, CompareError, CompareReport, CompareRequest,
 };
-pub use config::{Config, ConfigError, DEFAULT_CONFIG_NAME, ENTRY_NAMES};
+pub use config::{
+    Config, ConfigError, ConfigErrorKind, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES,
+};
 pub use config_values::{CameraKind, SimKind};
 pub use events::{Event, EventError};
 pub use memory::{peak_rss_kb, resident_kb};

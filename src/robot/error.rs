@@ -1,13 +1,177 @@
-//! Errors of the robot model and the simulators.
+//! Errors of the robot model and the simulators, as data: kinds with the names and numbers
+//! of the elements at fault.
 
-/// A URDF that cannot be the OSCAR-6: the message names the element at fault.
+/// A URDF that cannot be the OSCAR-6: the file and what is wrong, naming the element.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{file}: {reason}")]
+#[error("{file}: {kind}")]
 pub struct UrdfError {
     /// The URDF file as the user named it.
     pub file: String,
-    /// What is wrong, naming the link or joint.
-    pub reason: String,
+    /// What is wrong.
+    pub kind: UrdfErrorKind,
+}
+
+/// What is wrong with a URDF, with the names and numbers of the elements at fault.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum UrdfErrorKind {
+    /// The file cannot be read.
+    #[error("cannot read: {reason}")]
+    Unreadable {
+        /// The operating system's reason.
+        reason: String,
+    },
+    /// Not XML, or not a URDF urdf-rs can read.
+    #[error("not a valid URDF: {reason}")]
+    NotUrdf {
+        /// The reader's reason.
+        reason: String,
+    },
+    /// A joint names a link that does not exist.
+    #[error("joint `{joint}` names link `{link}`, which does not exist")]
+    MissingLink {
+        /// The joint.
+        joint: String,
+        /// The link it names.
+        link: String,
+    },
+    /// Every link is some joint's child.
+    #[error("no root link: every link is some joint's child")]
+    NoRoot,
+    /// A second link without a parent joint.
+    #[error("link `{link}` is not connected to `{root}`: a joint is missing")]
+    NotConnected {
+        /// The loose link.
+        link: String,
+        /// The root link.
+        root: String,
+    },
+    /// The joints form a loop.
+    #[error("the joints after link `{link}` form a loop")]
+    Loop {
+        /// Where the loop was found.
+        link: String,
+    },
+    /// A link with more than one child joint.
+    #[error("link `{link}` has {} child joints ({}): the arm must be a serial chain", .joints.len(), .joints.join(", "))]
+    Branch {
+        /// The link.
+        link: String,
+        /// Its child joints.
+        joints: Vec<String>,
+    },
+    /// One of the first six joints is not revolute.
+    #[error("joint `{joint}` has type {found}; joint {number} of the OSCAR-6 must be revolute")]
+    NotRevolute {
+        /// The joint.
+        joint: String,
+        /// Its type.
+        found: String,
+        /// Its 1-based place in the chain.
+        number: usize,
+    },
+    /// Fewer than six revolute joints.
+    #[error("the chain has {count} revolute joints; the OSCAR-6 needs 6 (missing joint {})", .count + 1)]
+    TooFewJoints {
+        /// Revolute joints found.
+        count: usize,
+    },
+    /// No joint after the sixth.
+    #[error("missing the fixed camera joint after joint `{after}`")]
+    NoCameraJoint {
+        /// The sixth joint.
+        after: String,
+    },
+    /// The joint after the sixth is not fixed.
+    #[error("joint `{joint}` has type {found}; the joint after the six revolute joints must be a fixed camera joint")]
+    CameraJointNotFixed {
+        /// The joint.
+        joint: String,
+        /// Its type.
+        found: String,
+    },
+    /// The fixed joint's child is not a camera link.
+    #[error("link `{link}` after the fixed joint `{joint}` is not a camera link (its name must contain `camera`)")]
+    NotCameraLink {
+        /// The link.
+        link: String,
+        /// The fixed joint.
+        joint: String,
+    },
+    /// A joint after the camera link.
+    #[error("unexpected joint `{joint}` after the camera link")]
+    AfterCamera {
+        /// The joint.
+        joint: String,
+    },
+    /// A number that is NaN or infinite.
+    #[error("{element} has a non-finite number ({value})")]
+    NonFinite {
+        /// The element (`joint `j` origin`, `link `l` inertial`, …).
+        element: String,
+        /// The number.
+        value: f64,
+    },
+    /// A joint axis of length zero.
+    #[error("joint `{joint}` has a zero axis")]
+    ZeroAxis {
+        /// The joint.
+        joint: String,
+    },
+    /// A joint without finite limits.
+    #[error("joint `{joint}` needs finite lower and upper limits")]
+    NoLimits {
+        /// The joint.
+        joint: String,
+    },
+    /// A lower limit not below the upper one.
+    #[error("joint `{joint}` has lower limit {lower} not below its upper limit {upper}")]
+    LimitsInverted {
+        /// The joint.
+        joint: String,
+        /// Lower limit (rad).
+        lower: f64,
+        /// Upper limit (rad).
+        upper: f64,
+    },
+    /// An effort or velocity limit that is not positive.
+    #[error("joint `{joint}` needs a positive effort and velocity limit (has {effort} N·m, {velocity} rad/s)")]
+    NoEffort {
+        /// The joint.
+        joint: String,
+        /// Effort limit (N·m).
+        effort: f64,
+        /// Velocity limit (rad/s).
+        velocity: f64,
+    },
+    /// A link mass that is not positive.
+    #[error("link `{link}` needs a positive mass, has {mass}")]
+    NoMass {
+        /// The link.
+        link: String,
+        /// Its mass (kg).
+        mass: f64,
+    },
+    /// An inertia tensor with an eigenvalue ≤ 0.
+    #[error("link `{link}` has an inertia tensor that is not positive definite")]
+    BadInertia {
+        /// The link.
+        link: String,
+    },
+    /// A mesh collision shape.
+    #[error("link `{link}` has a mesh collision (`{filename}`): only boxes, cylinders, capsules and spheres are supported")]
+    MeshCollision {
+        /// The link.
+        link: String,
+        /// The mesh file.
+        filename: String,
+    },
+    /// A collision shape with a size that is not positive.
+    #[error("link `{link}` has a collision shape with a size that is not positive")]
+    BadShape {
+        /// The link.
+        link: String,
+    },
 }
 
 /// A request the robot cannot carry out.

@@ -13,7 +13,7 @@ mod simulator;
 mod urdf;
 
 pub use dynamic::{DynamicSettings, DynamicSim, SimCounters};
-pub use error::{RobotError, UrdfError};
+pub use error::{RobotError, UrdfError, UrdfErrorKind};
 pub use joint::{LinkBody, RevoluteJoint, Shape};
 pub use kinematic::KinematicSim;
 pub use model::{ArmModel, Controlled, Joints};

@@ -4,7 +4,7 @@
 
 use super::joint::{LinkBody, RevoluteJoint, Shape};
 use super::model::ArmModel;
-use super::UrdfError;
+use super::{UrdfError, UrdfErrorKind};
 use nalgebra::{Isometry3, Matrix3, Translation3, Unit, UnitQuaternion, Vector3};
 use std::path::Path;
 
@@ -18,32 +18,38 @@ pub fn load_urdf(path: &Path) -> Result<ArmModel, UrdfError> {
     let name = path.display().to_string();
     let text = std::fs::read_to_string(path).map_err(|e| UrdfError {
         file: name.clone(),
-        reason: format!("cannot read: {e}"),
+        kind: UrdfErrorKind::Unreadable {
+            reason: e.to_string(),
+        },
     })?;
     parse_urdf(&text, &name)
 }
 
 /// Parses and checks URDF text; `file` names it in errors.
 pub fn parse_urdf(text: &str, file: &str) -> Result<ArmModel, UrdfError> {
-    let fail = |reason: String| UrdfError {
+    let fail = |kind| UrdfError {
         file: file.to_string(),
-        reason,
+        kind,
     };
-    let robot =
-        urdf_rs::read_from_string(text).map_err(|e| fail(format!("not a valid URDF: {e}")))?;
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let robot = urdf_rs::read_from_string(text).map_err(|e| {
+        fail(UrdfErrorKind::NotUrdf {
+            reason: e.to_string(),
+        })
+    })?;
     let chain = serial_chain(&robot).map_err(fail)?;
     build_model(&robot, &chain).map_err(fail)
 }
 
 /// The joints from the root link to the chain's end, in order.
-fn serial_chain(robot: &urdf_rs::Robot) -> Result<Vec<&urdf_rs::Joint>, String> {
+fn serial_chain(robot: &urdf_rs::Robot) -> Result<Vec<&urdf_rs::Joint>, UrdfErrorKind> {
     for joint in &robot.joints {
         for link in [&joint.parent.link, &joint.child.link] {
             if !robot.links.iter().any(|l| &l.name == link) {
-                return Err(format!(
-                    "joint `{}` names link `{link}`, which does not exist",
-                    joint.name
-                ));
+                return Err(UrdfErrorKind::MissingLink {
+                    joint: joint.name.clone(),
+                    link: link.clone(),
+                });
             }
         }
     }
@@ -52,13 +58,13 @@ fn serial_chain(robot: &urdf_rs::Robot) -> Result<Vec<&urdf_rs::Joint>, String> 
         .iter()
         .filter(|l| !robot.joints.iter().any(|j| j.child.link == l.name));
     let Some(root) = roots.next() else {
-        return Err("no root link: every link is some joint's child".to_string());
+        return Err(UrdfErrorKind::NoRoot);
     };
     if let Some(loose) = roots.next() {
-        return Err(format!(
-            "link `{}` is not connected to `{}`: a joint is missing",
-            loose.name, root.name
-        ));
+        return Err(UrdfErrorKind::NotConnected {
+            link: loose.name.clone(),
+            root: root.name.clone(),
+        });
     }
     let mut chain = Vec::new();
     let mut link = root.name.as_str();
@@ -72,65 +78,69 @@ fn serial_chain(robot: &urdf_rs::Robot) -> Result<Vec<&urdf_rs::Joint>, String> 
             [] => return Ok(chain),
             [joint] => {
                 if chain.len() > robot.joints.len() {
-                    return Err(format!("the joints after link `{link}` form a loop"));
+                    return Err(UrdfErrorKind::Loop {
+                        link: link.to_string(),
+                    });
                 }
                 chain.push(*joint);
                 link = joint.child.link.as_str();
             }
             many => {
-                let names: Vec<_> = many.iter().map(|j| j.name.as_str()).collect();
-                return Err(format!(
-                    "link `{link}` has {} child joints ({}): the arm must be a serial chain",
-                    many.len(),
-                    names.join(", ")
-                ));
+                return Err(UrdfErrorKind::Branch {
+                    link: link.to_string(),
+                    joints: many.iter().map(|j| j.name.clone()).collect(),
+                });
             }
         }
     }
 }
 
-fn build_model(robot: &urdf_rs::Robot, chain: &[&urdf_rs::Joint]) -> Result<ArmModel, String> {
+fn build_model(
+    robot: &urdf_rs::Robot,
+    chain: &[&urdf_rs::Joint],
+) -> Result<ArmModel, UrdfErrorKind> {
     let revolute_count = chain
         .iter()
         .take_while(|j| j.joint_type == urdf_rs::JointType::Revolute)
         .count();
     if revolute_count < 6 {
         return Err(match chain.get(revolute_count) {
-            Some(j) if revolute_count < chain.len() - 1 || j.joint_type != urdf_rs::JointType::Fixed => format!(
-                "joint `{}` has type {:?}; joint {} of the OSCAR-6 must be revolute",
-                j.name,
-                j.joint_type,
-                revolute_count + 1
-            ),
-            _ => format!(
-                "the chain has {revolute_count} revolute joints; the OSCAR-6 needs 6 (missing joint {})",
-                revolute_count + 1
-            ),
+            Some(j)
+                if revolute_count < chain.len() - 1
+                    || j.joint_type != urdf_rs::JointType::Fixed =>
+            {
+                UrdfErrorKind::NotRevolute {
+                    joint: j.name.clone(),
+                    found: format!("{:?}", j.joint_type),
+                    number: revolute_count + 1,
+                }
+            }
+            _ => UrdfErrorKind::TooFewJoints {
+                count: revolute_count,
+            },
         });
     }
     let Some(camera_joint) = chain.get(6) else {
-        return Err(format!(
-            "missing the fixed camera joint after joint `{}`",
-            chain[5].name
-        ));
+        return Err(UrdfErrorKind::NoCameraJoint {
+            after: chain[5].name.clone(),
+        });
     };
     if camera_joint.joint_type != urdf_rs::JointType::Fixed {
-        return Err(format!(
-            "joint `{}` has type {:?}; the joint after the six revolute joints must be a fixed camera joint",
-            camera_joint.name, camera_joint.joint_type
-        ));
+        return Err(UrdfErrorKind::CameraJointNotFixed {
+            joint: camera_joint.name.clone(),
+            found: format!("{:?}", camera_joint.joint_type),
+        });
     }
     if !camera_joint.child.link.contains("camera") {
-        return Err(format!(
-            "link `{}` after the fixed joint `{}` is not a camera link (its name must contain `camera`)",
-            camera_joint.child.link, camera_joint.name
-        ));
+        return Err(UrdfErrorKind::NotCameraLink {
+            link: camera_joint.child.link.clone(),
+            joint: camera_joint.name.clone(),
+        });
     }
     if let Some(extra) = chain.get(7) {
-        return Err(format!(
-            "unexpected joint `{}` after the camera link",
-            extra.name
-        ));
+        return Err(UrdfErrorKind::AfterCamera {
+            joint: extra.name.clone(),
+        });
     }
     let joints: Vec<RevoluteJoint> = chain[..6]
         .iter()
@@ -161,14 +171,17 @@ fn build_model(robot: &urdf_rs::Robot, chain: &[&urdf_rs::Joint]) -> Result<ArmM
     ))
 }
 
-fn finite(values: &[f64], what: &str) -> Result<(), String> {
+fn finite(values: &[f64], what: &str) -> Result<(), UrdfErrorKind> {
     match values.iter().find(|v| !v.is_finite()) {
-        Some(v) => Err(format!("{what} has a non-finite number ({v})")),
+        Some(&value) => Err(UrdfErrorKind::NonFinite {
+            element: what.to_string(),
+            value,
+        }),
         None => Ok(()),
     }
 }
 
-fn pose(origin: &urdf_rs::Pose, what: &str) -> Result<Isometry3<f64>, String> {
+fn pose(origin: &urdf_rs::Pose, what: &str) -> Result<Isometry3<f64>, UrdfErrorKind> {
     let [x, y, z] = origin.xyz.0;
     let [roll, pitch, yaw] = origin.rpy.0;
     finite(&[x, y, z, roll, pitch, yaw], what)?;
@@ -178,33 +191,37 @@ fn pose(origin: &urdf_rs::Pose, what: &str) -> Result<Isometry3<f64>, String> {
     ))
 }
 
-fn revolute(joint: &urdf_rs::Joint) -> Result<RevoluteJoint, String> {
+fn revolute(joint: &urdf_rs::Joint) -> Result<RevoluteJoint, UrdfErrorKind> {
     let name = &joint.name;
     let origin = pose(&joint.origin, &format!("joint `{name}` origin"))?;
     let axis = Vector3::from(joint.axis.xyz.0);
     finite(axis.as_slice(), &format!("joint `{name}` axis"))?;
-    let axis =
-        Unit::try_new(axis, 1e-9).ok_or_else(|| format!("joint `{name}` has a zero axis"))?;
+    let axis = Unit::try_new(axis, 1e-9).ok_or_else(|| UrdfErrorKind::ZeroAxis {
+        joint: name.clone(),
+    })?;
     let limit = &joint.limit;
     if !(limit.lower.is_finite() && limit.upper.is_finite()) {
-        return Err(format!(
-            "joint `{name}` needs finite lower and upper limits"
-        ));
+        return Err(UrdfErrorKind::NoLimits {
+            joint: name.clone(),
+        });
     }
     if limit.lower >= limit.upper {
-        return Err(format!(
-            "joint `{name}` has lower limit {} not below its upper limit {}",
-            limit.lower, limit.upper
-        ));
+        return Err(UrdfErrorKind::LimitsInverted {
+            joint: name.clone(),
+            lower: limit.lower,
+            upper: limit.upper,
+        });
     }
     finite(
         &[limit.effort, limit.velocity],
         &format!("joint `{name}` limit"),
     )?;
     if limit.effort <= 0.0 || limit.velocity <= 0.0 {
-        return Err(format!(
-            "joint `{name}` needs a positive effort and velocity limit"
-        ));
+        return Err(UrdfErrorKind::NoEffort {
+            joint: name.clone(),
+            effort: limit.effort,
+            velocity: limit.velocity,
+        });
     }
     Ok(RevoluteJoint {
         name: name.clone(),
@@ -217,7 +234,7 @@ fn revolute(joint: &urdf_rs::Joint) -> Result<RevoluteJoint, String> {
     })
 }
 
-fn link_body(link: &urdf_rs::Link) -> Result<LinkBody, String> {
+fn link_body(link: &urdf_rs::Link) -> Result<LinkBody, UrdfErrorKind> {
     let name = &link.name;
     let inertial = &link.inertial;
     let i = &inertial.inertia;
@@ -227,15 +244,16 @@ fn link_body(link: &urdf_rs::Link) -> Result<LinkBody, String> {
         &format!("link `{name}` inertial"),
     )?;
     if mass <= 0.0 {
-        return Err(format!("link `{name}` needs a positive mass, has {mass}"));
+        return Err(UrdfErrorKind::NoMass {
+            link: name.clone(),
+            mass,
+        });
     }
     let inertia = Matrix3::new(
         i.ixx, i.ixy, i.ixz, i.ixy, i.iyy, i.iyz, i.ixz, i.iyz, i.izz,
     );
     if inertia.symmetric_eigenvalues().iter().any(|&e| e <= 0.0) {
-        return Err(format!(
-            "link `{name}` has an inertia tensor that is not positive definite"
-        ));
+        return Err(UrdfErrorKind::BadInertia { link: name.clone() });
     }
     let collisions = link
         .collision
@@ -246,7 +264,7 @@ fn link_body(link: &urdf_rs::Link) -> Result<LinkBody, String> {
                 shape(&c.geometry, name)?,
             ))
         })
-        .collect::<Result<_, String>>()?;
+        .collect::<Result<_, UrdfErrorKind>>()?;
     Ok(LinkBody {
         name: name.clone(),
         mass,
@@ -256,7 +274,7 @@ fn link_body(link: &urdf_rs::Link) -> Result<LinkBody, String> {
     })
 }
 
-fn shape(geometry: &urdf_rs::Geometry, link: &str) -> Result<Shape, String> {
+fn shape(geometry: &urdf_rs::Geometry, link: &str) -> Result<Shape, UrdfErrorKind> {
     let positive = |values: &[f64]| values.iter().all(|v| v.is_finite() && *v > 0.0);
     let shape = match *geometry {
         urdf_rs::Geometry::Box { size } => Shape::Cuboid(Vector3::from(size.0)),
@@ -264,7 +282,10 @@ fn shape(geometry: &urdf_rs::Geometry, link: &str) -> Result<Shape, String> {
         urdf_rs::Geometry::Capsule { radius, length } => Shape::Capsule { radius, length },
         urdf_rs::Geometry::Sphere { radius } => Shape::Sphere { radius },
         urdf_rs::Geometry::Mesh { ref filename, .. } => {
-            return Err(format!("link `{link}` has a mesh collision (`{filename}`): only boxes, cylinders, capsules and spheres are supported"))
+            return Err(UrdfErrorKind::MeshCollision {
+                link: link.to_string(),
+                filename: filename.clone(),
+            })
         }
     };
     let dims: Vec<f64> = match shape {
@@ -277,8 +298,8 @@ fn shape(geometry: &urdf_rs::Geometry, link: &str) -> Result<Shape, String> {
     if positive(&dims) {
         Ok(shape)
     } else {
-        Err(format!(
-            "link `{link}` has a collision shape with a size that is not positive"
-        ))
+        Err(UrdfErrorKind::BadShape {
+            link: link.to_string(),
+        })
     }
 }

@@ -1,5 +1,6 @@
 //! Every config entry: its name, type and meaning, in one list.
 
+use super::ConfigErrorKind;
 use crate::experiment::config_values::{CameraKind, ConfigValue, SimKind};
 use crate::learn::{MergeStrategy, Method};
 

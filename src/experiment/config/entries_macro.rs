@@ -21,27 +21,30 @@ macro_rules! config_entries {
 
         impl Entries {
             /// Stores `raw` under `name`; the error says why it can't be.
-            pub(super) fn put(&mut self, name: &str, raw: &str, line: usize) -> Result<(), String> {
+            pub(super) fn put(&mut self, name: &str, raw: &str, line: usize) -> Result<(), ConfigErrorKind> {
                 match name {
                     $(stringify!($name) => {
-                        if let Some((_, first)) = self.$name {
-                            return Err(format!("`{name}` is given twice (first on line {first})"));
+                        const NAME: &str = stringify!($name);
+                        if let Some((_, first_line)) = self.$name {
+                            return Err(ConfigErrorKind::Repeated { name: NAME, first_line });
                         }
                         let value = <$ty as ConfigValue>::parse_value(raw)
-                            .map_err(|e| format!("{name}: {e}"))?;
+                            .map_err(|problem| ConfigErrorKind::BadValue { name: NAME, problem })?;
                         self.$name = Some((value, line));
                         Ok(())
                     })*
-                    _ => Err(format!("unknown entry `{name}`")),
+                    _ => Err(ConfigErrorKind::UnknownEntry { name: name.to_string() }),
                 }
             }
 
+            /// The entries not given yet.
             pub(super) fn missing(&self) -> Vec<&'static str> {
                 let mut missing = Vec::new();
                 $( if self.$name.is_none() { missing.push(stringify!($name)); } )*
                 missing
             }
 
+            /// The line `name` was given on.
             pub(super) fn line_of(&self, name: &str) -> Option<usize> {
                 match name {
                     $(stringify!($name) => self.$name.as_ref().map(|(_, l)| *l),)*
@@ -56,16 +59,18 @@ macro_rules! config_entries {
         }
 
         impl Config {
-            /// Sets one entry from its text, as a config line or a command-line override would.
-            pub fn set(&mut self, name: &str, raw: &str) -> Result<(), String> {
+            /// Sets one entry from its text without checking it against the other entries:
+            /// set every value first, then [`check`](Config::check) the whole config once.
+            pub fn assign(&mut self, name: &str, raw: &str) -> Result<(), ConfigErrorKind> {
                 match name {
                     $(stringify!($name) => {
-                        self.$name = <$ty as ConfigValue>::parse_value(raw)
-                            .map_err(|e| format!("{name}: {e}"))?;
+                        self.$name = <$ty as ConfigValue>::parse_value(raw).map_err(|problem| {
+                            ConfigErrorKind::BadValue { name: stringify!($name), problem }
+                        })?;
+                        Ok(())
                     })*
-                    _ => return Err(format!("unknown entry `{name}`")),
+                    _ => Err(ConfigErrorKind::UnknownEntry { name: name.to_string() }),
                 }
-                self.validate().map_err(|(_, reason)| reason)
             }
 
             /// Every entry with its value as a config file would write it.

@@ -1,7 +1,8 @@
 //! The config file (the study's appendix A.2 format): `name value` lines, `#` comments and
 //! blank lines, in any order. Every entry must be given exactly once; an unknown name, a
 //! name given twice, a missing name, a value of the wrong kind (a real number for an
-//! integer) or a value out of range stops with `file:line: reason`.
+//! integer), a value out of its sane range or against another entry, or one that would
+//! need more memory than the machine has stops with `file:line: reason`.
 
 use std::fmt;
 use std::path::Path;
@@ -11,25 +12,31 @@ const DEFAULT_CONFIG: &str = include_str!("../../../configs/lin5.conf");
 /// The name the built-in default config is reported under.
 pub const DEFAULT_CONFIG_NAME: &str = "configs/lin5.conf";
 
-/// A config error at a line of a config file.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{file}:{line}: {reason}")]
-pub struct ConfigError {
-    /// The config file as the user named it.
-    pub file: String,
-    /// The 1-based line the error is on (for a missing entry: the last line).
-    pub line: usize,
-    /// What is wrong.
-    pub reason: String,
-}
-
 #[macro_use]
 mod entries_macro;
 mod entries;
+mod error;
+mod memory;
 mod validate;
 
 use entries::Entries;
 pub use entries::{Config, ENTRY_NAMES};
+pub use error::{ConfigError, ConfigErrorKind, ValueError};
+
+impl ConfigErrorKind {
+    /// The entry the error is about, if it is about one.
+    pub fn entry(&self) -> Option<&str> {
+        match self {
+            ConfigErrorKind::Repeated { name, .. }
+            | ConfigErrorKind::BadValue { name, .. }
+            | ConfigErrorKind::OutOfRange { name, .. }
+            | ConfigErrorKind::TooMuchMemory { name, .. } => Some(name),
+            ConfigErrorKind::UnknownEntry { name }
+            | ConfigErrorKind::EventAfterLastTrial { name, .. } => Some(name),
+            _ => None,
+        }
+    }
+}
 
 impl Config {
     /// Reads and checks a config file.
@@ -37,19 +44,23 @@ impl Config {
         let name = path.display().to_string();
         let text = std::fs::read_to_string(path).map_err(|e| ConfigError {
             file: name.clone(),
-            line: 0,
-            reason: format!("cannot read: {e}"),
+            line: None,
+            kind: ConfigErrorKind::Unreadable {
+                reason: e.to_string(),
+            },
         })?;
         Config::parse(&text, &name)
     }
 
-    /// Parses config text; `file` names it in errors.
+    /// Parses config text (a leading UTF-8 byte-order mark is skipped) and checks the
+    /// whole config; `file` names it in errors.
     pub fn parse(text: &str, file: &str) -> Result<Config, ConfigError> {
-        let error = |line, reason| ConfigError {
+        let error = |line, kind| ConfigError {
             file: file.to_string(),
-            line,
-            reason,
+            line: Some(line),
+            kind,
         };
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let mut entries = Entries::default();
         let mut last_line = 0;
         for (index, raw_line) in text.lines().enumerate() {
@@ -61,31 +72,42 @@ impl Config {
             }
             let mut words = content.split_whitespace();
             let (Some(name), Some(value), None) = (words.next(), words.next(), words.next()) else {
-                return Err(error(
-                    line,
-                    format!("expected `name value`, found `{content}`"),
-                ));
+                let found = content.to_string();
+                return Err(error(line, ConfigErrorKind::NotNameValue { found }));
             };
             entries
                 .put(name, value, line)
-                .map_err(|reason| error(line, reason))?;
+                .map_err(|kind| error(line, kind))?;
         }
-        let missing = entries.missing();
-        if !missing.is_empty() {
-            let reason = format!("missing entries: {}", missing.join(", "));
-            return Err(error(last_line.max(1), reason));
+        let names = entries.missing();
+        if !names.is_empty() {
+            return Err(error(last_line.max(1), ConfigErrorKind::Missing { names }));
         }
-        let line_of = |name: &str| entries.line_of(name).unwrap_or(0);
-        let lines: Vec<(&str, usize)> = ENTRY_NAMES.iter().map(|n| (*n, line_of(n))).collect();
+        let lines: Vec<(&str, Option<usize>)> = ENTRY_NAMES
+            .iter()
+            .map(|n| (*n, entries.line_of(n)))
+            .collect();
         let config = entries.complete().expect("no entry is missing");
-        config.validate().map_err(|(name, reason)| {
-            let line = lines
-                .iter()
-                .find(|(n, _)| *n == name)
-                .map_or(0, |(_, l)| *l);
-            error(line, reason)
+        config.check().map_err(|kind| {
+            let line = kind
+                .entry()
+                .and_then(|entry| lines.iter().find(|(n, _)| *n == entry))
+                .and_then(|(_, line)| *line);
+            ConfigError {
+                file: file.to_string(),
+                line,
+                kind,
+            }
         })?;
         Ok(config)
+    }
+
+    /// Sets one entry from its text, as a config line would, and checks the whole config.
+    /// To set several entries that depend on each other, [`assign`](Config::assign) each and
+    /// [`check`](Config::check) once.
+    pub fn set(&mut self, name: &str, raw: &str) -> Result<(), ConfigErrorKind> {
+        self.assign(name, raw)?;
+        self.check()
     }
 
     /// The shipped default config (`configs/lin5.conf`).

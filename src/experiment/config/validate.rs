@@ -1,18 +1,115 @@
-//! The checks of config values against each other.
+//! The sane range of every entry and the rules between entries, checked on a whole config
+//! (after every `--set`), so a value is judged against the others' final values.
 
-use super::Config;
+use super::memory::machine_memory;
+use super::{Config, ConfigErrorKind};
+use crate::experiment::config_values::ConfigValue;
+
+/// Most feedback steps a trial may take: a trial learns every pair of its poses, so
+/// N steps give N(N+1)/2 patterns (500,500 at 1000).
+const MAX_FEEDBACK_STEPS: usize = 1000;
+/// Largest magnitude of an input boundary.
+const MAX_BOUNDARY: f64 = 1e6;
+
+/// Checks one rule: `ok`, or entry `name` (holding `value`) breaks `rule`.
+fn rule(ok: bool, name: &'static str, value: &impl ConfigValue, rule: &str) -> Check {
+    if ok {
+        Ok(())
+    } else {
+        Err(ConfigErrorKind::OutOfRange {
+            name,
+            value: value.render(),
+            rule: rule.to_string(),
+        })
+    }
+}
+
+type Check = Result<(), ConfigErrorKind>;
+
+/// `value` in `low..=high`, said as "must be LOW to HIGH UNIT".
+fn within<T: ConfigValue + PartialOrd + std::fmt::Display>(
+    name: &'static str,
+    value: T,
+    low: T,
+    high: T,
+    unit: &str,
+) -> Check {
+    let ok = value >= low && value <= high;
+    rule(ok, name, &value, &format!("must be {low} to {high}{unit}"))
+}
+
+/// `value` ≥ `low`.
+fn at_least(name: &'static str, value: usize, low: usize) -> Check {
+    rule(
+        value >= low,
+        name,
+        &value,
+        &format!("must be at least {low}"),
+    )
+}
+
+/// `value` in `(0, high]`.
+fn positive_up_to(name: &'static str, value: f64, high: f64, unit: &str) -> Check {
+    let ok = value > 0.0 && value <= high;
+    rule(
+        ok,
+        name,
+        &value,
+        &format!("must be above 0 and at most {high}{unit}"),
+    )
+}
 
 impl Config {
-    /// Checks the values against each other; the error names the offending entry.
-    pub(super) fn validate(&self) -> Result<(), (&'static str, String)> {
-        fn check(ok: bool, name: &'static str, why: &str) -> Result<(), (&'static str, String)> {
-            if ok {
-                Ok(())
-            } else {
-                Err((name, format!("{name}: {why}")))
-            }
-        }
-        const HIGH_NAMES: [&str; 8] = [
+    /// Checks every entry's range and the rules between entries; the error names the
+    /// first entry at fault.
+    pub fn check(&self) -> Check {
+        self.check_memory(machine_memory())?;
+        self.check_inputs()?;
+        self.check_control_loop()?;
+        self.check_events()?;
+        self.check_tree()?;
+        self.check_dynamics()?;
+        self.check_sensors()?;
+        self.check_networks()
+    }
+
+    fn check_sensors(&self) -> Check {
+        within(
+            "raycast_noise",
+            self.raycast_noise,
+            0.0,
+            0.3,
+            " (of a pixel's full grey level)",
+        )?;
+        within(
+            "camera_noise_px",
+            self.camera_noise_px,
+            0.0,
+            50.0,
+            " pixels",
+        )?;
+        within(
+            "camera_area_noise",
+            self.camera_area_noise,
+            0.0,
+            0.5,
+            " (a fraction of the area)",
+        )?;
+        within("joint_noise_deg", self.joint_noise_deg, 0.0, 10.0, "°")
+    }
+
+    fn check_inputs(&self) -> Check {
+        const LOW: [&str; 8] = [
+            "boundary_0_low",
+            "boundary_1_low",
+            "boundary_2_low",
+            "boundary_3_low",
+            "boundary_4_low",
+            "boundary_5_low",
+            "boundary_6_low",
+            "boundary_7_low",
+        ];
+        const HIGH: [&str; 8] = [
             "boundary_0_high",
             "boundary_1_high",
             "boundary_2_high",
@@ -22,174 +119,182 @@ impl Config {
             "boundary_6_high",
             "boundary_7_high",
         ];
-        for (i, name) in HIGH_NAMES.into_iter().enumerate() {
+        for i in 0..8 {
             let (low, high) = self.boundary(i);
-            check(
+            within(LOW[i], low, -MAX_BOUNDARY, MAX_BOUNDARY, "")?;
+            within(HIGH[i], high, -MAX_BOUNDARY, MAX_BOUNDARY, "")?;
+            rule(
                 low < high,
-                name,
+                HIGH[i],
+                &high,
                 &format!("must be above boundary_{i}_low ({low})"),
             )?;
         }
-        check(self.trials >= 1, "trials", "must be at least 1")?;
-        check(
-            self.min_target_distance > 0.0,
-            "min_target_distance",
-            "must be positive",
-        )?;
-        check(
-            self.feedback_steps >= 1,
+        Ok(())
+    }
+
+    fn check_control_loop(&self) -> Check {
+        within("trials", self.trials, 1, 1_000_000_000, "")?;
+        positive_up_to("min_target_distance", self.min_target_distance, 10.0, " cm")?;
+        rule(
+            (1..=MAX_FEEDBACK_STEPS).contains(&self.feedback_steps),
             "feedback_steps",
-            "must be at least 1",
+            &self.feedback_steps,
+            &format!(
+                "must be 1 to {MAX_FEEDBACK_STEPS} (a trial learns every pair of its poses: \
+                 {} steps would give {:.1e} patterns a trial)",
+                self.feedback_steps,
+                self.feedback_steps as f64 * (self.feedback_steps as f64 + 1.0) / 2.0
+            ),
         )?;
-        check(
+        rule(
             self.min_feedback_steps <= self.feedback_steps,
             "min_feedback_steps",
+            &self.min_feedback_steps,
             &format!("must not exceed feedback_steps ({})", self.feedback_steps),
         )?;
-        check(
-            (1..=12).contains(&self.tree_depth),
-            "tree_depth",
-            "must be 1 to 12",
-        )?;
-        check(
-            self.nr_of_matrices >= 1,
-            "nr_of_matrices",
-            "must be at least 1",
-        )?;
-        check(
-            self.max_pats_in_mat >= self.nr_of_matrices,
-            "max_pats_in_mat",
-            "must be at least nr_of_matrices",
-        )?;
-        check(self.bin_size >= 1, "bin_size", "must be at least 1")?;
-        check(
-            self.minimal_joint_move >= 0.0,
+        within(
             "minimal_joint_move",
-            "must not be negative",
+            self.minimal_joint_move,
+            0.0,
+            10.0,
+            "°",
         )?;
-        check(self.monitor_ave >= 1, "monitor_ave", "must be at least 1")?;
-        check(
-            self.am_error_iters >= 1,
-            "am_error_iters",
-            "must be at least 1",
-        )?;
-        check(self.depth_info >= 1, "depth_info", "must be at least 1")?;
-        check(self.robot_speed > 0.0, "robot_speed", "must be positive")?;
-        check(self.robot_accel > 0.0, "robot_accel", "must be positive")?;
-        check(
-            self.dt > 0.0 && self.dt <= 0.1,
-            "dt",
-            "must be in (0, 0.1] seconds",
-        )?;
-        check(
-            (1..=100).contains(&self.solver_iterations),
-            "solver_iterations",
-            "must be 1 to 100",
-        )?;
-        check(
-            self.motor_stiffness > 0.0,
-            "motor_stiffness",
-            "must be positive",
-        )?;
-        check(
-            self.motor_damping > 0.0,
-            "motor_damping",
-            "must be positive",
-        )?;
-        check(
-            self.settle_position_tol > 0.0,
-            "settle_position_tol",
-            "must be positive",
-        )?;
-        check(
-            self.settle_speed_tol > 0.0,
-            "settle_speed_tol",
-            "must be positive",
-        )?;
-        check(
-            self.settle_timeout >= self.dt,
-            "settle_timeout",
-            "must be at least one time step (dt)",
-        )?;
-        check(
-            (16..=4096).contains(&self.raycast_resolution),
-            "raycast_resolution",
-            "must be 16 to 4096",
-        )?;
-        check(
-            (0.0..=0.3).contains(&self.raycast_noise),
-            "raycast_noise",
-            "must be 0 to 0.3 (of a pixel's full grey level)",
-        )?;
-        check(
-            (0.0..=50.0).contains(&self.camera_noise_px),
-            "camera_noise_px",
-            "must be 0 to 50 (pixels)",
-        )?;
-        check(
-            (0.0..=0.5).contains(&self.camera_area_noise),
-            "camera_area_noise",
-            "must be 0 to 0.5 (a fraction of the area)",
-        )?;
-        check(
-            (0.0..=10.0).contains(&self.joint_noise_deg),
-            "joint_noise_deg",
-            "must be 0 to 10 (degrees)",
-        )?;
-        check(
-            (0.0..=1000.0).contains(&self.known_pattern_perc),
-            "known_pattern_perc",
-            "must be 0 to 1000",
-        )?;
-        check(
-            self.error_area_shrink > 0.0 && self.error_area_shrink <= 1.0,
-            "error_area_shrink",
-            "must be in (0, 1]",
-        )?;
-        check(
+        positive_up_to("robot_speed", self.robot_speed, 3600.0, " °/s")?;
+        positive_up_to("robot_accel", self.robot_accel, 100_000.0, " °/s²")?;
+        at_least("depth_info", self.depth_info, 1)
+    }
+
+    fn check_events(&self) -> Check {
+        for (name, trial) in [
+            ("rotate_trial", self.rotate_trial),
+            ("elongate_trial", self.elongate_trial),
+        ] {
+            if trial > self.trials {
+                return Err(ConfigErrorKind::EventAfterLastTrial {
+                    name: name.to_string(),
+                    trial,
+                    trials: self.trials,
+                });
+            }
+        }
+        within("rotate_degrees", self.rotate_degrees, -360.0, 360.0, "°")?;
+        rule(
             self.elongate_trial == 0 || (1..=3).contains(&self.elongate_link),
             "elongate_link",
+            &self.elongate_link,
             "must be 1, 2 or 3",
-        )?;
-        check(self.hidden_units >= 1, "hidden_units", "must be at least 1")?;
-        check(self.wrange > 0.0, "wrange", "must be positive")?;
-        check(
-            self.change_drift >= 0.0,
-            "change_drift",
+        )
+    }
+
+    fn check_tree(&self) -> Check {
+        within("tree_depth", self.tree_depth, 1, 12, "")?;
+        rule(
+            self.split_error >= 0.0,
+            "split_error",
+            &self.split_error,
             "must not be negative",
         )?;
-        check(
+        rule(
+            self.merge_error >= 0.0,
+            "merge_error",
+            &self.merge_error,
+            "must not be negative",
+        )?;
+        within(
+            "min_pats_for_split",
+            self.min_pats_for_split,
+            1,
+            1_000_000,
+            "",
+        )?;
+        within("bin_size", self.bin_size, 1, 10_000, "")?;
+        within("monitor_ave", self.monitor_ave, 1, 10_000_000, "")?;
+        rule(
+            self.am_error_tresh > 0.0,
+            "am_error_tresh",
+            &self.am_error_tresh,
+            "must be above 0 (degrees)",
+        )?;
+        within("am_error_iters", self.am_error_iters, 1, 10_000, "")?;
+        within("nr_of_matrices", self.nr_of_matrices, 1, 1000, "")?;
+        rule(
+            self.max_pats_in_mat >= self.nr_of_matrices,
+            "max_pats_in_mat",
+            &self.max_pats_in_mat,
+            &format!("must be at least nr_of_matrices ({})", self.nr_of_matrices),
+        )?;
+        within(
+            "known_pattern_perc",
+            self.known_pattern_perc,
+            0.0,
+            1000.0,
+            "",
+        )?;
+        let shrink = self.error_area_shrink;
+        positive_up_to("error_area_shrink", shrink, 1.0, "")?;
+        rule(
+            self.change_drift >= 0.0,
+            "change_drift",
+            &self.change_drift,
+            "must not be negative",
+        )?;
+        rule(
             self.change_threshold > 0.0,
             "change_threshold",
-            "must be positive",
+            &self.change_threshold,
+            "must be above 0",
         )?;
-        check(
-            self.change_baseline >= 1,
+        within(
             "change_baseline",
-            "must be at least 1",
+            self.change_baseline,
+            1,
+            1_000_000_000,
+            "",
         )?;
-        check(
+        within("change_lag", self.change_lag, 0, 1_000_000, "")?;
+        rule(
             self.change_warmup > self.change_lag,
             "change_warmup",
+            &self.change_warmup,
             &format!("must be above change_lag ({})", self.change_lag),
         )?;
-        check(self.change_grace >= 1, "change_grace", "must be at least 1")?;
-        check(
-            self.ffn_hidden_units >= 1,
-            "ffn_hidden_units",
-            "must be at least 1",
+        at_least("change_grace", self.change_grace, 1)
+    }
+
+    fn check_dynamics(&self) -> Check {
+        rule(
+            self.dt > 0.0 && self.dt <= 0.1,
+            "dt",
+            &self.dt,
+            "must be in (0, 0.1] seconds",
         )?;
-        check(self.ffn_window >= 1, "ffn_window", "must be at least 1")?;
-        check(
-            (2..=12).contains(&self.kohonen_side),
-            "kohonen_side",
-            "must be 2 to 12",
+        within("solver_iterations", self.solver_iterations, 1, 100, "")?;
+        for (name, value) in [
+            ("motor_stiffness", self.motor_stiffness),
+            ("motor_damping", self.motor_damping),
+            ("settle_position_tol", self.settle_position_tol),
+            ("settle_speed_tol", self.settle_speed_tol),
+        ] {
+            rule(value > 0.0, name, &value, "must be above 0")?;
+        }
+        rule(
+            self.settle_timeout >= self.dt,
+            "settle_timeout",
+            &self.settle_timeout,
+            "must be at least one time step (dt)",
         )?;
-        check(
-            self.kohonen_anneal_patterns >= 1,
-            "kohonen_anneal_patterns",
-            "must be at least 1",
-        )?;
-        Ok(())
+        within("raycast_resolution", self.raycast_resolution, 16, 4096, "")
+    }
+
+    fn check_networks(&self) -> Check {
+        positive_up_to("wrange", self.wrange, 10.0, "")?;
+        within("hidden_units", self.hidden_units, 1, 10_000, "")?;
+        within("nnw_train_limit", self.nnw_train_limit, 0, 1_000_000, "")?;
+        within("ffn_hidden_units", self.ffn_hidden_units, 1, 10_000, "")?;
+        within("ffn_window", self.ffn_window, 1, 1_000_000, "")?;
+        within("ffn_cg_iterations", self.ffn_cg_iterations, 0, 10_000, "")?;
+        within("kohonen_side", self.kohonen_side, 2, 12, "")?;
+        at_least("kohonen_anneal_patterns", self.kohonen_anneal_patterns, 1)
     }
 }

@@ -1,12 +1,15 @@
 //! The command line: `eyehand run`, `plot`, `compare`, `sweep`, `check-config` and `fk`.
 //! Flags are parsed here (validation only); each command hands resolved values to the
-//! library and turns the outcome into an exit code: 2 for bad input, 1 for a failed run.
+//! library and turns the outcome into an exit code: 2 for bad input, 1 for a failed run,
+//! 130/143 for a run stopped by SIGINT/SIGTERM. Output goes through [`say`], so a closed
+//! pipe or a full disk behind stdout ends the program with a code, never a panic.
 
 mod run;
 mod study;
 mod tools;
 
 use clap::{Parser, Subcommand};
+use std::io::{self, Write};
 use std::process::ExitCode;
 
 /// A camera-in-hand OSCAR-6 arm that learns its own eye-hand mapping.
@@ -44,6 +47,35 @@ fn failed(e: impl std::fmt::Display) -> Failure {
     (1, e.to_string())
 }
 
+/// Exit code of a program whose reader closed the pipe (as if SIGPIPE had ended it).
+const BROKEN_PIPE_EXIT: u8 = 141;
+
+/// Writes `text` to stdout. A reader that went away ends the program quietly with 141; any
+/// other failure to write (a full disk) is an error that says so.
+fn say(text: &str) -> Result<(), Failure> {
+    let mut out = io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| match e.kind() {
+            io::ErrorKind::BrokenPipe => (BROKEN_PIPE_EXIT, String::new()),
+            _ => failed(format!("writing to stdout: {e}")),
+        })
+}
+
+/// `--seed`: an unsigned 64-bit integer.
+fn seed(text: &str) -> Result<u64, String> {
+    text.parse()
+        .map_err(|_| format!("a seed is an integer from 0 to {}", u64::MAX))
+}
+
+/// `--trials`, `--smooth`: an integer of at least 1.
+fn count_at_least_1(text: &str) -> Result<usize, String> {
+    match text.parse::<usize>() {
+        Ok(n) if n >= 1 => Ok(n),
+        _ => Err(format!("must be an integer from 1 to {}", usize::MAX)),
+    }
+}
+
 /// Carries out a parsed command line.
 pub fn execute(cli: Cli) -> ExitCode {
     let result = match cli.command {
@@ -57,7 +89,9 @@ pub fn execute(cli: Cli) -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err((code, message)) => {
-            eprintln!("eyehand: {message}");
+            if !message.is_empty() {
+                let _ = writeln!(io::stderr(), "eyehand: {message}");
+            }
             ExitCode::from(code)
         }
     }

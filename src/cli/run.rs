@@ -1,8 +1,9 @@
 //! `eyehand run`.
 
-use super::{bad_input, failed, Failure};
+use super::{bad_input, failed, say, Failure};
 use crate::experiment::{
-    self, CameraKind, Config, Event, RunError, RunOptions, SimKind, DEFAULT_CONFIG_NAME,
+    self, CameraKind, Config, Event, RunError, RunOptions, RunResult, SimKind, StopRequest,
+    DEFAULT_CONFIG_NAME,
 };
 use crate::learn::Method;
 use std::io::IsTerminal;
@@ -23,10 +24,10 @@ pub(super) struct RunArgs {
     #[arg(long)]
     camera: Option<CameraKind>,
     /// Trials to run.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::count_at_least_1)]
     trials: Option<usize>,
     /// Seed of every random draw.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::seed)]
     seed: Option<u64>,
     /// Sets any config entry: NAME=VALUE (repeatable; applied before the flags above).
     #[arg(long = "set", value_name = "NAME=VALUE")]
@@ -84,6 +85,7 @@ fn resolve_config(args: &RunArgs) -> Result<(Config, String), Failure> {
 
 pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
     let (config, config_name) = resolve_config(&args)?;
+    let stop = StopRequest::on_signals().map_err(|e| failed(format!("signal handlers: {e}")))?;
     let options = RunOptions {
         config,
         config_name,
@@ -92,14 +94,39 @@ pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
         events: args.events,
         progress: !args.quiet && std::io::stderr().is_terminal(),
         plot: !args.no_plot,
+        stop: stop.clone(),
     };
     let result = experiment::run(&options).map_err(|e| match e {
-        RunError::Urdf(_) | RunError::Event { .. } => bad_input(e),
+        RunError::Urdf(_) | RunError::Preflight(_) | RunError::Event { .. } => bad_input(e),
         _ => failed(e),
     })?;
-    println!("{}", result.folder.display());
+    say(&format!("{}\n", result.folder.display()))?;
     if !args.quiet {
-        print!("{}", result.summary.one_screen());
+        say(&result.summary.one_screen())?;
+    }
+    outcome(&result, &stop)
+}
+
+/// How a finished run exits: 130/143 when a signal stopped it, 1 when every trial failed
+/// (saying why), 0 otherwise.
+fn outcome(result: &RunResult, stop: &StopRequest) -> Result<(), Failure> {
+    let summary = &result.summary;
+    if summary.interrupted {
+        let code = stop.exit_code().unwrap_or(130);
+        return Err((
+            code,
+            format!(
+                "interrupted after trial {}: {} has the trials finished and summary.json says \"interrupted\": true",
+                summary.trials,
+                result.folder.display()
+            ),
+        ));
+    }
+    if summary.trials > 0 && summary.failures == summary.trials {
+        return Err(failed(format!(
+            "all {} trials failed ({}): nothing was learned",
+            summary.trials, result.failures
+        )));
     }
     Ok(())
 }

@@ -1,8 +1,8 @@
 //! `eyehand plot`, `check-config` and `fk`.
 
-use super::{bad_input, failed, Failure};
+use super::{bad_input, failed, say, Failure};
 use crate::experiment::plot::plot_run;
-use crate::experiment::Config;
+use crate::experiment::{preflight, Config, Event};
 use crate::robot::{load_urdf, ArmModel, Controlled};
 use std::path::PathBuf;
 
@@ -11,7 +11,7 @@ pub(super) struct PlotArgs {
     /// The run folder (data/<method>/<id>).
     run_dir: PathBuf,
     /// Trials each point is smoothed over.
-    #[arg(long, default_value_t = 50)]
+    #[arg(long, default_value_t = 50, allow_negative_numbers = true, value_parser = super::count_at_least_1)]
     smooth: usize,
 }
 
@@ -27,7 +27,7 @@ pub(super) struct FkArgs {
     #[arg(
         long,
         value_delimiter = ',',
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         required = true
     )]
     joints: Vec<f64>,
@@ -46,15 +46,18 @@ pub(super) fn plot(args: PlotArgs) -> Result<(), Failure> {
             args.run_dir.display()
         )));
     }
-    let png = plot_run(&args.run_dir, args.smooth.max(1)).map_err(failed)?;
-    println!("{}", png.display());
-    Ok(())
+    let png = plot_run(&args.run_dir, args.smooth).map_err(failed)?;
+    say(&format!("{}\n", png.display()))
 }
 
+/// Checks the file as `run` would: its entries, its events and the shipped arm's reach
+/// after them.
 pub(super) fn check_config(args: CheckConfigArgs) -> Result<(), Failure> {
-    Config::from_file(&args.file).map_err(bad_input)?;
-    println!("{}: ok", args.file.display());
-    Ok(())
+    let config = Config::from_file(&args.file).map_err(bad_input)?;
+    let events = Event::from_config(&config);
+    preflight(&config, &ArmModel::oscar6(), &events)
+        .map_err(|e| bad_input(format!("{}: {e}", args.file.display())))?;
+    say(&format!("{}: ok\n", args.file.display()))
 }
 
 pub(super) fn fk(args: FkArgs) -> Result<(), Failure> {
@@ -65,19 +68,26 @@ pub(super) fn fk(args: FkArgs) -> Result<(), Failure> {
     let [t1, t2, t3] = args.joints[..] else {
         return Err(bad_input("--joints takes three angles: t1,t2,t3"));
     };
+    if let Some(bad) = args.joints.iter().find(|v| !v.is_finite()) {
+        return Err(bad_input(format!("--joints: {bad} is not a finite angle")));
+    }
     let q = model.full_pose(&Controlled::new(t1, t2, t3).map(f64::to_radians));
     let camera = model.camera_position(&q).coords * 100.0;
     let joints_deg: Vec<f64> = q.iter().map(|v| v.to_degrees()).collect();
     if args.json {
         let value = serde_json::json!({ "camera_cm": [camera.x, camera.y, camera.z], "joints_deg": joints_deg });
-        println!("{value}");
-    } else {
-        println!("camera_cm  {:.4} {:.4} {:.4}", camera.x, camera.y, camera.z);
-        let text: Vec<String> = joints_deg.iter().map(|v| format!("{v:.4}")).collect();
-        println!("joints_deg {}", text.join(" "));
-        if let Some(joint) = model.violated_limit(&q) {
-            println!("warning: joint {} is outside its limits", joint + 1);
-        }
+        return say(&format!("{value}\n"));
     }
-    Ok(())
+    let text: Vec<String> = joints_deg.iter().map(|v| format!("{v:.4}")).collect();
+    let mut report = format!(
+        "camera_cm  {:.4} {:.4} {:.4}\njoints_deg {}\n",
+        camera.x,
+        camera.y,
+        camera.z,
+        text.join(" ")
+    );
+    if let Some(joint) = model.violated_limit(&q) {
+        report += &format!("warning: joint {} is outside its limits\n", joint + 1);
+    }
+    say(&report)
 }

@@ -6,9 +6,12 @@ mod compare;
 mod config;
 mod config_values;
 mod events;
+mod failures;
+mod interrupt;
 mod memory;
 mod output;
 pub mod plot;
+mod preflight;
 mod progress;
 mod run;
 mod run_folder;
@@ -25,8 +28,13 @@ pub use config::{
 };
 pub use config_values::{CameraKind, SimKind};
 pub use events::{Event, EventError};
+pub use failures::FailureTally;
+pub use interrupt::StopRequest;
 pub use memory::{peak_rss_kb, resident_kb};
 pub use output::DataFiles;
+pub use preflight::{
+    preflight, reachable_points, PreflightError, MIN_REACHABLE_SHARE, REACH_SAMPLES,
+};
 pub use run::{run, run_learner, RunError, RunOptions, RunResult};
 pub use run_folder::{allocate_run_folder, RunFolderError, RUN_IDS};
 pub use summary::{RunSummary, StepFigures};

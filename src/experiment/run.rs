@@ -1,12 +1,17 @@
 //! A run: the robot from its URDF, a simulator, a camera and a learner put together, the
 //! trial loop driven through every trial and event, and the run folder filled as it goes.
 
+use super::failures::FailureTally;
+use super::interrupt::StopRequest;
 use super::output::DataFiles;
 use super::plot::{plot_run, PlotError};
 use super::progress::RunProgress;
 use super::setup::{build_camera, build_learner, build_simulator, trial_settings};
 use super::summary::{RunSummary, StepFigures};
-use super::{allocate_run_folder, peak_rss_kb, resident_kb, Config, Event, RunFolderError};
+use super::{
+    allocate_run_folder, peak_rss_kb, preflight, resident_kb, Config, Event, PreflightError,
+    RunFolderError,
+};
 use crate::control::TrialLoop;
 use crate::learn::{LearnError, Learner, LearnerStats};
 use crate::robot::{load_urdf, ArmModel, RobotError, UrdfError};
@@ -34,6 +39,9 @@ pub struct RunOptions {
     pub progress: bool,
     /// Draw `plot.png` at the end.
     pub plot: bool,
+    /// Stops the run after its current trial when made (by SIGINT or SIGTERM, see
+    /// [`StopRequest::on_signals`]).
+    pub stop: StopRequest,
 }
 
 impl RunOptions {
@@ -48,6 +56,7 @@ impl RunOptions {
             events: Vec::new(),
             progress: false,
             plot: false,
+            stop: StopRequest::new(),
         }
     }
 }
@@ -59,6 +68,9 @@ pub enum RunError {
     /// The URDF is broken or not an OSCAR-6.
     #[error(transparent)]
     Urdf(#[from] UrdfError),
+    /// The config, an event or the arm fails the checks made before the run starts.
+    #[error(transparent)]
+    Preflight(#[from] PreflightError),
     /// No run folder could be made.
     #[error(transparent)]
     Folder(#[from] RunFolderError),
@@ -91,10 +103,13 @@ pub struct RunResult {
     pub folder: PathBuf,
     /// What `summary.json` says.
     pub summary: RunSummary,
+    /// The failed trials by reason.
+    pub failures: FailureTally,
 }
 
-/// Runs every trial of a run of the config's learner and fills its folder
-/// (`<data>/<method>/<id>/`).
+/// Runs every trial of a run of the config's learner (or those before a stop request) and
+/// fills its folder (`<data>/<method>/<id>/`). The config, events and arm are checked
+/// before the folder is made.
 pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
     let model = load_model(options)?;
     let folder = allocate_run_folder(&options.data_dir, options.config.method.name())?;
@@ -116,12 +131,23 @@ pub fn run_learner(options: &RunOptions, learner: Box<dyn Learner>) -> Result<Ru
     drive(options, model, folder, learner)
 }
 
-/// The robot the run's URDF describes (the shipped OSCAR-6 without one).
+/// The robot the run's URDF describes (the shipped OSCAR-6 without one), once it, the
+/// config and the events pass the checks made before a run starts.
 fn load_model(options: &RunOptions) -> Result<ArmModel, RunError> {
-    Ok(match &options.urdf {
+    let model = match &options.urdf {
         Some(path) => load_urdf(path)?,
         None => ArmModel::oscar6(),
-    })
+    };
+    preflight(&options.config, &model, &run_events(options))?;
+    Ok(model)
+}
+
+/// The config's events and the command line's, in trial order.
+fn run_events(options: &RunOptions) -> Vec<Event> {
+    let mut events = Event::from_config(&options.config);
+    events.extend(options.events.iter().copied());
+    events.sort_by_key(Event::trial);
+    events
 }
 
 /// Drives `learner` through the run's trials and events, filling `folder`.
@@ -134,21 +160,23 @@ fn drive(
     let config = &options.config;
     let sim = build_simulator(config, model);
     let camera = build_camera(config);
-    let mut events = Event::from_config(config);
-    events.extend(options.events.iter().copied());
-    events.sort_by_key(Event::trial);
+    let events = run_events(options);
     write_info_header(&folder, options, &events)?;
 
     let mut trials = TrialLoop::new(sim, camera, trial_settings(config), config.seed);
     let mut files = DataFiles::create(&folder)?;
     let mut figures = StepFigures::new(config.trials, config.feedback_steps);
-    let mut failures = 0;
+    let mut failures = FailureTally::default();
+    let mut finished = 0;
     let mut progress = RunProgress::new(config.trials, options.progress);
     let started = Instant::now();
     let mut model_events = Vec::new();
     learner.start_trial(0);
     trials.prelearn(learner.as_mut())?;
     for trial in 1..=config.trials {
+        if options.stop.signal().is_some() {
+            break;
+        }
         for event in events.iter().filter(|e| e.trial() == trial) {
             event
                 .apply(trials.sim_mut())
@@ -165,7 +193,9 @@ fn drive(
         learner.drain_events(&mut model_events);
         files.record_model_events(trial, &model_events)?;
         model_events.clear();
-        failures += usize::from(outcome.failure.is_some());
+        if let Some(failure) = outcome.failure {
+            failures.count(failure);
+        }
         figures.record(trial, &outcome.distances_mm);
         let stats = learner.stats();
         files.record_trial(trial, &outcome, &stats)?;
@@ -176,6 +206,7 @@ fn drive(
                 progress.println(&tree_line(trial, &stats));
             }
         }
+        finished = trial;
     }
     files.flush()?;
     progress.finish();
@@ -186,27 +217,31 @@ fn drive(
         sim: config.sim.to_string(),
         camera: config.camera.to_string(),
         seed: config.seed,
-        trials: config.trials,
+        trials: finished,
         wall_seconds,
-        trials_per_second: config.trials as f64 / wall_seconds.max(1e-9),
+        trials_per_second: finished as f64 / wall_seconds.max(1e-9),
         peak_rss_kb: peak_rss_kb(),
         nodes: stats.nodes,
         bins: stats.bins,
         patterns: stats.patterns,
-        failures,
+        failures: failures.total(),
         events: events.iter().map(Event::to_string).collect(),
         window: figures.window(),
         mean_distance_mm: figures.means(),
         median_distance_mm: figures.medians(),
         mean_distance_by_step_mm: figures.all_means(),
+        interrupted: finished < config.trials,
     };
     write_info_tail(&folder, &summary, &stats)?;
-    let json = serde_json::to_string_pretty(&summary).map_err(io::Error::other)?;
-    std::fs::write(folder.join("summary.json"), json + "\n")?;
+    summary.write(&folder)?;
     if options.plot {
         plot_run(&folder, PLOT_SMOOTHING)?;
     }
-    Ok(RunResult { folder, summary })
+    Ok(RunResult {
+        folder,
+        summary,
+        failures,
+    })
 }
 
 /// One line on how the tree is built up, for `verbose_output`.
@@ -260,6 +295,9 @@ fn write_info_tail(folder: &Path, summary: &RunSummary, stats: &LearnerStats) ->
         summary.trials_per_second * 3600.0
     )?;
     writeln!(info, "failures {}", summary.failures)?;
+    if summary.interrupted {
+        writeln!(info, "interrupted after trial {}", summary.trials)?;
+    }
     writeln!(info, "peak_rss_kb {}", summary.peak_rss_kb)?;
     writeln!(info, "\n# tree per level: depth nodes bins patterns error")?;
     for (depth, level) in stats.levels.iter().enumerate() {

@@ -2,6 +2,8 @@
 
 use crate::control::MAX_RECORDED_STEPS;
 use serde::{Deserialize, Serialize};
+use std::io;
+use std::path::Path;
 
 /// What `summary.json` holds. Field names are a public interface.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -41,9 +43,25 @@ pub struct RunSummary {
     /// Mean distance (mm) after every feedback step 1..`feedback_steps` over the window,
     /// over the trials that took that step (a trial stops early once within ε).
     pub mean_distance_by_step_mm: Vec<Option<f64>>,
+    /// True when SIGINT or SIGTERM stopped the run early: `trials` is then the trials it
+    /// finished (absent in summaries written before the field existed: false).
+    #[serde(default)]
+    pub interrupted: bool,
 }
 
 impl RunSummary {
+    /// Writes `<folder>/summary.json` under a temporary name and renames it, so the file
+    /// is whole or absent.
+    pub fn write(&self, folder: &Path) -> io::Result<()> {
+        let json = serde_json::to_string_pretty(self).map_err(io::Error::other)?;
+        let partial = folder.join(".summary.partial.json");
+        std::fs::write(&partial, json + "\n")
+            .and_then(|()| std::fs::rename(&partial, folder.join("summary.json")))
+            .inspect_err(|_| {
+                let _ = std::fs::remove_file(&partial);
+            })
+    }
+
     /// A short human-readable report of the run.
     pub fn one_screen(&self) -> String {
         let figure = |v: &Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
@@ -51,6 +69,9 @@ impl RunSummary {
             "{} on the {} simulator ({} camera), seed {}: {} trials in {:.2} s ({:.0} trials/s), {} failed\n",
             self.method, self.sim, self.camera, self.seed, self.trials, self.wall_seconds, self.trials_per_second, self.failures
         );
+        if self.interrupted {
+            text += "interrupted: the trials above are those finished before the signal\n";
+        }
         text += &format!(
             "tree: {} nodes, {} bins, {} patterns; peak memory {} kB\n",
             self.nodes, self.bins, self.patterns, self.peak_rss_kb

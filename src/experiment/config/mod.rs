@@ -21,6 +21,7 @@ mod validate;
 
 use entries::Entries;
 pub use entries::{Config, ENTRY_NAMES};
+pub(crate) use error::shown;
 pub use error::{ConfigError, ConfigErrorKind, ValueError};
 
 impl ConfigErrorKind {

@@ -24,7 +24,8 @@ pub const PANELS: [&str; 10] = [
     "time used",
 ];
 
-/// Draws `<run_dir>/plot.png` from the run's data files, smoothing over `smooth` trials.
+/// Draws `<run_dir>/plot.png` from the run's data files, smoothing over `smooth` trials;
+/// the image is drawn under a temporary name and renamed, so `plot.png` is whole or absent.
 pub fn plot_run(run_dir: &Path, smooth: usize) -> Result<PathBuf, PlotError> {
     let read = |name: &str| {
         let path = run_dir.join(name);
@@ -58,7 +59,13 @@ pub fn plot_run(run_dir: &Path, smooth: usize) -> Result<PathBuf, PlotError> {
         reason,
     };
     register_font().map_err(draw_error)?;
-    draw_panels(&out, &title_of(run_dir, smooth), &lines, &events).map_err(draw_error)?;
+    let drawn = run_dir.join(".plot.partial.png");
+    let result = draw_panels(&drawn, &title_of(run_dir, smooth), &lines, &events)
+        .and_then(|()| std::fs::rename(&drawn, &out).map_err(|e| e.to_string()));
+    if let Err(reason) = result {
+        let _ = std::fs::remove_file(&drawn);
+        return Err(draw_error(reason));
+    }
     Ok(out)
 }
 

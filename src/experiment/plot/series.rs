@@ -14,22 +14,37 @@ pub struct Series {
 }
 
 impl Series {
-    /// Reads a `trial value minutes` file; a missing file is an empty series.
+    /// Reads a `trial value minutes` file; a missing file is an empty series. A last line
+    /// without its newline (a run killed while writing) is left out; any other line that is
+    /// not three numbers is an error naming it.
     pub fn read(path: &Path) -> io::Result<Series> {
         let text = match std::fs::read_to_string(path) {
             Ok(text) => text,
             Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Series::default()),
             Err(e) => return Err(e),
         };
+        let whole = match text.rfind('\n') {
+            Some(end) => &text[..=end],
+            None => "",
+        };
         let mut series = Series::default();
-        for line in text.lines() {
-            let fields: Vec<f64> = line
-                .split_whitespace()
-                .filter_map(|f| f.parse().ok())
-                .collect();
-            if let [trial, value, minutes] = fields[..] {
-                series.points.push((trial, value));
-                series.minutes.push((trial, minutes));
+        for (index, line) in whole.lines().enumerate() {
+            let mut fields = line.split_whitespace().map(str::parse::<f64>);
+            match (fields.next(), fields.next(), fields.next(), fields.next()) {
+                (Some(Ok(trial)), Some(Ok(value)), Some(Ok(minutes)), None) => {
+                    series.points.push((trial, value));
+                    series.minutes.push((trial, minutes));
+                }
+                _ => {
+                    return Err(io::Error::new(
+                        io::ErrorKind::InvalidData,
+                        format!(
+                            "line {}: `{}` is not `trial value minutes`",
+                            index + 1,
+                            crate::experiment::config::shown(line)
+                        ),
+                    ))
+                }
             }
         }
         Ok(series)
@@ -78,6 +93,19 @@ mod tests {
             vec![(0.0, 1.0), (1.0, 2.0), (2.0, 4.0), (3.0, 6.0), (4.0, 7.0)]
         );
         assert_eq!(moving_average(&points, 1), points);
+    }
+
+    #[test]
+    fn a_torn_last_line_is_left_out_and_garbage_is_an_error() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("1step");
+        std::fs::write(&path, "1 2.5 0.1\n2 3.5 0.2\n3 4.").unwrap();
+        let series = Series::read(&path).unwrap();
+        assert_eq!(series.points, vec![(1.0, 2.5), (2.0, 3.5)]);
+        std::fs::write(&path, "1 2.5 0.1\nnot a line\n3 4.5 0.3\n").unwrap();
+        let err = Series::read(&path).unwrap_err();
+        assert_eq!(err.kind(), io::ErrorKind::InvalidData);
+        assert!(err.to_string().starts_with("line 2: `not a line`"), "{err}");
     }
 
     #[test]

@@ -1,0 +1,164 @@
+//! What a run checks before it makes its folder: the whole config, every event against the
+//! run's trials and the robot, and that the arm (as the URDF and each link event leave it)
+//! reaches its reach space with the camera looking down.
+
+use super::{Config, ConfigErrorKind, Event};
+use crate::robot::{ArmModel, ReachSpace, RobotError};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+/// Reach-space points sampled to tell whether an arm can work there.
+pub const REACH_SAMPLES: usize = 1000;
+/// Fewer reachable samples than this share refuse the arm: trials would draw targets and
+/// starts from a sliver of the reach space (or none) and the learner would learn nothing.
+pub const MIN_REACHABLE_SHARE: f64 = 0.25;
+/// The sampling's own seed, apart from the run's, so checking draws nothing from the run.
+const REACH_SEED: u64 = 0x0e7e_4a2d;
+
+/// Why a run cannot start.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum PreflightError {
+    /// The config (with the command line's settings) breaks a rule.
+    #[error(transparent)]
+    Config(#[from] ConfigErrorKind),
+    /// An event the robot cannot undergo (a link left ≤ 1 cm long).
+    #[error("event {event}: {source}")]
+    Event {
+        /// The event.
+        event: Event,
+        /// Why the robot cannot undergo it.
+        source: RobotError,
+    },
+    /// The arm cannot reach (enough of) its reach space.
+    #[error(
+        "{reachable} of {sampled} sampled reach-space points are reachable by this arm with the camera looking down{} (at least {:.0}% are needed)",
+        .after.map_or(String::new(), |e| format!(" after event {e}")),
+        MIN_REACHABLE_SHARE * 100.0
+    )]
+    Unreachable {
+        /// Points reached.
+        reachable: usize,
+        /// Points sampled.
+        sampled: usize,
+        /// The event that left the arm so, if one did.
+        after: Option<Event>,
+    },
+}
+
+/// Reach-space points (of `samples` drawn with a fixed seed) at which `model` puts its
+/// camera with every joint inside its limits, elbow up, looking down.
+pub fn reachable_points(model: &ArmModel, samples: usize) -> usize {
+    let mut rng = ChaCha8Rng::seed_from_u64(REACH_SEED);
+    (0..samples)
+        .filter(|_| {
+            let point = ReachSpace::OSCAR6.sample(&mut rng);
+            model.solve_camera_position(&point).is_ok()
+        })
+        .count()
+}
+
+/// Checks `config`, `events` (sorted by trial) and the arm before a run starts.
+pub fn preflight(
+    config: &Config,
+    model: &ArmModel,
+    events: &[Event],
+) -> Result<(), PreflightError> {
+    config.check()?;
+    if let Some(late) = events.iter().find(|e| e.trial() > config.trials) {
+        return Err(ConfigErrorKind::EventAfterLastTrial {
+            name: format!("event {late}"),
+            trial: late.trial(),
+            trials: config.trials,
+        }
+        .into());
+    }
+    check_reach(model, None)?;
+    let mut changed = model.clone();
+    for event in events {
+        if let Event::Elongate { link, cm, .. } = *event {
+            changed
+                .stretch_link(link, cm * crate::units::M_PER_CM)
+                .map_err(|source| PreflightError::Event {
+                    event: *event,
+                    source,
+                })?;
+            check_reach(&changed, Some(*event))?;
+        }
+    }
+    Ok(())
+}
+
+fn check_reach(model: &ArmModel, after: Option<Event>) -> Result<(), PreflightError> {
+    let reachable = reachable_points(model, REACH_SAMPLES);
+    if (reachable as f64) < MIN_REACHABLE_SHARE * REACH_SAMPLES as f64 {
+        return Err(PreflightError::Unreachable {
+            reachable,
+            sampled: REACH_SAMPLES,
+            after,
+        });
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_oscar6_reaches_every_sampled_point() {
+        assert_eq!(reachable_points(&ArmModel::oscar6(), 200), 200);
+    }
+
+    #[test]
+    fn a_link_stretched_out_of_reach_is_refused_at_start() {
+        let config = Config::default_config();
+        let far = Event::Elongate {
+            trial: 10,
+            link: 1,
+            cm: 1e9,
+        };
+        let err = preflight(&config, &ArmModel::oscar6(), &[far]).unwrap_err();
+        assert_eq!(
+            err,
+            PreflightError::Unreachable {
+                reachable: 0,
+                sampled: REACH_SAMPLES,
+                after: Some(far)
+            }
+        );
+        assert!(err.to_string().starts_with("0 of 1000 sampled"), "{err}");
+        let gone = Event::Elongate {
+            trial: 10,
+            link: 2,
+            cm: -60.0,
+        };
+        let err = preflight(&config, &ArmModel::oscar6(), &[gone]).unwrap_err();
+        assert!(matches!(
+            err,
+            PreflightError::Event {
+                source: RobotError::LinkTooShort { link: 2, .. },
+                ..
+            }
+        ));
+    }
+
+    #[test]
+    fn an_event_after_the_last_trial_is_refused() {
+        let mut config = Config::default_config();
+        config.trials = 1000;
+        let late = Event::Rotate {
+            trial: 5000,
+            degrees: 30.0,
+        };
+        let err = preflight(&config, &ArmModel::oscar6(), &[late]).unwrap_err();
+        assert!(matches!(
+            err,
+            PreflightError::Config(ConfigErrorKind::EventAfterLastTrial {
+                trial: 5000,
+                trials: 1000,
+                ..
+            })
+        ));
+    }
+}

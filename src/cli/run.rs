@@ -65,12 +65,13 @@ pub(super) fn load_config(path: Option<&Path>) -> Result<(Config, String), Failu
 fn resolve_config(args: &RunArgs) -> Result<(Config, String), Failure> {
     let (mut config, name) = load_config(args.config.as_deref())?;
     for set in &args.sets {
+        let shown_set = experiment::shown(set);
         let (entry, value) = set
             .split_once('=')
-            .ok_or_else(|| bad_input(format!("--set {set}: expected NAME=VALUE")))?;
+            .ok_or_else(|| bad_input(format!("--set {shown_set}: expected NAME=VALUE")))?;
         config
             .assign(entry, value)
-            .map_err(|e| bad_input(format!("--set {set}: {e}")))?;
+            .map_err(|e| bad_input(format!("--set {shown_set}: {e}")))?;
     }
     config.method = args.method.unwrap_or(config.method);
     config.sim = args.sim.unwrap_or(config.sim);

@@ -23,6 +23,7 @@ pub use cells::{run_cells, shell_quote, Cell, CellError, CellResult};
 pub use compare::{
     compare_cells, compare_table, run_compare, CompareError, CompareReport, CompareRequest,
 };
+pub(crate) use config::shown;
 pub use config::{
     Config, ConfigError, ConfigErrorKind, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES,
 };

@@ -1,0 +1,153 @@
+//! Runs killed at random (seeded) moments: after SIGKILL every data file holds whole lines
+//! that parse and `summary.json` is absent or valid; after SIGINT or SIGTERM the run ends
+//! its trial, writes `summary.json` with `"interrupted": true` and exits 130 or 143.
+
+use eyehand::experiment::plot::Series;
+use eyehand::experiment::RunSummary;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, ExitStatus, Stdio};
+use std::time::Duration;
+
+const KILLS: usize = 10;
+/// Files of `trial value minutes` lines.
+const SERIES_FILES: [&str; 9] = [
+    "1step", "2step", "3step", "4step", "5step", "nodes", "bins", "patterns", "mem",
+];
+
+/// A long lin5 run into `data` (it never ends on its own within the test).
+fn start_run(data: &Path, plot: bool) -> Child {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_eyehand"));
+    command
+        .args(["run", "--trials", "1000000", "--quiet", "--data"])
+        .arg(data)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(Stdio::null())
+        .stderr(Stdio::null());
+    if !plot {
+        command.arg("--no-plot");
+    }
+    command.spawn().unwrap()
+}
+
+fn signal(child: &Child, name: &str) {
+    let status = Command::new("kill")
+        .args([format!("-{name}"), child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(status.success(), "kill -{name}");
+}
+
+/// The run folder, if the run got as far as making it.
+fn run_folder(data: &Path) -> Option<PathBuf> {
+    let folder = data.join("lin5").join("0");
+    folder.is_dir().then_some(folder)
+}
+
+/// Checks that every data file in `folder` is whole lines that parse; returns the trials
+/// recorded in `nodes`.
+fn check_data_files(folder: &Path) -> usize {
+    for name in SERIES_FILES.iter().chain(&["abs_err", "merges", "changes"]) {
+        let text = std::fs::read_to_string(folder.join(name)).unwrap_or_default();
+        assert!(
+            text.is_empty() || text.ends_with('\n'),
+            "{name} ends in a torn line: `{}`",
+            &text[text.len().saturating_sub(40)..]
+        );
+    }
+    for name in SERIES_FILES {
+        Series::read(&folder.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+    }
+    for line in std::fs::read_to_string(folder.join("abs_err"))
+        .unwrap_or_default()
+        .lines()
+    {
+        let mut fields = line.split(' ');
+        assert!(
+            fields.next().unwrap().parse::<usize>().is_ok(),
+            "abs_err `{line}`"
+        );
+        assert!(
+            fields.all(|f| f == "-" || f.parse::<f64>().is_ok()),
+            "abs_err `{line}`"
+        );
+    }
+    Series::read(&folder.join("nodes")).unwrap().points.len()
+}
+
+/// `summary.json`, if there is one (it must parse).
+fn summary(folder: &Path) -> Option<RunSummary> {
+    let text = std::fs::read_to_string(folder.join("summary.json")).ok()?;
+    Some(serde_json::from_str(&text).expect("summary.json parses"))
+}
+
+fn wait(child: &mut Child) -> ExitStatus {
+    for _ in 0..600 {
+        if let Some(status) = child.try_wait().unwrap() {
+            return status;
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    child.kill().unwrap();
+    panic!("the run did not stop within 30 s of the signal");
+}
+
+#[test]
+fn sigkill_at_random_moments_leaves_whole_lines() {
+    let mut rng = ChaCha8Rng::seed_from_u64(12);
+    let (mut folders, mut with_summary) = (0, 0);
+    for _ in 0..KILLS {
+        let data = tempfile::tempdir().unwrap();
+        let mut child = start_run(data.path(), false);
+        std::thread::sleep(Duration::from_millis(rng.random_range(100..2500)));
+        child.kill().unwrap();
+        child.wait().unwrap();
+        if let Some(folder) = run_folder(data.path()) {
+            folders += 1;
+            check_data_files(&folder);
+            with_summary += usize::from(summary(&folder).is_some());
+        }
+    }
+    println!(
+        "{KILLS} SIGKILLs, {folders} after the run folder was made: every data file whole \
+         lines; {with_summary} summaries (valid)"
+    );
+    assert!(
+        folders >= KILLS / 2,
+        "most kills come after the folder is made"
+    );
+}
+
+#[test]
+fn sigint_and_sigterm_finish_the_trial_and_write_an_interrupted_summary() {
+    let mut rng = ChaCha8Rng::seed_from_u64(21);
+    let mut trials_done = Vec::new();
+    for kill in 0..KILLS {
+        let (name, code) = if kill % 2 == 0 {
+            ("INT", 130)
+        } else {
+            ("TERM", 143)
+        };
+        let data = tempfile::tempdir().unwrap();
+        let mut child = start_run(data.path(), kill % 3 == 0);
+        std::thread::sleep(Duration::from_millis(rng.random_range(300..2500)));
+        signal(&child, name);
+        let status = wait(&mut child);
+        assert_eq!(status.code(), Some(code), "SIG{name}: {status}");
+        let folder = run_folder(data.path()).expect("the run made its folder");
+        let recorded = check_data_files(&folder);
+        let summary = summary(&folder).expect("an interrupted run writes summary.json");
+        assert!(summary.interrupted, "SIG{name}");
+        assert_eq!(
+            summary.trials, recorded,
+            "SIG{name}: summary and nodes agree"
+        );
+        let info = std::fs::read_to_string(folder.join("info")).unwrap();
+        assert!(info.contains(&format!("interrupted after trial {recorded}")));
+        trials_done.push(recorded);
+    }
+    println!(
+        "{KILLS} SIGINT/SIGTERMs: exit 130/143, summaries interrupted after {trials_done:?} trials"
+    );
+}

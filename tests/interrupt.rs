@@ -3,7 +3,7 @@
 //! its trial, writes `summary.json` with `"interrupted": true` and exits 130 or 143.
 
 use eyehand::experiment::plot::Series;
-use eyehand::experiment::RunSummary;
+use eyehand::experiment::{RunSummary, StepFigures};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::path::{Path, PathBuf};

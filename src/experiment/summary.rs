@@ -91,13 +91,19 @@ impl RunSummary {
     }
 }
 
-/// Distances after each of steps 1..5 over the last `window` trials of a run.
+/// Distances after each feedback step over the last trials of a run: the last
+/// `window_for(trials)` trials of a run that ran them all, the last `window_for(n)` of one
+/// stopped after trial n.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StepFigures {
-    window: usize,
-    first_counted: usize,
-    /// Distances after step 1, 2, … of the trials in the window.
-    distances: Vec<Vec<f64>>,
+    /// Trials kept: the window of the whole run.
+    capacity: usize,
+    /// Slots per trial: a distance after each step, NaN for a step not taken.
+    steps: usize,
+    /// The kept trials' slots, trial t in row (t − 1) mod `capacity`.
+    ring: Vec<f64>,
+    /// The number of the last trial recorded (0: none yet).
+    last_trial: usize,
 }
 
 impl StepFigures {
@@ -106,35 +112,51 @@ impl StepFigures {
         (trials / 10).clamp(1, 1000)
     }
 
-    /// Figures over the last window of a run of `trials` of up to `steps` feedback steps.
+    /// Figures for a run of `trials` of up to `steps` feedback steps.
     pub fn new(trials: usize, steps: usize) -> StepFigures {
-        let window = StepFigures::window_for(trials);
+        let capacity = StepFigures::window_for(trials);
+        let steps = steps.max(MAX_RECORDED_STEPS);
         StepFigures {
-            window,
-            first_counted: trials + 1 - window,
-            distances: vec![Vec::new(); steps.max(MAX_RECORDED_STEPS)],
+            capacity,
+            steps,
+            ring: vec![f64::NAN; capacity * steps],
+            last_trial: 0,
         }
     }
 
-    /// Notes a trial's distances if it is inside the window.
+    /// Notes the distances of `trial` (trials are recorded in order, from 1).
     pub fn record(&mut self, trial: usize, distances_mm: &[f64]) {
-        if trial >= self.first_counted {
-            for (bucket, &d) in self.distances.iter_mut().zip(distances_mm) {
-                bucket.push(d);
-            }
+        let row = (trial.max(1) - 1) % self.capacity;
+        let slots = &mut self.ring[row * self.steps..(row + 1) * self.steps];
+        slots.fill(f64::NAN);
+        for (slot, &d) in slots.iter_mut().zip(distances_mm) {
+            *slot = d;
         }
+        self.last_trial = trial;
     }
 
-    /// The window's length in trials.
+    /// The window's length in trials: that of the trials recorded.
     pub fn window(&self) -> usize {
-        self.window
+        StepFigures::window_for(self.last_trial).min(self.capacity)
+    }
+
+    /// The distances after step `step` (0-based) of the window's trials, oldest first.
+    fn after_step(&self, step: usize) -> impl Iterator<Item = f64> + '_ {
+        let first = (self.last_trial + 1).saturating_sub(self.window()).max(1);
+        (first..=self.last_trial)
+            .map(move |t| self.ring[((t - 1) % self.capacity) * self.steps + step])
+            .filter(|d| !d.is_nan())
     }
 
     /// Mean distance after every step (`None` for a step no trial in the window took).
     pub fn all_means(&self) -> Vec<Option<f64>> {
-        self.distances
-            .iter()
-            .map(|d| (!d.is_empty()).then(|| d.iter().sum::<f64>() / d.len() as f64))
+        (0..self.steps)
+            .map(|step| {
+                let (sum, n) = self
+                    .after_step(step)
+                    .fold((0.0, 0usize), |(sum, n), d| (sum + d, n + 1));
+                (n > 0).then(|| sum / n as f64)
+            })
             .collect()
     }
 
@@ -146,7 +168,7 @@ impl StepFigures {
 
     /// Median distance after steps 1..5.
     pub fn medians(&self) -> [Option<f64>; MAX_RECORDED_STEPS] {
-        std::array::from_fn(|i| median(&self.distances[i]))
+        std::array::from_fn(|i| median(&self.after_step(i).collect::<Vec<_>>()))
     }
 }
 
@@ -187,6 +209,20 @@ mod tests {
         assert_eq!(f.means()[2], None);
         assert_eq!(f.all_means().len(), 10);
         assert_eq!(f.all_means()[1], Some(1.0));
+    }
+
+    #[test]
+    fn a_run_stopped_early_counts_the_window_of_its_trials() {
+        let mut f = StepFigures::new(1_000_000, 5);
+        for trial in 1..=3000 {
+            f.record(trial, &[trial as f64]);
+        }
+        assert_eq!(f.window(), 300);
+        assert_eq!(
+            f.means()[0],
+            Some((2701..=3000).sum::<usize>() as f64 / 300.0)
+        );
+        assert_eq!(f.medians()[1], None);
     }
 
     #[test]

@@ -143,6 +143,11 @@ fn sigint_and_sigterm_finish_the_trial_and_write_an_interrupted_summary() {
             summary.trials, recorded,
             "SIG{name}: summary and nodes agree"
         );
+        assert_eq!(summary.window, StepFigures::window_for(recorded));
+        assert!(
+            summary.mean_distance_mm[0].is_some(),
+            "figures over its last trials"
+        );
         let info = std::fs::read_to_string(folder.join("info")).unwrap();
         assert!(info.contains(&format!("interrupted after trial {recorded}")));
         trials_done.push(recorded);

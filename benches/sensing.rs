@@ -2,7 +2,7 @@
 //! camera beside the projection, and what a camera read costs. Prints the markdown tables
 //! of docs/SENSING.md.
 //!
-//! `cargo bench --bench sensing` (kinematic simulator, 20,000 trials per run, seed 1; the
+//! `cargo bench --bench sensing [-- reads]` (`reads`: the read costs alone; kinematic simulator, 20,000 trials per run, seed 1; the
 //! distances are means over the last 1,000 trials).
 //!
 //! Noise levels: `camera_noise_px` σ, with `camera_area_noise` = σ / 12.8 (the relative area
@@ -56,7 +56,7 @@ fn noise_table() {
         };
         let (lin5, ik) = (noisy(Method::Lin5), noisy(Method::Ik));
         let ratio = match (lin5.mean_distance_mm[3], ik.mean_distance_mm[3]) {
-            (Some(a), Some(b)) if b > 0.0 => format!("{:.2}", a / b),
+            (Some(a), Some(b)) if b > 1e-6 => format!("{:.2}", a / b),
             _ => "-".into(),
         };
         println!("| {sigma} | ik | {} | |", distances(&ik));
@@ -124,6 +124,9 @@ fn read_cost_table() {
 
 fn main() {
     read_cost_table();
+    if std::env::args().any(|a| a == "reads") {
+        return;
+    }
     println!();
     noise_table();
     println!();

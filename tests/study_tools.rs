@@ -1,14 +1,13 @@
 //! Plots, comparisons and sweeps: the PNG has its panels, a comparison reproduces separate
-//! runs, a sweep expands exactly and its Slurm script runs the same cells.
+//! runs, a sweep expands exactly, its Slurm script runs a cell from any folder, bad study
+//! requests are refused before anything runs, and a study passes signals on to its cells.
 
 use eyehand::experiment::plot::{plot_run, PANELS, PLOT_SIZE};
-use eyehand::experiment::{
-    compare_cells, run, run_cells, slurm_script, sweep_cells, CompareRequest, Config, RunOptions,
-    Setting,
-};
+use eyehand::experiment::study::{compare_plan, sweep_plan, CompareRequest, Setting, StudyError};
+use eyehand::experiment::{run, Config, RequestError, RunOptions};
 use eyehand::learn::Method;
 use std::path::Path;
-use std::process::Command;
+use std::process::{Command, Output};
 
 const EYEHAND: &str = env!("CARGO_BIN_EXE_eyehand");
 
@@ -74,11 +73,34 @@ fn plot_refuses_a_folder_that_is_not_a_run() {
     assert_eq!(out.status.code(), Some(2));
 }
 
+/// `eyehand ARGS…` run in `cwd`.
+fn eyehand(args: &[&str], cwd: &Path) -> Output {
+    Command::new(EYEHAND)
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .unwrap()
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).to_string()
+}
+
+/// A data file's lines without their minutes column.
+fn without_minutes(path: &Path) -> Vec<String> {
+    std::fs::read_to_string(path)
+        .unwrap()
+        .lines()
+        .map(|l| l.rsplit_once(' ').unwrap().0.to_string())
+        .collect()
+}
+
 #[test]
 fn compare_gives_the_numbers_of_separate_runs() {
     let data = tempfile::tempdir().unwrap();
-    let out = Command::new(EYEHAND)
-        .args([
+    let config_dir = configs().display().to_string();
+    let out = eyehand(
+        &[
             "compare",
             "--methods",
             "ik,lin5",
@@ -87,31 +109,35 @@ fn compare_gives_the_numbers_of_separate_runs() {
             "--seeds",
             "1,2",
             "--configs",
-        ])
-        .arg(configs())
-        .arg("--data")
-        .arg(data.path())
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+            &config_dir,
+            "--data",
+            "d",
+        ],
+        data.path(),
     );
-    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
     let folder = Path::new(stdout.lines().next().unwrap());
+    assert_eq!(
+        folder,
+        data.path().join("d/compare/0"),
+        "absolute study folder"
+    );
     assert!(folder.join("table.md").is_file() && folder.join("curves.png").is_file());
     assert!(
         stdout.contains("| ik | 2 |") && stdout.contains("| lin5 | 2 |"),
         "{stdout}"
     );
-
+    // Cells are methods × seeds in order, each in its fixed folder; no run id is taken.
+    assert!(!data.path().join("d/ik").exists() && !data.path().join("d/lin5").exists());
     let alone = tempfile::tempdir().unwrap();
-    for (method, seed) in [("ik", 1), ("lin5", 2)] {
-        let out = Command::new(EYEHAND)
-            .args(["run", "--config"])
-            .arg(configs().join(format!("{method}.conf")))
-            .args([
+    for (method, seed, cell) in [("ik", 1, 0), ("lin5", 2, 3)] {
+        let config = configs().join(format!("{method}.conf"));
+        let out = eyehand(
+            &[
+                "run",
+                "--config",
+                config.to_str().unwrap(),
                 "--method",
                 method,
                 "--trials",
@@ -120,45 +146,61 @@ fn compare_gives_the_numbers_of_separate_runs() {
                 &seed.to_string(),
                 "--quiet",
                 "--no-plot",
-                "--data",
-            ])
-            .arg(alone.path())
-            .output()
-            .unwrap();
-        assert!(out.status.success());
-        let folder = String::from_utf8_lossy(&out.stdout).trim().to_string();
-        let separate = std::fs::read_to_string(Path::new(&folder).join("1step")).unwrap();
-        let compared_folder = data
-            .path()
-            .join(method)
-            .join(if seed == 1 { "0" } else { "1" });
-        let compared = std::fs::read_to_string(compared_folder.join("1step")).unwrap();
-        let strip = |t: &str| {
-            t.lines()
-                .map(|l| l.rsplit_once(' ').unwrap().0.to_string())
-                .collect::<Vec<_>>()
-        };
-        assert_eq!(strip(&separate), strip(&compared), "{method} seed {seed}");
+            ],
+            alone.path(),
+        );
+        assert!(out.status.success(), "{}", text(&out.stderr));
+        let separate = alone.path().join(text(&out.stdout).trim());
+        let compared = folder.join("cells").join(cell.to_string());
+        assert_eq!(
+            without_minutes(&separate.join("1step")),
+            without_minutes(&compared.join("1step")),
+            "{method} seed {seed}"
+        );
     }
 }
 
 #[test]
-fn compare_cells_cover_every_method_and_seed() {
-    let request = CompareRequest {
+fn compare_plans_cover_every_method_and_seed_and_refuse_duplicates() {
+    let mut request = CompareRequest {
         methods: vec![Method::Ik, Method::Lin5],
         trials: 10,
         seeds: vec![4, 5, 6],
         events: vec!["rotate:5:90".parse().unwrap()],
-        data: "d".into(),
-        configs: configs().to_path_buf(),
+        configs: Some(configs().to_path_buf()),
     };
-    let cells = compare_cells(&request);
-    assert_eq!(cells.len(), 6);
-    assert!(cells
+    let plan = compare_plan(&request).unwrap();
+    assert_eq!(plan.cells.len(), 6);
+    assert!(plan
+        .cells
         .iter()
-        .all(|c| c.args.windows(2).any(|w| w == ["--event", "rotate:5:90"])));
-    assert_eq!(cells[3].label, "lin5");
-    assert_eq!(cells[3].seed, 4);
+        .all(|c| c.request.events == request.events && c.request.trials == Some(10)));
+    assert_eq!(
+        (plan.cells[3].label.as_str(), plan.cells[3].seed),
+        ("lin5", 4)
+    );
+    assert_eq!(
+        plan.cells[3].request.config,
+        Some(configs().join("lin5.conf"))
+    );
+
+    request.methods = vec![Method::Lin5, Method::Lin5];
+    assert!(matches!(
+        compare_plan(&request),
+        Err(StudyError::Duplicate { .. })
+    ));
+    request.methods = vec![Method::Lin5];
+    request.seeds = vec![1, 1];
+    assert!(matches!(
+        compare_plan(&request),
+        Err(StudyError::Duplicate { .. })
+    ));
+    request.seeds = vec![1];
+    request.configs = Some("/nonexistent".into());
+    assert!(matches!(
+        compare_plan(&request),
+        Err(StudyError::MissingConfigs { .. })
+    ));
 }
 
 #[test]
@@ -168,82 +210,306 @@ fn a_sweep_expands_settings_and_seeds_exactly() {
         "split_error=1e-4,1e-5".parse().unwrap(),
         "bin_size=3,5,8".parse().unwrap(),
     ];
-    let cells = sweep_cells(&config, &sets, &[1, 2], Path::new("d")).unwrap();
-    assert_eq!(cells.len(), 2 * 3 * 2);
-    let mut seen: Vec<(String, u64)> = cells.iter().map(|c| (c.label.clone(), c.seed)).collect();
+    let plan = sweep_plan(&config, &sets, &[1, 2]).unwrap();
+    assert_eq!(plan.cells.len(), 2 * 3 * 2);
+    let mut seen: Vec<(String, u64)> = plan
+        .cells
+        .iter()
+        .map(|c| (c.label.clone(), c.seed))
+        .collect();
     seen.sort();
     seen.dedup();
     assert_eq!(seen.len(), 12, "every combination once");
-    assert!(cells
-        .iter()
-        .any(|c| c.label == "split_error=1e-5 bin_size=8" && c.seed == 2));
-    assert!(cells[0]
-        .args
-        .windows(2)
-        .any(|w| w == ["--set", "split_error=1e-4"]));
-}
-
-#[test]
-fn a_bad_sweep_setting_fails_before_any_run() {
-    let config = configs().join("ik.conf");
-    for bad in ["split_eror=1e-4", "tree_depth=2.5", "tree_depth=99"] {
-        let err = sweep_cells(&config, &[bad.parse().unwrap()], &[1], Path::new("d")).unwrap_err();
-        assert!(err.contains(bad.split('=').next().unwrap()), "{err}");
-    }
-    let data = tempfile::tempdir().unwrap();
-    let out = Command::new(EYEHAND)
-        .args(["sweep", "--config"])
-        .arg(&config)
-        .args(["--set", "no_such_entry=1,2", "--seeds", "1..3", "--data"])
-        .arg(data.path())
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(2));
+    let last = plan.cells.last().unwrap();
     assert_eq!(
-        std::fs::read_dir(data.path()).unwrap().count(),
-        0,
-        "nothing ran, no folder made"
+        (last.label.as_str(), last.seed),
+        ("split_error=1e-5 bin_size=8", 2)
+    );
+    assert_eq!(last.request.seed, Some(2));
+    assert_eq!(
+        last.request.sets,
+        [
+            ("split_error".into(), "1e-5".into()),
+            ("bin_size".into(), "8".into())
+        ]
     );
 }
 
 #[test]
-fn the_slurm_script_runs_each_cell_with_the_same_command_line() {
+fn a_bad_sweep_fails_before_any_run() {
     let config = configs().join("ik.conf");
-    let cells = sweep_cells(
-        &config,
-        &["bin_size=3,5".parse().unwrap()],
-        &[1, 2, 3],
-        Path::new("/data/my runs"),
-    )
-    .unwrap();
-    let script = slurm_script(&cells, "eyehand");
-    assert!(script.contains("#SBATCH --array=0-5"));
-    for (i, cell) in cells.iter().enumerate() {
-        let line = script
-            .lines()
-            .find(|l| l.trim_start().starts_with(&format!("{i})")))
-            .unwrap();
-        assert_eq!(
-            line.trim(),
-            format!("{i}) exec {} ;;", cell.command_line("eyehand"))
+    for bad in ["split_eror=1e-4", "tree_depth=2.5", "tree_depth=99"] {
+        let err = sweep_plan(&config, &[bad.parse().unwrap()], &[1]).unwrap_err();
+        assert!(
+            matches!(
+                err,
+                StudyError::Cell {
+                    source: RequestError::Set { .. } | RequestError::Combined { .. },
+                    ..
+                }
+            ),
+            "{bad}: {err:?}"
         );
-        assert!(line.contains("'/data/my runs'"), "paths are quoted: {line}");
     }
-    // The script is valid bash.
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("sweep.sbatch");
-    std::fs::write(&path, &script).unwrap();
+    let twice: Vec<Setting> = vec!["trials=100".parse().unwrap(), "trials=200".parse().unwrap()];
+    assert!(matches!(
+        sweep_plan(&config, &twice, &[1]),
+        Err(StudyError::RepeatedSetting { .. })
+    ));
+    let seed: Vec<Setting> = vec!["seed=1,2,3".parse().unwrap()];
+    assert!(matches!(
+        sweep_plan(&config, &seed, &[1]),
+        Err(StudyError::SeedSetting)
+    ));
+    // Settings are checked together on each cell's final config, in either order.
+    for pair in [
+        ["feedback_steps=2", "min_feedback_steps=1"],
+        ["min_feedback_steps=1", "feedback_steps=2"],
+    ] {
+        let sets: Vec<Setting> = pair.iter().map(|s| s.parse().unwrap()).collect();
+        assert!(sweep_plan(&config, &sets, &[1]).is_ok(), "{pair:?}");
+    }
+
+    let data = tempfile::tempdir().unwrap();
+    let ik = config.to_str().unwrap();
+    let cases: &[&[&str]] = &[
+        &[
+            "sweep",
+            "--config",
+            ik,
+            "--set",
+            "no_such_entry=1,2",
+            "--seeds",
+            "1..3",
+        ],
+        &["sweep", "--config", ik, "--set", "seed=1,2,3"],
+        &[
+            "sweep",
+            "--config",
+            ik,
+            "--set",
+            "trials=100",
+            "--set",
+            "trials=200",
+        ],
+        &[
+            "sweep",
+            "--config",
+            ik,
+            "--set",
+            "trials=10",
+            "--seeds",
+            "1..18446744073709551615",
+            "--slurm",
+        ],
+        &["compare", "--methods", "lin5,lin5", "--trials", "10"],
+        &[
+            "compare",
+            "--methods",
+            "ik",
+            "--trials",
+            "10",
+            "--seeds",
+            "1,1",
+        ],
+        &[
+            "compare",
+            "--methods",
+            "ik",
+            "--trials",
+            "10",
+            "--configs",
+            "/nonexistent",
+        ],
+        &[
+            "compare",
+            "--methods",
+            "ik",
+            "--trials",
+            "10",
+            "--seeds",
+            "1..1000000",
+        ],
+        &["sweep", "gather", "/nonexistent"],
+    ];
+    for args in cases {
+        let out = eyehand(args, data.path());
+        assert_eq!(
+            out.status.code(),
+            Some(2),
+            "{args:?}: {}",
+            text(&out.stderr)
+        );
+        assert!(text(&out.stderr).starts_with("eyehand: "), "{args:?}");
+    }
+    // A bad per-method config is bad input too.
+    let bad_configs = data.path().join("configs");
+    std::fs::create_dir(&bad_configs).unwrap();
+    std::fs::write(bad_configs.join("ik.conf"), "trials 10\n").unwrap();
+    let out = eyehand(
+        &[
+            "compare",
+            "--methods",
+            "ik",
+            "--trials",
+            "10",
+            "--configs",
+            "configs",
+        ],
+        data.path(),
+    );
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
+    assert_eq!(
+        std::fs::read_dir(data.path()).unwrap().count(),
+        1,
+        "nothing ran, no data folder made"
+    );
+}
+
+#[test]
+fn the_slurm_script_runs_a_cell_from_any_folder_and_gather_lists_the_rest() {
+    let project = tempfile::tempdir().unwrap();
+    let ik = configs().join("ik.conf");
+    let out = eyehand(
+        &[
+            "sweep",
+            "--config",
+            ik.to_str().unwrap(),
+            "--set",
+            "bin_size=3,5",
+            "--set",
+            "trials=20",
+            "--seeds",
+            "1,2",
+            "--data",
+            "my data",
+            "--slurm",
+            "--slurm-time",
+            "0:10:00",
+            "--slurm-partition",
+            "short",
+            "--slurm-extra",
+            "--qos=low",
+        ],
+        project.path(),
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let script = std::path::PathBuf::from(text(&out.stdout).lines().next().unwrap());
+    let study = project.path().join("my data/sweep/0");
+    assert_eq!(script, study.join("sweep.sbatch"));
+    let body = std::fs::read_to_string(&script).unwrap();
+    for line in [
+        "#SBATCH --array=0-3".to_string(),
+        format!("#SBATCH --chdir={}", study.display()),
+        format!("#SBATCH --output={}/logs/%A_%a.out", study.display()),
+        "#SBATCH --mem=256M".into(),
+        "#SBATCH --time=0:10:00".into(),
+        "#SBATCH --partition=short".into(),
+        "#SBATCH --qos=low".into(),
+    ] {
+        assert!(body.lines().any(|l| l == line), "`{line}` in\n{body}");
+    }
+    assert!(
+        body.contains(EYEHAND),
+        "the binary's absolute path:\n{body}"
+    );
     assert!(Command::new("bash")
         .arg("-n")
-        .arg(&path)
+        .arg(&script)
         .status()
         .unwrap()
         .success());
-    // A local run of the same cells works (the first one, quickly).
+
+    // Outside Slurm, from another folder: without a cell it says how to run it; with one it
+    // runs that cell into its fixed folder.
+    let elsewhere = tempfile::tempdir().unwrap();
+    let bare = Command::new("bash")
+        .arg(&script)
+        .current_dir(elsewhere.path())
+        .output()
+        .unwrap();
+    assert_eq!(bare.status.code(), Some(2));
+    assert!(
+        text(&bare.stderr).contains("sbatch"),
+        "{}",
+        text(&bare.stderr)
+    );
+    let one = Command::new("bash")
+        .arg(&script)
+        .arg("1")
+        .current_dir(elsewhere.path())
+        .output()
+        .unwrap();
+    assert!(one.status.success(), "{}", text(&one.stderr));
+    assert!(study.join("cells/1/summary.json").is_file());
+
+    let out = eyehand(
+        &["sweep", "gather", study.to_str().unwrap()],
+        elsewhere.path(),
+    );
+    assert_eq!(out.status.code(), Some(1), "3 cells are not done");
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains("| 1 | bin_size=3 trials=20 | 2 |"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("3 of 4 cells did not finish"), "{stdout}");
+    let rerun = format!("sbatch --array=0,2-3 '{}'", script.display());
+    assert!(stdout.lines().any(|l| l.ends_with(&rerun)), "{stdout}");
+    assert!(study.join("table.md").is_file() && study.join("curves.png").is_file());
+}
+
+/// Processes whose command line mentions `needle` (other than this test's).
+fn processes_mentioning(needle: &str) -> Vec<u32> {
+    std::fs::read_dir("/proc")
+        .unwrap()
+        .filter_map(|e| e.ok()?.file_name().to_str()?.parse::<u32>().ok())
+        .filter(|&pid| pid != std::process::id())
+        .filter(|pid| {
+            std::fs::read(format!("/proc/{pid}/cmdline"))
+                .is_ok_and(|c| String::from_utf8_lossy(&c).contains(needle))
+        })
+        .collect()
+}
+
+#[test]
+fn a_terminated_sweep_stops_its_cells_and_waits_for_them() {
     let data = tempfile::tempdir().unwrap();
-    let quick = sweep_cells(&config, &["bin_size=3".parse().unwrap()], &[1], data.path()).unwrap();
-    let mut cell = quick[0].clone();
-    cell.args.extend(["--trials".into(), "5".into()]);
-    let results = run_cells(Path::new(EYEHAND), &[cell]);
-    assert!(results[0].is_ok(), "{:?}", results[0]);
+    let needle = data.path().join("sweep/0").display().to_string();
+    let ik = configs().join("ik.conf");
+    let mut sweep = Command::new(EYEHAND)
+        .args([
+            "sweep",
+            "--config",
+            ik.to_str().unwrap(),
+            "--set",
+            "trials=10000000",
+        ])
+        .args(["--seeds", "1,2", "--data"])
+        .arg(data.path())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let started = std::time::Instant::now();
+    while !data.path().join("sweep/0/cells/0/info").exists() {
+        assert!(started.elapsed().as_secs() < 30, "the cells never started");
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    let cells = processes_mentioning(&needle);
+    assert!(!cells.is_empty(), "cells run as processes");
+    let term = Command::new("kill")
+        .args(["-TERM", &sweep.id().to_string()])
+        .status();
+    assert!(term.unwrap().success());
+    let status = sweep.wait().unwrap();
+    assert_eq!(
+        status.code(),
+        Some(143),
+        "exits as terminated, after its cells"
+    );
+    assert!(
+        processes_mentioning(&needle).is_empty(),
+        "no cell is left running"
+    );
 }

@@ -2,12 +2,11 @@
 
 use super::{bad_input, failed, say, Failure};
 use crate::experiment::{
-    self, CameraKind, Config, Event, RunError, RunOptions, RunResult, SimKind, StopRequest,
-    DEFAULT_CONFIG_NAME,
+    self, CameraKind, Event, RunError, RunRequest, RunResult, SimKind, StopRequest,
 };
 use crate::learn::Method;
 use std::io::IsTerminal;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
 pub(super) struct RunArgs {
@@ -49,60 +48,50 @@ pub(super) struct RunArgs {
     no_plot: bool,
 }
 
-/// The config file named (or the shipped default) and the name it is reported under.
-pub(super) fn load_config(path: Option<&Path>) -> Result<(Config, String), Failure> {
-    match path {
-        Some(path) => Ok((
-            Config::from_file(path).map_err(bad_input)?,
-            path.display().to_string(),
-        )),
-        None => Ok((Config::default_config(), DEFAULT_CONFIG_NAME.to_string())),
+impl RunArgs {
+    /// The typed run these flags ask for.
+    fn request(self) -> Result<RunRequest, Failure> {
+        let sets = self
+            .sets
+            .iter()
+            .map(|set| {
+                set.split_once('=')
+                    .map(|(n, v)| (n.to_string(), v.to_string()))
+                    .ok_or_else(|| {
+                        let shown = experiment::shown(set);
+                        bad_input(format!("--set {shown}: expected NAME=VALUE"))
+                    })
+            })
+            .collect::<Result<_, _>>()?;
+        Ok(RunRequest {
+            config: self.config,
+            sets,
+            method: self.method,
+            sim: self.sim,
+            camera: self.camera,
+            trials: self.trials,
+            seed: self.seed,
+            urdf: self.urdf,
+            data: self.data,
+            folder: None,
+            events: self.events,
+            progress: !self.quiet && std::io::stderr().is_terminal(),
+            plot: !self.no_plot,
+        })
     }
-}
-
-/// The config file with every `--set` and flag applied, checked as a whole once the last
-/// one is in (so values that depend on each other may be set in any order).
-fn resolve_config(args: &RunArgs) -> Result<(Config, String), Failure> {
-    let (mut config, name) = load_config(args.config.as_deref())?;
-    for set in &args.sets {
-        let shown_set = experiment::shown(set);
-        let (entry, value) = set
-            .split_once('=')
-            .ok_or_else(|| bad_input(format!("--set {shown_set}: expected NAME=VALUE")))?;
-        config
-            .assign(entry, value)
-            .map_err(|e| bad_input(format!("--set {shown_set}: {e}")))?;
-    }
-    config.method = args.method.unwrap_or(config.method);
-    config.sim = args.sim.unwrap_or(config.sim);
-    config.camera = args.camera.unwrap_or(config.camera);
-    config.seed = args.seed.unwrap_or(config.seed);
-    config.trials = args.trials.unwrap_or(config.trials);
-    config
-        .check()
-        .map_err(|e| bad_input(format!("{name} with the command line's settings: {e}")))?;
-    Ok((config, name))
 }
 
 pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
-    let (config, config_name) = resolve_config(&args)?;
+    let quiet = args.quiet;
+    let mut options = args.request()?.options().map_err(bad_input)?;
     let stop = StopRequest::on_signals().map_err(|e| failed(format!("signal handlers: {e}")))?;
-    let options = RunOptions {
-        config,
-        config_name,
-        urdf: args.urdf,
-        data_dir: args.data,
-        events: args.events,
-        progress: !args.quiet && std::io::stderr().is_terminal(),
-        plot: !args.no_plot,
-        stop: stop.clone(),
-    };
+    options.stop = stop.clone();
     let result = experiment::run(&options).map_err(|e| match e {
         RunError::Urdf(_) | RunError::Preflight(_) | RunError::Event { .. } => bad_input(e),
         _ => failed(e),
     })?;
     say(&format!("{}\n", result.folder.display()))?;
-    if !args.quiet {
+    if !quiet {
         say(&result.summary.one_screen())?;
     }
     outcome(&result, &stop)

@@ -1,8 +1,6 @@
 //! Experiments: the config file, events, the run folder and its data files, and the run
 //! itself (simulator + camera + learner + trial loop).
 
-mod cells;
-mod compare;
 mod config;
 mod config_values;
 mod events;
@@ -15,14 +13,11 @@ mod preflight;
 mod progress;
 mod run;
 mod run_folder;
+mod run_request;
 pub mod setup;
+pub mod study;
 mod summary;
-mod sweep;
 
-pub use cells::{run_cells, shell_quote, Cell, CellError, CellResult};
-pub use compare::{
-    compare_cells, compare_table, run_compare, CompareError, CompareReport, CompareRequest,
-};
 pub(crate) use config::shown;
 pub use config::{
     Config, ConfigError, ConfigErrorKind, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES,
@@ -37,6 +32,6 @@ pub use preflight::{
     preflight, reachable_points, PreflightError, MIN_REACHABLE_SHARE, REACH_SAMPLES,
 };
 pub use run::{run, run_learner, RunError, RunOptions, RunResult};
-pub use run_folder::{allocate_run_folder, RunFolderError, RUN_IDS};
+pub use run_folder::{allocate_run_folder, fresh_run_folder, RunFolderError, RUN_IDS};
+pub use run_request::{RequestError, RunRequest};
 pub use summary::{RunSummary, StepFigures};
-pub use sweep::{combinations, parse_seeds, slurm_script, sweep_cells, sweep_table, Setting};

@@ -9,8 +9,8 @@ use super::progress::RunProgress;
 use super::setup::{build_camera, build_learner, build_simulator, trial_settings};
 use super::summary::{RunSummary, StepFigures};
 use super::{
-    allocate_run_folder, peak_rss_kb, preflight, resident_kb, Config, Event, PreflightError,
-    RunFolderError,
+    allocate_run_folder, fresh_run_folder, peak_rss_kb, preflight, resident_kb, Config, Event,
+    PreflightError, RunFolderError,
 };
 use crate::control::TrialLoop;
 use crate::learn::{LearnError, Learner, LearnerStats};
@@ -42,6 +42,8 @@ pub struct RunOptions {
     /// Stops the run after its current trial when made (by SIGINT or SIGTERM, see
     /// [`StopRequest::on_signals`]).
     pub stop: StopRequest,
+    /// A fixed run folder (a sweep's cell), emptied first; `None` for the first free id.
+    pub folder: Option<PathBuf>,
 }
 
 impl RunOptions {
@@ -57,6 +59,7 @@ impl RunOptions {
             progress: false,
             plot: false,
             stop: StopRequest::new(),
+            folder: None,
         }
     }
 }
@@ -112,7 +115,7 @@ pub struct RunResult {
 /// before the folder is made.
 pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
     let model = load_model(options)?;
-    let folder = allocate_run_folder(&options.data_dir, options.config.method.name())?;
+    let folder = run_folder(options, options.config.method.name())?;
     let learner = build_learner(&options.config, &model, Some(&folder))?;
     drive(options, model, folder, learner)
 }
@@ -127,8 +130,16 @@ pub fn run_learner(options: &RunOptions, learner: Box<dyn Learner>) -> Result<Ru
         return Err(RunError::LearnerName(name.to_string()));
     }
     let model = load_model(options)?;
-    let folder = allocate_run_folder(&options.data_dir, name)?;
+    let folder = run_folder(options, name)?;
     drive(options, model, folder, learner)
+}
+
+/// The run's fixed folder (emptied), or the first free `<data>/<name>/<id>/`.
+fn run_folder(options: &RunOptions, name: &str) -> Result<PathBuf, RunFolderError> {
+    match &options.folder {
+        Some(fixed) => fresh_run_folder(fixed),
+        None => allocate_run_folder(&options.data_dir, name),
+    }
 }
 
 /// The robot the run's URDF describes (the shipped OSCAR-6 without one), once it, the

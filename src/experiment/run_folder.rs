@@ -1,4 +1,5 @@
-//! Run folders: `data/<method>/<id>/` with id the first free of 0–9, a–z.
+//! Run folders: `data/<method>/<id>/` with id the first free of 0–9, a–z, or a fixed folder
+//! (a sweep's cell) that a run empties and fills again.
 
 use std::io;
 use std::path::{Path, PathBuf};
@@ -47,6 +48,22 @@ pub fn allocate_run_folder(data: &Path, method: &str) -> Result<PathBuf, RunFold
     Err(RunFolderError::Full(parent))
 }
 
+/// Makes `folder` an empty run folder: whatever an earlier (possibly cancelled) run left
+/// there is removed first, so a rerun overwrites its own folder.
+pub fn fresh_run_folder(folder: &Path) -> Result<PathBuf, RunFolderError> {
+    let io_error = |source| RunFolderError::Io {
+        path: folder.to_path_buf(),
+        source,
+    };
+    match std::fs::remove_dir_all(folder) {
+        Ok(()) => {}
+        Err(e) if e.kind() == io::ErrorKind::NotFound => {}
+        Err(e) => return Err(io_error(e)),
+    }
+    std::fs::create_dir_all(folder).map_err(io_error)?;
+    Ok(folder.to_path_buf())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -67,5 +84,15 @@ mod tests {
         let err = allocate_run_folder(data.path(), "lin5").unwrap_err();
         assert!(matches!(err, RunFolderError::Full(_)));
         assert!(err.to_string().contains("all 36 run folders"), "{err}");
+    }
+
+    #[test]
+    fn a_fixed_folder_is_emptied_before_it_is_used_again() {
+        let data = tempfile::tempdir().unwrap();
+        let cell = data.path().join("sweep/0/cells/3");
+        assert_eq!(fresh_run_folder(&cell).unwrap(), cell);
+        std::fs::write(cell.join("1step"), "1 2.5 0.0\n").unwrap();
+        fresh_run_folder(&cell).unwrap();
+        assert_eq!(std::fs::read_dir(&cell).unwrap().count(), 0);
     }
 }

@@ -1,0 +1,165 @@
+//! Running a study's cells: each as its own process (its own memory figures, and the same
+//! path a Slurm task takes), started by a [`CellLauncher`] that names only the binary and the
+//! subcommand that runs one cell; several side by side; signals passed on to them.
+
+use super::plan::StudyFolder;
+use super::signals::{forward, Interrupts};
+use super::StudyError;
+use crate::experiment::{run, RunError, RunResult, StopRequest};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::Duration;
+
+/// How often the running cells are looked at.
+const POLL: Duration = Duration::from_millis(20);
+
+/// How to start the process that runs one cell: `PROGRAM ARGS… STUDY_FOLDER INDEX`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CellLauncher {
+    /// The binary, absolute.
+    pub program: PathBuf,
+    /// The arguments before the study folder and the cell index.
+    pub args: Vec<String>,
+}
+
+impl CellLauncher {
+    /// The command line up to (without) the cell index, shell-quoted.
+    pub fn command_line(&self, study: &Path) -> String {
+        std::iter::once(self.program.display().to_string())
+            .chain(self.args.iter().cloned())
+            .chain([study.display().to_string()])
+            .map(|a| shell_quote(&a))
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
+    fn command(&self, study: &Path, index: usize) -> Command {
+        let mut command = Command::new(&self.program);
+        command.args(&self.args).arg(study).arg(index.to_string());
+        command
+    }
+}
+
+/// `arg` quoted for a POSIX shell.
+pub fn shell_quote(arg: &str) -> String {
+    let plain = !arg.is_empty()
+        && arg
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_./=:,+".contains(c));
+    if plain {
+        arg.to_string()
+    } else {
+        format!("'{}'", arg.replace('\'', r"'\''"))
+    }
+}
+
+/// Why running one cell in this process failed.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum CellRunError {
+    /// The study or the cell is not there or not valid.
+    #[error(transparent)]
+    Study(#[from] StudyError),
+    /// The run failed.
+    #[error(transparent)]
+    Run(#[from] RunError),
+}
+
+/// Runs cell `index` of the study in `folder` here, into its fixed folder `cells/<index>/`
+/// (emptied first, so a rerun overwrites it); `summary.json` is written last. `stop` ends
+/// it after its current trial, as it does a run.
+pub fn run_cell(
+    folder: &StudyFolder,
+    index: usize,
+    stop: StopRequest,
+) -> Result<RunResult, CellRunError> {
+    let plan = folder.plan()?;
+    let cell = plan.cells.get(index).ok_or(StudyError::NoSuchCell {
+        index,
+        cells: plan.cells.len(),
+    })?;
+    let mut options = cell.request.options().map_err(|source| StudyError::Cell {
+        index,
+        label: cell.label.clone(),
+        seed: cell.seed,
+        source,
+    })?;
+    options.stop = stop;
+    Ok(run(&options)?)
+}
+
+/// How a local run of a study's cells ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LocalRunEnd {
+    /// Every cell was started and has ended (gather tells which finished).
+    Completed,
+    /// A signal (SIGINT or SIGTERM) came: it was passed to the running cells, which were
+    /// waited for; no further cell was started.
+    Interrupted(i32),
+}
+
+/// Runs every cell of the study, `jobs` at a time, each as `launcher`'s process with its
+/// output in `logs/local_<i>.out`.
+pub fn run_locally(
+    folder: &StudyFolder,
+    cells: usize,
+    launcher: &CellLauncher,
+    jobs: usize,
+) -> Result<LocalRunEnd, StudyError> {
+    let mut interrupts = Interrupts::catch().map_err(StudyError::io("signal handlers"))?;
+    let mut next = 0;
+    let mut running: Vec<Child> = Vec::new();
+    let mut forwarded = None;
+    while next < cells || !running.is_empty() {
+        for signal in interrupts.received() {
+            for child in &running {
+                forward(child.id(), signal);
+            }
+            forwarded = Some(signal);
+        }
+        while forwarded.is_none() && next < cells && running.len() < jobs.max(1) {
+            running.push(start(folder, launcher, next)?);
+            next += 1;
+        }
+        let mut still = Vec::with_capacity(running.len());
+        for mut child in running {
+            match child.try_wait() {
+                Ok(Some(_)) => {}
+                Ok(None) => still.push(child),
+                Err(e) => return Err(StudyError::io(&launcher.program)(e)),
+            }
+        }
+        running = still;
+        if forwarded.is_some() && next < cells {
+            next = cells;
+        }
+        std::thread::sleep(POLL);
+    }
+    Ok(forwarded.map_or(LocalRunEnd::Completed, LocalRunEnd::Interrupted))
+}
+
+fn start(folder: &StudyFolder, launcher: &CellLauncher, index: usize) -> Result<Child, StudyError> {
+    let log_path = folder.local_log(index);
+    let log = std::fs::File::create(&log_path).map_err(StudyError::io(&log_path))?;
+    let err = log.try_clone().map_err(StudyError::io(&log_path))?;
+    launcher
+        .command(&folder.0, index)
+        .stdin(Stdio::null())
+        .stdout(log)
+        .stderr(err)
+        .spawn()
+        .map_err(StudyError::io(&launcher.program))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn arguments_are_quoted_only_when_needed() {
+        assert_eq!(shell_quote("split_error=1e-5"), "split_error=1e-5");
+        assert_eq!(shell_quote("/tmp/my data"), "'/tmp/my data'");
+        assert_eq!(shell_quote("it's"), r"'it'\''s'");
+        assert_eq!(shell_quote(""), "''");
+    }
+}

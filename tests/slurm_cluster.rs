@@ -1,0 +1,234 @@
+//! A sweep through a real one-node Slurm cluster (`scripts/slurm-local.sh`): written with
+//! `--slurm`, submitted with `sbatch` from another folder, waited for, gathered, and equal to
+//! the same sweep run here (distances and node counts exactly, data files byte for byte but
+//! the minutes column); a cell that lost its summary is resubmitted with the line gather
+//! prints. Needs slurm-wlm and munge installed: the test fails, never skips, without them.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::time::{Duration, Instant};
+
+const EYEHAND: &str = env!("CARGO_BIN_EXE_eyehand");
+const PROJECT: &str = env!("CARGO_MANIFEST_DIR");
+/// How long the array may take on a loaded machine before the test gives up.
+const JOB_LIMIT: Duration = Duration::from_secs(300);
+
+/// The cluster this test started; stopped (queue emptied first) when dropped.
+struct Cluster {
+    state: tempfile::TempDir,
+    port: u16,
+}
+
+impl Cluster {
+    fn script(&self, action: &str) -> Output {
+        Command::new(Path::new(PROJECT).join("scripts/slurm-local.sh"))
+            .arg(action)
+            .env("EYEHAND_SLURM_DIR", self.state.path())
+            .env("EYEHAND_SLURM_PORT", self.port.to_string())
+            .env("EYEHAND_SLURM_WAIT", "60")
+            .output()
+            .expect("scripts/slurm-local.sh runs")
+    }
+
+    fn start() -> Cluster {
+        let cluster = Cluster {
+            state: tempfile::tempdir().unwrap(),
+            port: 20000 + (std::process::id() % 10000) as u16 * 2,
+        };
+        let out = cluster.script("start");
+        assert!(
+            out.status.success(),
+            "the local Slurm cluster must start (apt-get install slurm-wlm munge): {}{}",
+            text(&out.stdout),
+            text(&out.stderr)
+        );
+        cluster
+    }
+
+    /// A Slurm client command talking to this cluster, run in `cwd`.
+    fn client(&self, program: &str, cwd: &Path) -> Command {
+        let mut command = Command::new(program);
+        command
+            .env("SLURM_CONF", self.state.path().join("slurm.conf"))
+            .current_dir(cwd);
+        command
+    }
+
+    /// Waits until job `id` (every task of it) has left the queue.
+    fn wait_for(&self, id: &str) {
+        let started = Instant::now();
+        loop {
+            let out = self
+                .client("squeue", Path::new("/"))
+                .args(["-h", "-j", id])
+                .output()
+                .unwrap();
+            let gone = text(&out.stderr).contains("Invalid job id");
+            if gone || out.status.success() && out.stdout.is_empty() {
+                return;
+            }
+            assert!(
+                started.elapsed() < JOB_LIMIT,
+                "job {id} still queued after {JOB_LIMIT:?}: {}",
+                text(&out.stdout)
+            );
+            std::thread::sleep(Duration::from_millis(200));
+        }
+    }
+}
+
+impl Drop for Cluster {
+    fn drop(&mut self) {
+        let out = self.script("stop");
+        if !out.status.success() {
+            eprintln!(
+                "stopping the cluster: {}{}",
+                text(&out.stdout),
+                text(&out.stderr)
+            );
+        }
+    }
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).to_string()
+}
+
+fn eyehand(args: &[&str], cwd: &Path) -> Output {
+    Command::new(EYEHAND)
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .unwrap()
+}
+
+/// The table's rows without the trials/s column (the only one that may differ).
+fn rows_but_speed(table: &str) -> Vec<Vec<String>> {
+    table
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| cell"))
+        .map(|l| {
+            let mut fields: Vec<String> = l.split('|').map(|f| f.trim().to_string()).collect();
+            fields.remove(9);
+            fields
+        })
+        .collect()
+}
+
+/// A data file without its last (minutes) column.
+fn without_minutes(path: &Path) -> Vec<String> {
+    std::fs::read_to_string(path)
+        .unwrap()
+        .lines()
+        .map(|l| l.rsplit_once(' ').unwrap().0.to_string())
+        .collect()
+}
+
+/// `sbatch --parsable ARGS…` from `cwd`: the job id.
+fn submit(cluster: &Cluster, args: &[&str], cwd: &Path) -> String {
+    let out = cluster
+        .client("sbatch", cwd)
+        .arg("--parsable")
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "sbatch {args:?}: {}",
+        text(&out.stderr)
+    );
+    text(&out.stdout)
+        .trim()
+        .split(';')
+        .next()
+        .unwrap()
+        .to_string()
+}
+
+#[test]
+fn a_sweep_on_a_local_slurm_cluster_equals_the_same_sweep_run_here() {
+    let started = Instant::now();
+    let cluster = Cluster::start();
+    let work = tempfile::tempdir().unwrap();
+    let config = PathBuf::from(PROJECT).join("configs/lin5.conf");
+    let sweep = [
+        "sweep",
+        "--config",
+        config.to_str().unwrap(),
+        "--set",
+        "split_error=1e-4,1e-5",
+        "--set",
+        "trials=300",
+        "--seeds",
+        "1,2",
+        "--data",
+        "data",
+    ];
+    let local = eyehand(&sweep, work.path());
+    assert!(local.status.success(), "{}", text(&local.stderr));
+    let local_dir = PathBuf::from(text(&local.stdout).lines().next().unwrap());
+
+    let written = eyehand(&[&sweep[..], &["--slurm"]].concat(), work.path());
+    assert!(written.status.success(), "{}", text(&written.stderr));
+    let script = text(&written.stdout).lines().next().unwrap().to_string();
+    let slurm_dir = Path::new(&script).parent().unwrap().to_path_buf();
+    assert_ne!(slurm_dir, local_dir);
+
+    // Submitted from a folder that holds neither the configs nor the data.
+    let elsewhere = tempfile::tempdir().unwrap();
+    let job = submit(&cluster, &[&script], elsewhere.path());
+    cluster.wait_for(&job);
+    let gathered = eyehand(
+        &["sweep", "gather", slurm_dir.to_str().unwrap()],
+        elsewhere.path(),
+    );
+    assert!(
+        gathered.status.success(),
+        "{}{}",
+        text(&gathered.stdout),
+        text(&gathered.stderr)
+    );
+    let local_table = std::fs::read_to_string(local_dir.join("table.md")).unwrap();
+    let slurm_table = std::fs::read_to_string(slurm_dir.join("table.md")).unwrap();
+    assert_eq!(rows_but_speed(&local_table).len(), 4);
+    assert_eq!(rows_but_speed(&slurm_table), rows_but_speed(&local_table));
+    let logs = std::fs::read_dir(slurm_dir.join("logs")).unwrap().count();
+    assert_eq!(logs, 4, "one log per task in logs/");
+    for cell in 0..4 {
+        for file in ["4step", "nodes"] {
+            let path = |dir: &Path| dir.join(format!("cells/{cell}/{file}"));
+            assert_eq!(
+                without_minutes(&path(&slurm_dir)),
+                without_minutes(&path(&local_dir))
+            );
+        }
+    }
+
+    // A cell that lost its summary is listed with the line that resubmits only it.
+    std::fs::remove_file(slurm_dir.join("cells/2/summary.json")).unwrap();
+    let partial = eyehand(
+        &["sweep", "gather", slurm_dir.to_str().unwrap()],
+        elsewhere.path(),
+    );
+    assert_eq!(partial.status.code(), Some(1));
+    let stdout = text(&partial.stdout);
+    let line = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("rerun them: "))
+        .unwrap_or_else(|| panic!("a resubmit line in\n{stdout}"));
+    assert_eq!(line, format!("sbatch --array=2 {script}"));
+    let job = submit(&cluster, &["--array=2", &script], elsewhere.path());
+    cluster.wait_for(&job);
+    let again = eyehand(
+        &["sweep", "gather", slurm_dir.to_str().unwrap()],
+        elsewhere.path(),
+    );
+    assert!(again.status.success(), "{}", text(&again.stdout));
+    let slurm_table = std::fs::read_to_string(slurm_dir.join("table.md")).unwrap();
+    assert_eq!(rows_but_speed(&slurm_table), rows_but_speed(&local_table));
+    drop(cluster);
+    eprintln!(
+        "local Slurm sweep test: {:.1} s",
+        started.elapsed().as_secs_f64()
+    );
+}

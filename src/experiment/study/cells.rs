@@ -99,7 +99,8 @@ pub enum LocalRunEnd {
 }
 
 /// Runs every cell of the study, `jobs` at a time, each as `launcher`'s process with its
-/// output in `logs/local_<i>.out`.
+/// output in `logs/local_<i>.out`. If a cell cannot be started, none after it is, and the
+/// running ones are waited for before the error is returned.
 pub fn run_locally(
     folder: &StudyFolder,
     cells: usize,
@@ -110,32 +111,38 @@ pub fn run_locally(
     let mut next = 0;
     let mut running: Vec<Child> = Vec::new();
     let mut forwarded = None;
-    while next < cells || !running.is_empty() {
+    let mut failure = None;
+    loop {
         for signal in interrupts.received() {
             for child in &running {
                 forward(child.id(), signal);
             }
             forwarded = Some(signal);
         }
-        while forwarded.is_none() && next < cells && running.len() < jobs.max(1) {
-            running.push(start(folder, launcher, next)?);
+        let launching = forwarded.is_none() && failure.is_none();
+        while launching && next < cells && running.len() < jobs.max(1) {
+            match start(folder, launcher, next) {
+                Ok(child) => running.push(child),
+                Err(e) => {
+                    failure = Some(e);
+                    break;
+                }
+            }
             next += 1;
         }
-        let mut still = Vec::with_capacity(running.len());
-        for mut child in running {
-            match child.try_wait() {
-                Ok(Some(_)) => {}
-                Ok(None) => still.push(child),
-                Err(e) => return Err(StudyError::io(&launcher.program)(e)),
-            }
-        }
-        running = still;
-        if forwarded.is_some() && next < cells {
-            next = cells;
+        // A child that cannot be waited for is dropped: it was ours and is reaped on exit.
+        running.retain_mut(|child| matches!(child.try_wait(), Ok(None)));
+        let more = forwarded.is_none() && failure.is_none() && next < cells;
+        if running.is_empty() && !more {
+            break;
         }
         std::thread::sleep(POLL);
     }
-    Ok(forwarded.map_or(LocalRunEnd::Completed, LocalRunEnd::Interrupted))
+    match (failure, forwarded) {
+        (Some(e), _) => Err(e),
+        (None, Some(signal)) => Ok(LocalRunEnd::Interrupted(signal)),
+        (None, None) => Ok(LocalRunEnd::Completed),
+    }
 }
 
 fn start(folder: &StudyFolder, launcher: &CellLauncher, index: usize) -> Result<Child, StudyError> {

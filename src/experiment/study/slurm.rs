@@ -55,8 +55,8 @@ impl SlurmOptions {
     }
 }
 
-/// A cell's peak memory class (MB): twice the estimate from measured peaks (README: about
-/// 7 MB plus 2.1 kB per trial for lin5, 2.6 kB for lin8 and nnw; ffn, kohonen and ik stay
+/// A cell's peak memory class (MB): twice the estimate from measured peaks (docs/RESULTS.md:
+/// about 7 MB plus 2.1 kB per trial for lin5, 2.6 kB for lin8 and nnw; ffn, kohonen and ik stay
 /// under 9 MB; Rapier's multibody adds about 20 MB), rounded up to a power of two, at
 /// least 256 MB.
 pub fn memory_class_mb(config: &Config) -> u64 {

@@ -243,6 +243,21 @@ mod tests {
     }
 
     #[test]
+    fn an_override_that_changes_nothing_gives_the_same_config_for_every_shipped_config() {
+        let configs = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs");
+        for entry in std::fs::read_dir(configs).unwrap() {
+            let path = entry.unwrap().path();
+            let base = Config::from_file(&path).unwrap();
+            let same = RunRequest {
+                config: Some(path.clone()),
+                seed: Some(base.seed),
+                ..RunRequest::default()
+            };
+            assert_eq!(same.config().unwrap().0, base, "{}", path.display());
+        }
+    }
+
+    #[test]
     fn a_repeated_or_unknown_set_is_refused() {
         let twice = request(&[("trials", "100"), ("trials", "200")]);
         assert_eq!(

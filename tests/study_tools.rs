@@ -513,3 +513,45 @@ fn a_terminated_sweep_stops_its_cells_and_waits_for_them() {
         "no cell is left running"
     );
 }
+
+#[test]
+fn a_comparison_for_slurm_runs_by_hand_and_gathers_like_a_sweep() {
+    let project = tempfile::tempdir().unwrap();
+    let configs = configs().display().to_string();
+    let out = eyehand(
+        &[
+            "compare",
+            "--methods",
+            "ik",
+            "--trials",
+            "20",
+            "--seeds",
+            "1,2",
+            "--configs",
+            &configs,
+            "--data",
+            "d",
+            "--slurm",
+        ],
+        project.path(),
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let script = std::path::PathBuf::from(text(&out.stdout).lines().next().unwrap());
+    assert_eq!(script, project.path().join("d/compare/0/compare.sbatch"));
+    for cell in ["0", "1"] {
+        let ran = Command::new("bash")
+            .arg(&script)
+            .arg(cell)
+            .output()
+            .unwrap();
+        assert!(ran.status.success(), "{}", text(&ran.stderr));
+    }
+    let study = script.parent().unwrap().to_str().unwrap();
+    let out = eyehand(&["compare", "gather", study], project.path());
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stdout).contains("| ik | 2 |"),
+        "{}",
+        text(&out.stdout)
+    );
+}

@@ -6,6 +6,7 @@ use super::plan::StudyFolder;
 use super::signals::{forward, Interrupts};
 use super::StudyError;
 use crate::experiment::{run, RunError, RunResult, StopRequest};
+use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::Duration;
@@ -149,8 +150,11 @@ fn start(folder: &StudyFolder, launcher: &CellLauncher, index: usize) -> Result<
     let log_path = folder.local_log(index);
     let log = std::fs::File::create(&log_path).map_err(StudyError::io(&log_path))?;
     let err = log.try_clone().map_err(StudyError::io(&log_path))?;
+    // Its own process group: a terminal's Ctrl-C reaches the study alone, which passes it on
+    // once to every cell.
     launcher
         .command(&folder.0, index)
+        .process_group(0)
         .stdin(Stdio::null())
         .stdout(log)
         .stderr(err)

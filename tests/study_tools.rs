@@ -240,13 +240,13 @@ fn a_bad_sweep_fails_before_any_run() {
     let config = configs().join("ik.conf");
     for bad in ["split_eror=1e-4", "tree_depth=2.5", "tree_depth=99"] {
         let err = sweep_plan(&config, &[bad.parse().unwrap()], &[1]).unwrap_err();
+        let StudyError::Cell { source, .. } = &err else {
+            panic!("{bad}: {err:?}");
+        };
         assert!(
             matches!(
-                err,
-                StudyError::Cell {
-                    source: RequestError::Set { .. } | RequestError::Combined { .. },
-                    ..
-                }
+                **source,
+                RequestError::Set { .. } | RequestError::Combined { .. }
             ),
             "{bad}: {err:?}"
         );
@@ -473,45 +473,50 @@ fn processes_mentioning(needle: &str) -> Vec<u32> {
 }
 
 #[test]
-fn a_terminated_sweep_stops_its_cells_and_waits_for_them() {
-    let data = tempfile::tempdir().unwrap();
-    let needle = data.path().join("sweep/0").display().to_string();
-    let ik = configs().join("ik.conf");
-    let mut sweep = Command::new(EYEHAND)
-        .args([
-            "sweep",
-            "--config",
-            ik.to_str().unwrap(),
-            "--set",
-            "trials=10000000",
-        ])
-        .args(["--seeds", "1,2", "--data"])
-        .arg(data.path())
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::null())
-        .spawn()
-        .unwrap();
-    let started = std::time::Instant::now();
-    while !data.path().join("sweep/0/cells/0/info").exists() {
-        assert!(started.elapsed().as_secs() < 30, "the cells never started");
-        std::thread::sleep(std::time::Duration::from_millis(50));
+fn an_interrupted_sweep_stops_its_cells_and_waits_for_them() {
+    for (signal, code) in [("-INT", 130), ("-TERM", 143)] {
+        let data = tempfile::tempdir().unwrap();
+        let study = data.path().join("sweep/0");
+        let needle = study.display().to_string();
+        let ik = configs().join("ik.conf");
+        let mut sweep = Command::new(EYEHAND)
+            .args(["sweep", "--config", ik.to_str().unwrap()])
+            .args(["--set", "trials=10000000", "--seeds", "1,2", "--data"])
+            .arg(data.path())
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        let started = std::time::Instant::now();
+        while !study.join("cells/0/1step").exists() {
+            assert!(started.elapsed().as_secs() < 30, "the cells never started");
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        }
+        assert!(
+            !processes_mentioning(&needle).is_empty(),
+            "cells run as processes"
+        );
+        let sent = Command::new("kill")
+            .args([signal, &sweep.id().to_string()])
+            .status();
+        assert!(sent.unwrap().success());
+        let status = sweep.wait().unwrap();
+        assert_eq!(status.code(), Some(code), "{signal}: exits after its cells");
+        assert!(
+            processes_mentioning(&needle).is_empty(),
+            "{signal}: no cell is left running"
+        );
+        // The cells stopped after a trial and said so; gather does not count them as done.
+        let summary = std::fs::read_to_string(study.join("cells/0/summary.json")).unwrap();
+        assert!(summary.contains("\"interrupted\": true"), "{summary}");
+        let out = eyehand(&["sweep", "gather", &needle], data.path());
+        assert_eq!(out.status.code(), Some(1));
+        assert!(
+            text(&out.stdout).contains("2 of 2 cells did not finish"),
+            "{}",
+            text(&out.stdout)
+        );
     }
-    let cells = processes_mentioning(&needle);
-    assert!(!cells.is_empty(), "cells run as processes");
-    let term = Command::new("kill")
-        .args(["-TERM", &sweep.id().to_string()])
-        .status();
-    assert!(term.unwrap().success());
-    let status = sweep.wait().unwrap();
-    assert_eq!(
-        status.code(),
-        Some(143),
-        "exits as terminated, after its cells"
-    );
-    assert!(
-        processes_mentioning(&needle).is_empty(),
-        "no cell is left running"
-    );
 }
 
 #[test]

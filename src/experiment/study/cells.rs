@@ -83,7 +83,7 @@ pub fn run_cell(
         index,
         label: cell.label.clone(),
         seed: cell.seed,
-        source,
+        source: Box::new(source),
     })?;
     options.stop = stop;
     Ok(run(&options)?)

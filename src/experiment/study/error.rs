@@ -61,7 +61,7 @@ pub enum StudyError {
         /// Its seed.
         seed: u64,
         /// Why.
-        source: RequestError,
+        source: Box<RequestError>,
     },
     /// No cell of that index.
     #[error("no cell {index}: the study has cells 0 to {}", .cells.saturating_sub(1))]

@@ -67,7 +67,7 @@ impl StudyPlan {
                         index,
                         label: cell.label.clone(),
                         seed: cell.seed,
-                        source,
+                        source: Box::new(source),
                     })
             })
             .collect()
@@ -88,7 +88,7 @@ impl StudyPlan {
                     index,
                     label: cell.label.clone(),
                     seed: cell.seed,
-                    source,
+                    source: Box::new(source),
                 })?;
         }
         let json = serde_json::to_string_pretty(&self).expect("a plan is plain data");

@@ -21,7 +21,12 @@ pub(super) struct CompareArgs {
     #[arg(long, value_delimiter = ',', required = true)]
     methods: Vec<Method>,
     /// Trials per run.
-    #[arg(long, required = true)]
+    #[arg(
+        long,
+        required = true,
+        allow_negative_numbers = true,
+        value_parser = super::count_at_least_1
+    )]
     trials: Option<usize>,
     /// Seeds: FIRST..LAST or a list like 1,2,3.
     #[arg(long, default_value = "1,2,3")]
@@ -123,13 +128,9 @@ pub(super) fn compare(args: CompareArgs) -> Result<(), Failure> {
     if let Some(action) = args.action {
         return act(action);
     }
-    let trials = args.trials.unwrap_or_default();
-    if trials == 0 {
-        return Err(bad_input("--trials must be at least 1"));
-    }
     let request = CompareRequest {
         methods: args.methods,
-        trials,
+        trials: args.trials.unwrap_or(1),
         seeds: parse_seeds(&args.seeds).map_err(study_failure)?,
         events: args.events,
         configs: args.configs,

@@ -172,6 +172,9 @@ pub enum UrdfErrorKind {
         /// The link.
         link: String,
     },
+    /// A robot description (any arm's URDF, `robot::description`) that cannot be read.
+    #[error("{0}")]
+    Description(super::description::DescriptionErrorKind),
 }
 
 /// A request the robot cannot carry out.

@@ -1,6 +1,7 @@
 //! The OSCAR-6 arm: its URDF model and forward kinematics, inverse kinematics for the
 //! camera position, the reach space, moves, and the simulators behind one trait.
 
+pub mod description;
 mod dynamic;
 mod error;
 mod ik;
@@ -12,6 +13,7 @@ mod reach;
 mod simulator;
 mod urdf;
 
+pub use description::{Chain, DescriptionError, DescriptionOptions, RobotDescription};
 pub use dynamic::{DynamicSettings, DynamicSim, SimCounters};
 pub use error::{RobotError, UrdfError, UrdfErrorKind};
 pub use joint::{LinkBody, RevoluteJoint, Shape};

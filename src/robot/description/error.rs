@@ -1,0 +1,219 @@
+//! What can be wrong with a robot description or a chain asked of it, as data: kinds with
+//! the names and numbers of the elements at fault.
+
+use crate::robot::{UrdfError, UrdfErrorKind};
+
+/// A URDF that cannot be read as a robot description, or a chain that cannot be cut from it:
+/// the file and what is wrong.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{file}: {kind}")]
+pub struct DescriptionError {
+    /// The URDF file as the user named it.
+    pub file: String,
+    /// What is wrong.
+    pub kind: DescriptionErrorKind,
+}
+
+impl From<DescriptionError> for UrdfError {
+    fn from(error: DescriptionError) -> UrdfError {
+        UrdfError {
+            file: error.file,
+            kind: UrdfErrorKind::Description(error.kind),
+        }
+    }
+}
+
+/// What is wrong, naming the element.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum DescriptionErrorKind {
+    /// The file cannot be read.
+    #[error("cannot read: {reason}")]
+    Unreadable {
+        /// The operating system's reason.
+        reason: String,
+    },
+    /// Not XML, or not a URDF urdf-rs can read.
+    #[error("not a valid URDF: {reason}")]
+    NotUrdf {
+        /// The reader's reason.
+        reason: String,
+    },
+    /// A robot without links.
+    #[error("the robot has no links")]
+    NoLinks,
+    /// Two links with one name.
+    #[error("two links are named `{link}`")]
+    DuplicateLink {
+        /// The name.
+        link: String,
+    },
+    /// Two joints with one name.
+    #[error("two joints are named `{joint}`")]
+    DuplicateJoint {
+        /// The name.
+        joint: String,
+    },
+    /// A joint names a link that does not exist.
+    #[error("joint `{joint}` names {role} link `{link}`, which does not exist")]
+    MissingLink {
+        /// The joint.
+        joint: String,
+        /// `parent` or `child`.
+        role: String,
+        /// The link it names.
+        link: String,
+    },
+    /// A link that is the child of more than one joint.
+    #[error("link `{link}` has two parents: it is the child of joints {}", .joints.join(", "))]
+    TwoParents {
+        /// The link.
+        link: String,
+        /// The joints that name it as their child.
+        joints: Vec<String>,
+    },
+    /// Joints that lead in a circle.
+    #[error("the links {} form a cycle", .links.join(" → "))]
+    Cycle {
+        /// The links of the cycle, in parent order, the first repeated at the end.
+        links: Vec<String>,
+    },
+    /// More than one link without a parent joint.
+    #[error("the links form no single tree: {} have no parent joint", .roots.join(", "))]
+    TwoRoots {
+        /// Every link without a parent joint.
+        roots: Vec<String>,
+    },
+    /// A floating, planar or spherical joint.
+    #[error("joint `{joint}` has type {found}: only fixed, revolute, continuous and prismatic joints are read")]
+    UnsupportedJoint {
+        /// The joint.
+        joint: String,
+        /// Its type.
+        found: String,
+    },
+    /// A number that is NaN or infinite where it must be finite.
+    #[error("{element} has a non-finite number ({value})")]
+    NonFinite {
+        /// The element (`joint `j` origin`, `link `l` inertial`, …).
+        element: String,
+        /// The number.
+        value: f64,
+    },
+    /// A moving joint's axis of length zero.
+    #[error("joint `{joint}` has a zero axis")]
+    ZeroAxis {
+        /// The joint.
+        joint: String,
+    },
+    /// A revolute or prismatic joint whose lower limit is not below its upper one.
+    #[error("joint `{joint}` has lower limit {lower} not below its upper limit {upper}")]
+    BadLimits {
+        /// The joint.
+        joint: String,
+        /// Lower limit (rad or m).
+        lower: f64,
+        /// Upper limit (rad or m).
+        upper: f64,
+    },
+    /// A negative mass.
+    #[error("link `{link}` has a negative mass ({mass} kg)")]
+    NegativeMass {
+        /// The link.
+        link: String,
+        /// Its mass (kg).
+        mass: f64,
+    },
+    /// An inertia tensor with a negative eigenvalue.
+    #[error(
+        "link `{link}` has an inertia tensor with a negative principal moment ({moment} kg·m²)"
+    )]
+    BadInertia {
+        /// The link.
+        link: String,
+        /// The smallest principal moment (kg·m²).
+        moment: f64,
+    },
+    /// A box, cylinder, capsule or sphere with a size that is not positive and finite.
+    #[error("link `{link}` has a {shape} with a size that is not positive")]
+    BadShape {
+        /// The link.
+        link: String,
+        /// `box`, `cylinder`, `capsule` or `sphere`.
+        shape: String,
+    },
+    /// A mesh scale with a zero or non-finite factor.
+    #[error("link `{link}` scales mesh `{filename}` by a zero or non-finite factor")]
+    BadScale {
+        /// The link.
+        link: String,
+        /// The mesh as the URDF names it.
+        filename: String,
+    },
+    /// A mesh file that is there but is not a usable OBJ or STL mesh.
+    #[error("link `{link}`: mesh `{filename}` is not a mesh: {reason}")]
+    NotAMesh {
+        /// The link.
+        link: String,
+        /// The mesh as the URDF names it.
+        filename: String,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// A collision mesh in a format other than OBJ and STL.
+    #[error("link `{link}`: collision mesh `{filename}` is neither OBJ nor STL")]
+    UnsupportedMesh {
+        /// The link.
+        link: String,
+        /// The mesh as the URDF names it.
+        filename: String,
+    },
+    /// A camera link that is not a link of the robot.
+    #[error("camera link `{link}` is not a link of the robot")]
+    UnknownLink {
+        /// The name asked for.
+        link: String,
+    },
+    /// A camera link with no moving joint between it and the root.
+    #[error("camera link `{link}` does not move: no moving joint lies between it and the root")]
+    NoMovingJoint {
+        /// The camera link.
+        link: String,
+    },
+    /// A learned joint that is not a joint of the robot.
+    #[error("learned joint `{joint}` is not a joint of the robot")]
+    UnknownJoint {
+        /// The name asked for.
+        joint: String,
+    },
+    /// A learned joint that is fixed.
+    #[error("learned joint `{joint}` is a fixed joint")]
+    LearnedJointFixed {
+        /// The joint.
+        joint: String,
+    },
+    /// A learned joint that does not lie between the root and the camera link.
+    #[error(
+        "learned joint `{joint}` is not on the chain from the root to camera link `{camera_link}`"
+    )]
+    LearnedJointOffChain {
+        /// The joint.
+        joint: String,
+        /// The camera link.
+        camera_link: String,
+    },
+    /// A learned joint named twice.
+    #[error("learned joint `{joint}` is named twice")]
+    LearnedJointRepeated {
+        /// The joint.
+        joint: String,
+    },
+    /// A joint vector or frame buffer of the wrong length for the chain.
+    #[error("the chain has {expected} moving joints; {found} values were given")]
+    JointCount {
+        /// The chain's moving joints (or frames).
+        expected: usize,
+        /// The length given.
+        found: usize,
+    },
+}

@@ -1,0 +1,27 @@
+//! Any robot from its URDF: links and joints as a tree, meshes read from disk, the serial
+//! chain from the root to a camera link, and its forward kinematics.
+
+mod chain;
+mod convert;
+mod error;
+mod geometry;
+mod inertia;
+mod joint;
+mod kinematics;
+mod link;
+mod mesh;
+mod resolve;
+mod robot;
+mod tree;
+mod warning;
+
+pub use chain::{Chain, ChainBody, ChainJoint, HeldJoint};
+pub use error::{DescriptionError, DescriptionErrorKind};
+pub use geometry::{Geometry, GeometryElement, MeshGeometry};
+pub use inertia::Inertial;
+pub use joint::{Joint, JointDynamics, JointKind, JointLimits};
+pub use link::Link;
+pub use mesh::{MeshFormat, TriangleMesh};
+pub use resolve::resolve_mesh;
+pub use robot::{DescriptionOptions, RobotDescription};
+pub use warning::DescriptionWarning;

@@ -18,17 +18,20 @@ pub enum Method {
     Kohonen,
     /// A model-based controller that inverts the nominal URDF geometry.
     Ik,
+    /// Locally weighted projection regression (Vijayakumar, D'Souza and Schaal 2005).
+    Lwpr,
 }
 
 impl Method {
     /// Every method, in the order they are listed to users.
-    pub const ALL: [Method; 6] = [
+    pub const ALL: [Method; 7] = [
         Method::Lin5,
         Method::Lin8,
         Method::Nnw,
         Method::Ffn,
         Method::Kohonen,
         Method::Ik,
+        Method::Lwpr,
     ];
 
     /// The method's name as written in configs and folder names.
@@ -40,6 +43,7 @@ impl Method {
             Method::Ffn => "ffn",
             Method::Kohonen => "kohonen",
             Method::Ik => "ik",
+            Method::Lwpr => "lwpr",
         }
     }
 }

@@ -166,4 +166,32 @@ config_entries! {
     kohonen_side: usize,
     /// kohonen: patterns over which neighbourhood and rates shrink.
     kohonen_anneal_patterns: usize,
+    /// lwpr: a new receptive field's distance metric, times the identity (per squared
+    /// normalised input).
+    init_D: f64,
+    /// lwpr: a new field's learning rate of its distance metric.
+    init_alpha: f64,
+    /// lwpr: a new field is made where no field is activated above this.
+    w_gen: f64,
+    /// lwpr: of two fields both activated above this, the narrower is dropped.
+    w_prune: f64,
+    /// lwpr: a new field's forgetting factor.
+    init_lambda: f64,
+    /// lwpr: the forgetting factor's annealing rate per update.
+    tau_lambda: f64,
+    /// lwpr: the forgetting factor a field anneals to.
+    final_lambda: f64,
+    /// lwpr: 1: diagonal distance metrics; 0: full ones.
+    diag_only: usize,
+    /// lwpr: 1: the metric's learning rates adapt (meta learning); 0: fixed.
+    meta: usize,
+    /// lwpr: learning rate of the learning rates' logarithms (with meta 1).
+    meta_rate: f64,
+    /// lwpr: weight of the smoothness penalty on the distance metric.
+    penalty: f64,
+    /// lwpr: another projection is added when the last one cut the error below this
+    /// fraction.
+    add_threshold: f64,
+    /// lwpr: outputs Δθ are learned divided by this (degrees).
+    norm_out: f64,
 }

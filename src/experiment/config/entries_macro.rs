@@ -6,6 +6,7 @@ macro_rules! config_entries {
         /// Every setting of a run. Field names are the config entries' names; lengths are in
         /// cm, angles in degrees, distances to the target in cm as in the study.
         #[derive(Debug, Clone, PartialEq)]
+        #[allow(non_snake_case)] // LWPR's `init_D` keeps the name its users know.
         pub struct Config {
             $( $(#[doc = $doc])* pub $name: $ty, )*
         }
@@ -15,6 +16,7 @@ macro_rules! config_entries {
 
         /// Entries read so far, with the line each came from.
         #[derive(Debug, Default)]
+        #[allow(non_snake_case)]
         pub(super) struct Entries {
             $( $name: Option<($ty, usize)>, )*
         }

@@ -1,6 +1,8 @@
 //! The sane range of every entry and the rules between entries, checked on a whole config
 //! (after every `--set`), so a value is judged against the others' final values.
 
+mod lwpr;
+
 use super::memory::machine_memory;
 use super::{Config, ConfigErrorKind};
 use crate::experiment::config_values::ConfigValue;
@@ -70,7 +72,8 @@ impl Config {
         self.check_tree()?;
         self.check_dynamics()?;
         self.check_sensors()?;
-        self.check_networks()
+        self.check_networks()?;
+        self.check_lwpr()
     }
 
     fn check_sensors(&self) -> Check {

@@ -3,8 +3,8 @@
 use crate::experiment::Config;
 use crate::learn::change::{ChangeSettings, DetectorSettings};
 use crate::learn::{
-    FfnSettings, KohonenSettings, Lin5Settings, Lin8Settings, NestedSettings, NnwSettings,
-    PerceptronSettings, TreeSettings,
+    FfnSettings, KohonenSettings, Lin5Settings, Lin8Settings, LwprSettings, MergeStrategy,
+    NestedSettings, NnwSettings, PerceptronSettings, TreeSettings,
 };
 
 /// `lin5`: `boundary_0` … `boundary_4`, the tree, perceptron, merge and change entries,
@@ -56,6 +56,30 @@ pub fn kohonen_settings(config: &Config) -> KohonenSettings {
         anneal_patterns: config.kohonen_anneal_patterns,
         minimal_joint_move: config.minimal_joint_move,
         ..KohonenSettings::default()
+    }
+}
+
+/// `lwpr`: `init_D`, `init_alpha`, `w_gen`, `w_prune`, the λ entries, `diag_only`,
+/// `meta`, `meta_rate`, `penalty`, `add_threshold`, `norm_out`, `minimal_joint_move`, and
+/// the `change_*` entries under `merge_strategy change_detection`.
+pub fn lwpr_settings(config: &Config) -> LwprSettings {
+    LwprSettings {
+        init_d: config.init_D,
+        init_alpha: config.init_alpha,
+        w_gen: config.w_gen,
+        w_prune: config.w_prune,
+        init_lambda: config.init_lambda,
+        tau_lambda: config.tau_lambda,
+        final_lambda: config.final_lambda,
+        diag_only: config.diag_only == 1,
+        meta: config.meta == 1,
+        meta_rate: config.meta_rate,
+        penalty: config.penalty,
+        add_threshold: config.add_threshold,
+        norm_out: config.norm_out,
+        minimal_joint_move: config.minimal_joint_move,
+        change_detection: (config.merge_strategy == MergeStrategy::ChangeDetection)
+            .then(|| change_settings(config)),
     }
 }
 

@@ -4,14 +4,15 @@
 mod learners;
 
 pub use learners::{
-    ffn_settings, input_bounds, kohonen_settings, lin5_settings, lin8_settings, nnw_settings,
+    ffn_settings, input_bounds, kohonen_settings, lin5_settings, lin8_settings, lwpr_settings,
+    nnw_settings,
 };
 
 use super::{CameraKind, Config, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
 use crate::control::{SensorNoise, TrialSettings};
 use crate::learn::{
-    FfnLearner, IkLearner, KohonenLearner, LearnError, Learner, Lin5, Lin8, Method, Nnw,
+    FfnLearner, IkLearner, KohonenLearner, LearnError, Learner, Lin5, Lin8, Lwpr, Method, Nnw,
 };
 use crate::robot::{ArmModel, DynamicSettings, DynamicSim, KinematicSim, MoveSettings, Simulator};
 use crate::units::M_PER_CM;
@@ -97,5 +98,6 @@ pub fn build_learner(
             kohonen_settings(config),
             input_bounds(config),
         )),
+        Method::Lwpr => Box::new(Lwpr::new(lwpr_settings(config), input_bounds(config))),
     })
 }

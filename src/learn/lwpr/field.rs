@@ -1,0 +1,99 @@
+//! A receptive field: a Gaussian kernel around a centre with its own distance metric, and
+//! the local linear model (weighted means and incremental PLS) it weighs its data by.
+
+use super::metric::{DistanceMetric, MetricStep};
+use super::projection::{Input, Pls, INPUTS};
+use super::LwprSettings;
+
+/// Patterns below this activation leave a field untouched, and answers ignore fields below
+/// it.
+pub(super) const MIN_ACTIVATION: f64 = 0.001;
+/// A field answers once it has seen this many patterns per input.
+const TRUSTED_PER_INPUT: f64 = 2.0;
+
+/// One receptive field of one output.
+#[derive(Debug, Clone)]
+pub(super) struct ReceptiveField {
+    centre: Input,
+    metric: DistanceMetric,
+    /// Weighted mean of the inputs.
+    mean_x: Input,
+    /// Weighted mean of the output (the model's offset).
+    beta0: f64,
+    pls: Pls,
+    /// True once the field has seen enough data to answer.
+    trusted: bool,
+}
+
+impl ReceptiveField {
+    /// A field centred on `x` answering `y`, with the metric of `template` when given
+    /// (a neighbour's adapted metric) or the initial one.
+    pub(super) fn new(
+        x: Input,
+        y: f64,
+        template: Option<&ReceptiveField>,
+        settings: &LwprSettings,
+    ) -> ReceptiveField {
+        ReceptiveField {
+            centre: x,
+            metric: template.map_or_else(|| DistanceMetric::new(settings), |t| t.metric.clone()),
+            mean_x: x,
+            beta0: y,
+            pls: Pls::new(settings.init_lambda),
+            trusted: false,
+        }
+    }
+
+    /// The kernel's activation at `x`, in (0, 1].
+    pub(super) fn activation(&self, x: &Input) -> f64 {
+        (-0.5 * self.metric.squared_distance(&(x - self.centre))).exp()
+    }
+
+    /// True once the field has seen enough data to answer.
+    pub(super) fn is_trusted(&self) -> bool {
+        self.trusted
+    }
+
+    /// The trace of the distance metric (larger: narrower).
+    pub(super) fn narrowness(&self) -> f64 {
+        self.metric.trace()
+    }
+
+    /// The local model's answer at `x`.
+    pub(super) fn predict(&self, x: &Input) -> f64 {
+        self.beta0 + self.pls.predict(x - self.mean_x)
+    }
+
+    /// Trains the pattern (`x`, `y`) that activates this field by `w`: means, local model,
+    /// distance metric, projections, then the forgetting factors.
+    pub(super) fn train(&mut self, x: &Input, y: f64, w: f64, settings: &LwprSettings) {
+        let discounted = {
+            let first = &self.pls.projections()[0];
+            first.sum_w * first.lambda
+        };
+        let total = discounted + w;
+        self.mean_x = (self.mean_x * discounted + x * w) / total;
+        self.beta0 = (self.beta0 * discounted + y * w) / total;
+        let errors = self.pls.train(x - self.mean_x, y - self.beta0, w);
+        let step = MetricStep {
+            dx: x - self.centre,
+            w,
+            errors,
+        };
+        self.metric.adapt(step, &mut self.pls, settings);
+        self.pls.grow(settings.add_threshold, settings.init_lambda);
+        self.pls.age(w, settings.tau_lambda, settings.final_lambda);
+        self.trusted |= self.pls.projections()[0].n_data > TRUSTED_PER_INPUT * INPUTS as f64;
+    }
+
+    /// Forgets faster again: every λ back to `init_lambda`.
+    pub(super) fn reset_lambda(&mut self, init_lambda: f64) {
+        self.pls.reset_lambda(init_lambda);
+    }
+
+    /// Projections in use.
+    #[cfg(test)]
+    pub(super) fn projections(&self) -> usize {
+        self.pls.projections().len()
+    }
+}

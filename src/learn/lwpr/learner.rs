@@ -1,0 +1,138 @@
+//! The `lwpr` learner: three output models over the normalised adjusted 5-input patterns,
+//! with forgetting and, under change detection, a watch that resets it.
+
+use super::output_model::OutputModel;
+use super::projection::Input;
+use super::LwprSettings;
+use crate::learn::change::{ChangeWatch, WatchStep};
+use crate::learn::{
+    adjusted_pattern, pose_pairs, LearnError, Learner, LearnerStats, Method, ModelEvent,
+    Observation, Query,
+};
+use nalgebra::Vector3;
+
+/// Locally weighted projection regression of Δθ = N(c, θ2, θ3).
+#[derive(Debug, Clone)]
+pub struct Lwpr {
+    settings: LwprSettings,
+    /// The inputs' lower boundaries and ranges: x ↦ (x − low) / span.
+    low: Input,
+    span: Input,
+    /// One model per joint move Δθ1, Δθ2, Δθ3.
+    outputs: [OutputModel; 3],
+    watch: Option<ChangeWatch>,
+    /// Patterns trained so far (the watch dates a change by them).
+    patterns: u64,
+    events: Vec<ModelEvent>,
+}
+
+impl Lwpr {
+    /// A learner for inputs (θ2, θ3, cx, cy, cz) within `bounds`, each (low, high) with
+    /// low < high.
+    pub fn new(settings: LwprSettings, bounds: [(f64, f64); 5]) -> Lwpr {
+        Lwpr {
+            settings,
+            low: Input::from_fn(|i, _| bounds[i].0),
+            span: Input::from_fn(|i, _| bounds[i].1 - bounds[i].0),
+            outputs: Default::default(),
+            watch: settings.change_detection.as_ref().map(ChangeWatch::new),
+            patterns: 0,
+            events: Vec::new(),
+        }
+    }
+
+    /// Receptive fields of each output.
+    pub fn fields(&self) -> [usize; 3] {
+        std::array::from_fn(|i| self.outputs[i].len())
+    }
+
+    /// The input in normalised units (0 to 1 inside the boundaries).
+    fn normalise(&self, x: &Input) -> Input {
+        (x - self.low).component_div(&self.span)
+    }
+
+    /// The answer (degrees) at raw input `x`, `None` for outputs no field covers.
+    pub(super) fn answer(&self, x: &Input) -> [Option<f64>; 3] {
+        let x = self.normalise(x);
+        std::array::from_fn(|i| {
+            self.outputs[i]
+                .predict(&x)
+                .map(|y| y * self.settings.norm_out)
+        })
+    }
+
+    /// Trains one pattern: raw input `x`, joint move `target` (degrees).
+    pub fn train(&mut self, x: &Input, target: &Vector3<f64>) {
+        if !x.iter().chain(target.iter()).all(|v| v.is_finite()) {
+            return;
+        }
+        if self.watch.is_some() {
+            let answer = self.answer(x);
+            let miss = answer
+                .iter()
+                .zip(target.iter())
+                .map(|(a, t)| a.map(|a| (a - t).powi(2)))
+                .sum::<Option<f64>>()
+                .map(f64::sqrt);
+            if let Some(watch) = &mut self.watch {
+                watch.pattern(miss, target.norm());
+            }
+        }
+        let x = self.normalise(x);
+        for (model, t) in self.outputs.iter_mut().zip(target.iter()) {
+            model.train(&x, t / self.settings.norm_out, &self.settings);
+        }
+        self.patterns += 1;
+    }
+}
+
+impl Learner for Lwpr {
+    fn name(&self) -> &str {
+        Method::Lwpr.name()
+    }
+
+    fn propose(&mut self, query: &Query) -> Vector3<f64> {
+        let answer = Vector3::from(self.answer(&query.five_inputs()).map(|a| a.unwrap_or(0.0)));
+        if answer.iter().all(|v| v.is_finite()) {
+            answer
+        } else {
+            Vector3::zeros()
+        }
+    }
+
+    fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
+        for (from, to) in pose_pairs(path, self.settings.minimal_joint_move) {
+            let pattern = adjusted_pattern(from, to);
+            self.train(&pattern.input, &pattern.target);
+        }
+        Ok(())
+    }
+
+    fn stats(&self) -> LearnerStats {
+        LearnerStats {
+            nodes: self.fields().iter().sum(),
+            ..LearnerStats::default()
+        }
+    }
+
+    /// Under change detection, a detected change sets every field's forgetting factor
+    /// back to `init_lambda` (see the module's notes for why).
+    fn start_trial(&mut self, trial: usize) {
+        let Some(watch) = &mut self.watch else {
+            return;
+        };
+        if let WatchStep::Forget {
+            estimated_trial, ..
+        } = watch.start_trial(trial, self.patterns)
+        {
+            self.events.push(ModelEvent::Change { estimated_trial });
+            for model in &mut self.outputs {
+                model.reset_lambda(self.settings.init_lambda);
+            }
+        }
+    }
+
+    fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
+        sink.append(&mut self.events);
+    }
+}

@@ -92,3 +92,24 @@ fn kohonen_gets_within_three_centimetres_after_five_steps_within_1000_trials() {
     );
     assert_eq!(summary.nodes, 16_807, "a 7⁵ map");
 }
+
+#[test]
+fn lwpr_closes_in_on_the_target_within_2000_trials() {
+    let summary = run_method(Method::Lwpr, 2000, 1);
+    println!(
+        "lwpr, 2000 trials: {:?} mm, {} fields",
+        summary.mean_distance_mm, summary.nodes
+    );
+    assert!(
+        step(&summary, 4) < 15.0,
+        "4-step mean {} mm",
+        step(&summary, 4)
+    );
+    assert!(
+        step(&summary, 4) < step(&summary, 1) / 5.0,
+        "feedback steps close in: {:?}",
+        summary.mean_distance_mm
+    );
+    assert!(summary.nodes > 20, "fields were made: {}", summary.nodes);
+    assert!(summary.failures < 200, "{} failures", summary.failures);
+}

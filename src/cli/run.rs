@@ -13,7 +13,7 @@ pub(super) struct RunArgs {
     /// The config file (default: the shipped configs/lin5.conf).
     #[arg(long)]
     config: Option<PathBuf>,
-    /// The learning method: lin5, lin8, nnw, ffn, kohonen or ik.
+    /// The learning method: lin5, lin8, nnw, ffn, kohonen, ik or lwpr.
     #[arg(long)]
     method: Option<Method>,
     /// The simulator: kinematic or dynamic.

@@ -61,22 +61,22 @@ impl Lwpr {
         })
     }
 
-    /// Trains one pattern: raw input `x`, joint move `target` (degrees).
+    /// How far the answer at raw input `x` misses `target` (degrees); `None` where some
+    /// output has no field.
+    fn miss(&self, x: &Input, target: &Vector3<f64>) -> Option<f64> {
+        let answer = self.answer(x);
+        let squares = answer
+            .iter()
+            .zip(target.iter())
+            .map(|(a, t)| a.map(|a| (a - t).powi(2)));
+        squares.sum::<Option<f64>>().map(f64::sqrt)
+    }
+
+    /// Trains one pattern: raw input `x`, joint move `target` (degrees). A pattern with a
+    /// value that is not finite is skipped.
     pub fn train(&mut self, x: &Input, target: &Vector3<f64>) {
         if !x.iter().chain(target.iter()).all(|v| v.is_finite()) {
             return;
-        }
-        if self.watch.is_some() {
-            let answer = self.answer(x);
-            let miss = answer
-                .iter()
-                .zip(target.iter())
-                .map(|(a, t)| a.map(|a| (a - t).powi(2)))
-                .sum::<Option<f64>>()
-                .map(f64::sqrt);
-            if let Some(watch) = &mut self.watch {
-                watch.pattern(miss, target.norm());
-            }
         }
         let x = self.normalise(x);
         for (model, t) in self.outputs.iter_mut().zip(target.iter()) {
@@ -100,10 +100,22 @@ impl Learner for Lwpr {
         }
     }
 
+    /// Trains every pose pair of the trial. Under change detection the watch is given
+    /// the trial's summed miss (before training) relative to its summed move: see the
+    /// module's notes for why not each pattern's.
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
+        let (mut missed, mut moved) = (Some(0.0), 0.0);
         for (from, to) in pose_pairs(path, self.settings.minimal_joint_move) {
             let pattern = adjusted_pattern(from, to);
+            if self.watch.is_some() {
+                let miss = self.miss(&pattern.input, &pattern.target);
+                missed = missed.zip(miss).map(|(sum, miss)| sum + miss);
+                moved += pattern.target.norm();
+            }
             self.train(&pattern.input, &pattern.target);
+        }
+        if let Some(watch) = self.watch.as_mut().filter(|_| moved > 0.0) {
+            watch.pattern(missed, moved);
         }
         Ok(())
     }

@@ -14,6 +14,7 @@
 
 mod common;
 
+use common::recovery::{alarms, four_step, mean, recovered_after};
 use common::run_cli;
 use std::path::Path;
 
@@ -45,35 +46,6 @@ const LEARNERS: [(&str, &str, &[&str]); 4] = [
 /// Trials of the runs without an event.
 const LONG_TRIALS: usize = 50_000;
 
-/// The 4-step distance of every trial up to `trials` (NaN where the trial had no 4th step).
-fn four_step(folder: &Path, trials: usize) -> Vec<f64> {
-    let mut by_trial = vec![f64::NAN; trials + 1];
-    let text = std::fs::read_to_string(folder.join("4step")).expect("4step");
-    for line in text.lines() {
-        let mut fields = line.split(' ');
-        let trial: usize = fields.next().and_then(|t| t.parse().ok()).expect("a trial");
-        by_trial[trial] = fields
-            .next()
-            .and_then(|d| d.parse().ok())
-            .expect("a distance");
-    }
-    by_trial
-}
-
-fn mean(values: &[f64]) -> f64 {
-    let finite: Vec<f64> = values.iter().copied().filter(|v| v.is_finite()).collect();
-    finite.iter().sum::<f64>() / finite.len().max(1) as f64
-}
-
-/// The trials of the alarms in a run's `changes` file.
-fn alarms(folder: &Path) -> Vec<usize> {
-    let changes = std::fs::read_to_string(folder.join("changes")).unwrap_or_default();
-    changes
-        .lines()
-        .filter_map(|l| l.split(' ').next()?.parse().ok())
-        .collect()
-}
-
 /// Merges by kind from a run's `merges` file: "absolute,relative,starved".
 fn merges(folder: &Path) -> String {
     let text = std::fs::read_to_string(folder.join("merges")).unwrap_or_default();
@@ -102,9 +74,7 @@ struct Recovery {
 fn recovery(folder: &Path) -> Recovery {
     let d = four_step(folder, TRIALS);
     let before = mean(&d[1000..=EVENT_TRIAL - 1]);
-    let recovered_after = (EVENT_TRIAL + 100..=TRIALS)
-        .find(|&t| mean(&d[t - 99..=t]) <= 2.0 * before)
-        .map(|t| t - EVENT_TRIAL);
+    let recovered_after = recovered_after(&d, EVENT_TRIAL, before);
     let alarms = alarms(folder);
     Recovery {
         before,

@@ -3,6 +3,8 @@
 
 #![allow(dead_code)]
 
+pub mod recovery;
+
 use eyehand::experiment::RunSummary;
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -24,13 +24,14 @@ struct GoldenRun {
     events: &'static [&'static str],
 }
 
-const RUNS: [GoldenRun; 7] = [
+const RUNS: [GoldenRun; 8] = [
     GoldenRun::plain("lin5", Method::Lin5, 600),
     GoldenRun::plain("lin8", Method::Lin8, 400),
     GoldenRun::plain("nnw", Method::Nnw, 40),
     GoldenRun::plain("ffn", Method::Ffn, 40),
     GoldenRun::plain("kohonen", Method::Kohonen, 500),
     GoldenRun::plain("ik", Method::Ik, 200),
+    GoldenRun::plain("lwpr", Method::Lwpr, 300),
     GoldenRun {
         name: "lin5_change_detection",
         method: Method::Lin5,

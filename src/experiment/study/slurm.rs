@@ -57,13 +57,13 @@ impl SlurmOptions {
 
 /// A cell's peak memory class (MB): twice the estimate from measured peaks (docs/RESULTS.md:
 /// about 7 MB plus 2.1 kB per trial for lin5, 2.6 kB for lin8 and nnw; ffn, kohonen and ik stay
-/// under 9 MB; Rapier's multibody adds about 20 MB), rounded up to a power of two, at
+/// under 9 MB, lwpr keeps no patterns and stayed under 12 MB in docs/LWPR.md; Rapier's multibody adds about 20 MB), rounded up to a power of two, at
 /// least 256 MB.
 pub fn memory_class_mb(config: &Config) -> u64 {
     let per_trial_kb = match config.method {
         Method::Lin5 => 2.1,
         Method::Lin8 | Method::Nnw => 2.6,
-        Method::Ffn | Method::Kohonen | Method::Ik => 0.0,
+        Method::Ffn | Method::Kohonen | Method::Ik | Method::Lwpr => 0.0,
     };
     let dynamic_mb = if config.sim == SimKind::Dynamic {
         20.0

@@ -19,6 +19,10 @@ pub struct RevoluteJoint {
     pub effort: f64,
     /// Maximum speed (rad/s).
     pub velocity: f64,
+    /// Viscous damping (N·m·s/rad), the URDF `<dynamics damping>`; 0 when absent.
+    pub damping: f64,
+    /// Dry friction (N·m), the URDF `<dynamics friction>`; 0 when absent (read, not simulated).
+    pub friction: f64,
 }
 
 impl RevoluteJoint {

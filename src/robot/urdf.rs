@@ -223,6 +223,15 @@ fn revolute(joint: &urdf_rs::Joint) -> Result<RevoluteJoint, UrdfErrorKind> {
             velocity: limit.velocity,
         });
     }
+    let (damping, friction) = joint
+        .dynamics
+        .as_ref()
+        .map_or((0.0, 0.0), |d| (d.damping, d.friction));
+    if !(damping.is_finite() && damping >= 0.0 && friction.is_finite() && friction >= 0.0) {
+        return Err(format!(
+            "joint `{name}` needs a finite, non-negative dynamics damping and friction, has {damping} and {friction}"
+        ));
+    }
     Ok(RevoluteJoint {
         name: name.clone(),
         origin,
@@ -231,6 +240,8 @@ fn revolute(joint: &urdf_rs::Joint) -> Result<RevoluteJoint, UrdfErrorKind> {
         upper: limit.upper,
         effort: limit.effort,
         velocity: limit.velocity,
+        damping,
+        friction,
     })
 }
 

@@ -4,21 +4,22 @@
 //! merged away: the camera link's mass and collider ride on link 6.
 
 use super::colliders::collider;
-use super::convert::{to_pose, to_vector};
+use super::convert::to_pose;
+use super::inertia::Inertial;
 use super::settings::DynamicSettings;
-use crate::robot::{ArmModel, Joints, LinkBody, Shape};
-use nalgebra::{Isometry3, Matrix3, Unit, UnitQuaternion, Vector3};
-use rapier3d_f64::math::{Matrix, Vector};
+use crate::robot::{ArmModel, Joints, Shape};
+use nalgebra::{Isometry3, Unit, UnitQuaternion, Vector3};
+use rapier3d_f64::math::Vector;
 use rapier3d_f64::prelude::{
-    ColliderHandle, GenericJointBuilder, JointAxesMask, JointAxis, MassProperties, MotorModel,
-    MultibodyIndex, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
+    ColliderHandle, GenericJointBuilder, JointAxesMask, JointAxis, MotorModel, MultibodyIndex,
+    PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
 };
 
 /// Standard gravity (m/s²), pulling along −z.
 pub(super) const GRAVITY: f64 = 9.81;
 
-/// A collider of a body and the URDF collision element it was made from (link frame).
-pub(super) type ColliderPart = (ColliderHandle, Isometry3<f64>, Shape);
+/// A body's collider and the URDF collision elements it was made from (link frame).
+pub(super) type BodyCollider = (ColliderHandle, Vec<(Isometry3<f64>, Shape)>);
 
 /// The arm inside its Rapier world.
 pub(super) struct Arm {
@@ -30,17 +31,18 @@ pub(super) struct Arm {
     pub(super) link_ids: [usize; 6],
     /// Rigid bodies of the base and links 1–6.
     pub(super) bodies: [RigidBodyHandle; 7],
-    /// Each body's colliders, base first.
-    pub(super) colliders: Vec<Vec<ColliderPart>>,
-    /// Mass (kg) and centre of mass (link frame) of links 1–6, the camera in link 6.
-    pub(super) loads: [(f64, Vector3<f64>); 6],
+    /// Each body's collider, base first (none for a body without collision elements).
+    pub(super) colliders: Vec<Option<BodyCollider>>,
+    /// Mass properties of links 1–6 as simulated (the camera in link 6, a stretched link
+    /// as stretched).
+    pub(super) inertials: [Inertial; 6],
 }
 
 impl std::fmt::Debug for Arm {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Arm")
             .field("link_ids", &self.link_ids)
-            .field("loads", &self.loads)
+            .field("inertials", &self.inertials)
             .finish_non_exhaustive()
     }
 }
@@ -56,13 +58,18 @@ impl Arm {
         let links = model.links();
         let mut bodies = Vec::with_capacity(7);
         let mut colliders = Vec::with_capacity(7);
-        let mut loads = [(0.0, Vector3::zeros()); 6];
+        let mut inertials = Vec::with_capacity(6);
         for k in 0..7 {
             let mut parts = vec![(Isometry3::identity(), &links[k])];
             if k == 6 {
                 parts.push((model.camera_mount(), &links[7]));
             }
-            let mass: MassProperties = parts.iter().map(|(at, l)| mass_of(l, at)).sum();
+            let inertial = Inertial::sum(
+                &parts
+                    .iter()
+                    .map(|(at, l)| Inertial::of_link(l, at))
+                    .collect::<Vec<_>>(),
+            );
             let (builder, frame) = match k {
                 0 => (RigidBodyBuilder::fixed(), Isometry3::identity()),
                 _ => (RigidBodyBuilder::dynamic(), frames[k - 1]),
@@ -71,20 +78,19 @@ impl Arm {
                 builder
                     .pose(to_pose(&frame))
                     .can_sleep(false)
-                    .additional_mass_properties(mass),
+                    .additional_mass_properties(inertial.mass_properties()),
             );
             if k > 0 {
-                let com = mass.local_com;
-                loads[k - 1] = (mass.mass(), Vector3::new(com.x, com.y, com.z));
+                inertials.push(inertial);
             }
-            let mut own = Vec::new();
-            for (at, link) in &parts {
-                for (pose, shape) in &link.collisions {
-                    let pose = at * pose;
-                    let handle = world.insert_collider(collider(&pose, shape), Some(body));
-                    own.push((handle, pose, *shape));
-                }
-            }
+            let elements: Vec<(Isometry3<f64>, Shape)> = parts
+                .iter()
+                .flat_map(|(at, link)| link.collisions.iter().map(move |(p, s)| (*at * p, *s)))
+                .collect();
+            let own = (!elements.is_empty()).then(|| {
+                let handle = world.insert_collider(collider(&elements), Some(body));
+                (handle, elements)
+            });
             bodies.push(body);
             colliders.push(own);
         }
@@ -118,6 +124,13 @@ impl Arm {
         let link_ids = std::array::from_fn(|i| link_of(bodies[i + 1]).id);
         if let Some(mb) = world.multibody_joints.get_multibody_mut(multibody) {
             mb.set_self_contacts_enabled(false);
+            // Rapier gives every joint a damping of its own; the URDF's is the one to use.
+            mb.damping_mut().fill(0.0);
+            for (joint, &id) in model.joints().iter().zip(&link_ids) {
+                if let Some(at) = mb.link(id).map(|link| link.assembly_id()) {
+                    mb.damping_mut()[at] = joint.damping;
+                }
+            }
         }
         Arm {
             world,
@@ -125,7 +138,7 @@ impl Arm {
             link_ids,
             bodies: bodies.try_into().expect("seven bodies"),
             colliders,
-            loads,
+            inertials: inertials.try_into().expect("six links"),
         }
     }
 }
@@ -137,18 +150,6 @@ pub(super) fn joint_frame(origin: &Isometry3<f64>, axis: &Unit<Vector3<f64>>) ->
         UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::PI)
     });
     origin * x_to_axis
-}
-
-/// A link's URDF inertial as Rapier mass properties, in a frame where the link sits at `at`.
-fn mass_of(link: &LinkBody, at: &Isometry3<f64>) -> MassProperties {
-    let frame = at * link.inertial_origin;
-    let rotation = frame.rotation.to_rotation_matrix();
-    let inertia: Matrix3<f64> = rotation * link.inertia * rotation.transpose();
-    MassProperties::with_inertia_matrix(
-        to_vector(&frame.translation.vector),
-        link.mass,
-        Matrix::from_cols_slice(inertia.as_slice()),
-    )
 }
 
 #[cfg(test)]
@@ -172,7 +173,7 @@ mod tests {
     fn the_camera_rides_on_link_6() {
         let model = ArmModel::oscar6();
         let arm = Arm::build(&model, &DynamicSettings::default());
-        let masses: Vec<f64> = arm.loads.iter().map(|(m, _)| *m).collect();
+        let masses: Vec<f64> = arm.inertials.iter().map(|i| i.mass).collect();
         assert_eq!(masses[..5], [25.0, 17.0, 8.0, 1.5, 1.0]);
         assert!(
             (masses[5] - 0.8).abs() < 1e-12,
@@ -180,11 +181,11 @@ mod tests {
         );
         // The camera's 0.3 kg sits 0.07 m out along the flange (3 cm behind its lens, which
         // looks along the flange), link 6's 0.5 kg at 0.03 m.
-        let com = arm.loads[5].1;
+        let com = arm.inertials[5].com;
         assert!(
             (com.x - (0.5 * 0.03 + 0.3 * 0.07) / 0.8).abs() < 1e-12,
             "{com}"
         );
-        assert_eq!(arm.colliders[6].len(), 2);
+        assert_eq!(arm.colliders[6].as_ref().map(|(_, e)| e.len()), Some(2));
     }
 }

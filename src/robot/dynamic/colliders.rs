@@ -11,11 +11,23 @@ const MIN_SIZE: f64 = 1e-3;
 /// Cosine above which a shape's axis counts as lying along a link.
 const PARALLEL: f64 = 1.0 - 1e-9;
 
-/// A collider without mass (the bodies carry the URDF's inertials) for the collision
-/// element `shape` at `pose` in its body's frame.
-pub(super) fn collider(pose: &Isometry3<f64>, shape: &Shape) -> ColliderBuilder {
-    let (pose, shape) = parts(pose, shape);
-    ColliderBuilder::new(shape).position(pose).density(0.0)
+/// The one collider of a body: its collision elements (poses in the body's frame) as a
+/// compound shape at the body's origin, without mass. One massless collider at the origin
+/// adds nothing to the body's mass properties, so Rapier keeps the principal frame they
+/// were given (adding a massless collider elsewhere makes it diagonalise the tensor again,
+/// and lose the axes of a repeated moment).
+pub(super) fn collider(elements: &[(Isometry3<f64>, Shape)]) -> ColliderBuilder {
+    ColliderBuilder::new(compound(elements)).density(0.0)
+}
+
+/// The collision elements as one shape.
+pub(super) fn compound(elements: &[(Isometry3<f64>, Shape)]) -> SharedShape {
+    SharedShape::compound(
+        elements
+            .iter()
+            .map(|(pose, shape)| parts(pose, shape))
+            .collect(),
+    )
 }
 
 /// The Rapier pose and shape of a URDF collision element. URDF cylinders run along z,

@@ -25,7 +25,7 @@ impl Arm {
         // Weight and its moment about the world origin of links i..6, summed from the tip.
         let (mut weight, mut moment) = (Vector3::zeros(), Vector3::zeros());
         for i in (0..6).rev() {
-            let (mass, com) = self.loads[i];
+            let (mass, com) = (self.inertials[i].mass, self.inertials[i].com);
             let force = Vector3::new(0.0, 0.0, -GRAVITY * mass);
             weight += force;
             moment += (frames[i] * nalgebra::Point3::from(com))

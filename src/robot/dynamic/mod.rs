@@ -5,6 +5,7 @@ mod builder;
 mod colliders;
 mod convert;
 mod gravity;
+mod inertia;
 mod motors;
 mod settings;
 mod settle;

@@ -33,8 +33,9 @@
 //!   mount, not its collider.
 
 use super::builder::{joint_frame, Arm};
-use super::colliders::{parts, stretched};
+use super::colliders::{compound, stretched};
 use super::convert::{to_isometry, to_pose};
+use super::inertia::Inertial;
 use super::settings::DynamicSettings;
 use crate::robot::{ArmModel, Controlled, Joints, KinematicSim, MoveReport, RobotError, Simulator};
 use nalgebra::{Isometry3, Unit};
@@ -159,14 +160,22 @@ impl Simulator for DynamicSim {
         let direction = Unit::new_normalize(joint.origin.translation.vector);
         let stretch = model.link_stretch(link);
         self.arm.set_joint_frame(link, frame);
-        for (handle, pose, shape) in &self.arm.colliders[link] {
-            let (pose, shape) = stretched(pose, shape, &direction, stretch);
-            let (pose, shape) = parts(&pose, &shape);
+        if let Some((handle, elements)) = &self.arm.colliders[link] {
+            let grown: Vec<_> = elements
+                .iter()
+                .map(|(pose, shape)| stretched(pose, shape, &direction, stretch))
+                .collect();
             if let Some(collider) = self.arm.world.colliders.get_mut(*handle) {
-                collider.set_shape(shape);
-                collider.set_position_wrt_parent(pose);
+                collider.set_shape(compound(&grown));
             }
         }
+        let length = joint.origin.translation.vector.norm();
+        let inertial = Inertial::of_link(&model.links()[link], &Isometry3::identity()).stretched(
+            &direction,
+            length - stretch,
+            length,
+        );
+        self.arm.set_inertial(link, inertial);
         self.arm.refresh_bodies();
         self.settle();
         Ok(())
@@ -182,6 +191,14 @@ impl Arm {
     fn link_pose(&self, k: usize) -> Option<Isometry3<f64>> {
         let body = self.world.bodies.get(*self.bodies.get(k)?)?;
         Some(to_isometry(body.position()))
+    }
+
+    /// Gives link `k` (1–6) new mass properties, for the gravity feed-forward too.
+    fn set_inertial(&mut self, k: usize, inertial: Inertial) {
+        self.inertials[k - 1] = inertial;
+        if let Some(body) = self.world.bodies.get_mut(self.bodies[k]) {
+            body.set_additional_mass_properties(inertial.mass_properties(), true);
+        }
     }
 
     /// Sets the frame of joint `i` (0-based) in its parent link.

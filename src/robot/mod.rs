@@ -14,7 +14,7 @@ mod simulator;
 mod urdf;
 
 pub use description::{Chain, DescriptionError, DescriptionOptions, RobotDescription};
-pub use dynamic::{DynamicSettings, DynamicSim, SimCounters};
+pub use dynamic::{Drive, DynamicSettings, DynamicSim, FreeArm, SimCounters};
 pub use error::{RobotError, UrdfError, UrdfErrorKind};
 pub use joint::{LinkBody, RevoluteJoint, Shape};
 pub use kinematic::KinematicSim;

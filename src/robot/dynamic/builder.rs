@@ -3,11 +3,12 @@
 //! a fixed base, each joint with its limits and a position motor. The fixed camera joint is
 //! merged away: the camera link's mass and collider ride on link 6.
 
+use super::body_parts::body_parts;
 use super::colliders::collider;
 use super::convert::to_pose;
 use super::inertia::Inertial;
 use super::settings::DynamicSettings;
-use crate::robot::{ArmModel, Joints, Shape};
+use crate::robot::{ArmModel, Joints};
 use nalgebra::{Isometry3, Unit, UnitQuaternion, Vector3};
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::prelude::{
@@ -17,9 +18,6 @@ use rapier3d_f64::prelude::{
 
 /// Standard gravity (m/s²), pulling along −z.
 pub(super) const GRAVITY: f64 = 9.81;
-
-/// A body's collider and the URDF collision elements it was made from (link frame).
-pub(super) type BodyCollider = (ColliderHandle, Vec<(Isometry3<f64>, Shape)>);
 
 /// The arm inside its Rapier world.
 pub(super) struct Arm {
@@ -32,7 +30,7 @@ pub(super) struct Arm {
     /// Rigid bodies of the base and links 1–6.
     pub(super) bodies: [RigidBodyHandle; 7],
     /// Each body's collider, base first (none for a body without collision elements).
-    pub(super) colliders: Vec<Option<BodyCollider>>,
+    pub(super) colliders: [Option<ColliderHandle>; 7],
     /// Mass properties of links 1–6 as simulated (the camera in link 6, a stretched link
     /// as stretched).
     pub(super) inertials: [Inertial; 6],
@@ -55,21 +53,11 @@ impl Arm {
         world.integration_parameters.dt = settings.dt;
         world.integration_parameters.num_solver_iterations = settings.solver_iterations;
         let frames = model.link_frames(&Joints::zeros());
-        let links = model.links();
         let mut bodies = Vec::with_capacity(7);
         let mut colliders = Vec::with_capacity(7);
         let mut inertials = Vec::with_capacity(6);
         for k in 0..7 {
-            let mut parts = vec![(Isometry3::identity(), &links[k])];
-            if k == 6 {
-                parts.push((model.camera_mount(), &links[7]));
-            }
-            let inertial = Inertial::sum(
-                &parts
-                    .iter()
-                    .map(|(at, l)| Inertial::of_link(l, at))
-                    .collect::<Vec<_>>(),
-            );
+            let (inertial, elements) = body_parts(model, k);
             let (builder, frame) = match k {
                 0 => (RigidBodyBuilder::fixed(), Isometry3::identity()),
                 _ => (RigidBodyBuilder::dynamic(), frames[k - 1]),
@@ -83,14 +71,8 @@ impl Arm {
             if k > 0 {
                 inertials.push(inertial);
             }
-            let elements: Vec<(Isometry3<f64>, Shape)> = parts
-                .iter()
-                .flat_map(|(at, link)| link.collisions.iter().map(move |(p, s)| (*at * p, *s)))
-                .collect();
-            let own = (!elements.is_empty()).then(|| {
-                let handle = world.insert_collider(collider(&elements), Some(body));
-                (handle, elements)
-            });
+            let own = (!elements.is_empty())
+                .then(|| world.insert_collider(collider(&elements), Some(body)));
             bodies.push(body);
             colliders.push(own);
         }
@@ -137,7 +119,7 @@ impl Arm {
             multibody,
             link_ids,
             bodies: bodies.try_into().expect("seven bodies"),
-            colliders,
+            colliders: colliders.try_into().expect("seven bodies"),
             inertials: inertials.try_into().expect("six links"),
         }
     }
@@ -186,6 +168,12 @@ mod tests {
             (com.x - (0.5 * 0.03 + 0.3 * 0.07) / 0.8).abs() < 1e-12,
             "{com}"
         );
-        assert_eq!(arm.colliders[6].as_ref().map(|(_, e)| e.len()), Some(2));
+        let flange = arm.colliders[6].map(|h| {
+            arm.world.colliders[h]
+                .shape()
+                .as_compound()
+                .map(|c| c.shapes().len())
+        });
+        assert_eq!(flange, Some(Some(2)), "link 6 and the camera collide");
     }
 }

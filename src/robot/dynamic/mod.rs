@@ -1,9 +1,11 @@
 //! The dynamic simulator: the OSCAR-6 as a Rapier multibody under gravity, moved by
 //! position servos that follow each move's trapezoidal profile, then settle.
 
+mod body_parts;
 mod builder;
 mod colliders;
 mod convert;
+mod free;
 mod gravity;
 mod inertia;
 mod motors;
@@ -11,5 +13,6 @@ mod settings;
 mod settle;
 mod sim;
 
+pub use free::{Drive, FreeArm};
 pub use settings::DynamicSettings;
 pub use sim::{DynamicSim, SimCounters};

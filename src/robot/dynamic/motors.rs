@@ -5,7 +5,7 @@ use super::builder::Arm;
 use super::settings::DynamicSettings;
 use crate::robot::Joints;
 use rapier3d_f64::math::Vector;
-use rapier3d_f64::prelude::{nalgebra::DVector, JointAxis, Multibody};
+use rapier3d_f64::prelude::{nalgebra::DVector, JointAxesMask, JointAxis, Multibody};
 
 /// Index of the revolute degree of freedom (`AngX`) in a joint's coordinates.
 const ANGLE: usize = 3;
@@ -65,6 +65,29 @@ impl Arm {
                         settings.motor_damping,
                     )
                     .set_motor_max_force(JointAxis::AngX, max_force[i]);
+            }
+        }
+    }
+
+    /// Turns every servo off (no force at all) and the gravity feed-forward with it;
+    /// without `limits` the joints turn freely past their URDF limits.
+    pub(super) fn release(&mut self, limits: bool) {
+        let ids = self.link_ids;
+        let mb = self.multibody_mut();
+        for id in ids {
+            if let Some(link) = mb.link_mut(id) {
+                let joint = &mut link.joint.data;
+                joint
+                    .set_motor(JointAxis::AngX, 0.0, 0.0, 0.0, 0.0)
+                    .set_motor_max_force(JointAxis::AngX, 0.0);
+                if !limits {
+                    joint.limit_axes.remove(JointAxesMask::ANG_X);
+                }
+            }
+        }
+        for &body in &self.bodies[1..] {
+            if let Some(rb) = self.world.bodies.get_mut(body) {
+                rb.reset_torques(false);
             }
         }
     }

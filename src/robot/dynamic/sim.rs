@@ -32,13 +32,14 @@
 //!   link. The camera link is merged into link 6; turning the camera turns the model's
 //!   mount, not its collider.
 
+use super::body_parts::body_parts;
 use super::builder::{joint_frame, Arm};
-use super::colliders::{compound, stretched};
+use super::colliders::compound;
 use super::convert::{to_isometry, to_pose};
 use super::inertia::Inertial;
 use super::settings::DynamicSettings;
 use crate::robot::{ArmModel, Controlled, Joints, KinematicSim, MoveReport, RobotError, Simulator};
-use nalgebra::{Isometry3, Unit};
+use nalgebra::Isometry3;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
@@ -106,6 +107,12 @@ impl DynamicSim {
         Arc::clone(&self.counters)
     }
 
+    /// The joint torques (N·m) the gravity feed-forward gives at pose `q`: what holds the
+    /// arm's weight there, from the links' mass properties as simulated.
+    pub fn holding_torques(&self, q: &Joints) -> [f64; 6] {
+        self.arm.weight_torques(self.plan.model(), q).0
+    }
+
     /// The settings in use.
     pub fn settings(&self) -> &DynamicSettings {
         &self.settings
@@ -157,25 +164,14 @@ impl Simulator for DynamicSim {
         let model = self.plan.model();
         let joint = &model.joints()[link];
         let frame = to_pose(&joint_frame(&joint.origin, &joint.axis));
-        let direction = Unit::new_normalize(joint.origin.translation.vector);
-        let stretch = model.link_stretch(link);
+        let (inertial, elements) = body_parts(model, link);
         self.arm.set_joint_frame(link, frame);
-        if let Some((handle, elements)) = &self.arm.colliders[link] {
-            let grown: Vec<_> = elements
-                .iter()
-                .map(|(pose, shape)| stretched(pose, shape, &direction, stretch))
-                .collect();
-            if let Some(collider) = self.arm.world.colliders.get_mut(*handle) {
-                collider.set_shape(compound(&grown));
-            }
-        }
-        let length = joint.origin.translation.vector.norm();
-        let inertial = Inertial::of_link(&model.links()[link], &Isometry3::identity()).stretched(
-            &direction,
-            length - stretch,
-            length,
-        );
         self.arm.set_inertial(link, inertial);
+        if let Some(collider) =
+            self.arm.colliders[link].and_then(|handle| self.arm.world.colliders.get_mut(handle))
+        {
+            collider.set_shape(compound(&elements));
+        }
         self.arm.refresh_bodies();
         self.settle();
         Ok(())

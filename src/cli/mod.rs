@@ -1,10 +1,11 @@
-//! The command line: `eyehand run`, `plot`, `compare`, `sweep`, `check-config` and `fk`.
+//! The command line: `eyehand run`, `plot`, `compare`, `sweep`, `check-config`, `fk` and `simulate`.
 //! Flags are parsed here (validation only); each command hands resolved values to the
 //! library and turns the outcome into an exit code: 2 for bad input, 1 for a failed run,
 //! 130/143 for a run stopped by SIGINT/SIGTERM. Output goes through [`say`], so a closed
 //! pipe or a full disk behind stdout ends the program with a code, never a panic.
 
 mod run;
+mod simulate;
 mod study;
 mod tools;
 
@@ -34,6 +35,8 @@ enum Command {
     CheckConfig(tools::CheckConfigArgs),
     /// Prints the camera centre (cm, world frame) and all six joint angles (°) of a pose.
     Fk(tools::FkArgs),
+    /// Runs the dynamic arm free from a pose (servos off or holding) and prints every tick.
+    Simulate(simulate::SimulateArgs),
 }
 
 /// What a command's failure exits with, and says.
@@ -85,6 +88,7 @@ pub fn execute(cli: Cli) -> ExitCode {
         Command::Sweep(args) => study::sweep(args),
         Command::CheckConfig(args) => tools::check_config(args),
         Command::Fk(args) => tools::fk(args),
+        Command::Simulate(args) => simulate::simulate(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -80,6 +80,7 @@ fn passive_swings_from_regular_poses_follow_mujoco() {
             settings,
             Drive::Passive,
             false,
+            false, // MuJoCo's arm has no contacts
         )
         .expect("a finite start");
         let mut gaps = Vec::new();

@@ -41,6 +41,10 @@ pub(super) struct SimulateArgs {
     /// The joints turn past their URDF limits.
     #[arg(long)]
     no_limits: bool,
+    /// No contacts: the links pass through the floor (by default at −22 cm, the config's
+    /// `floor_z` default) and each other.
+    #[arg(long)]
+    no_contacts: bool,
     /// Prints one JSON document: {"dt_s", "ticks": [{"t_s", "joints_deg", "speeds_deg_s"}]}.
     #[arg(long, conflicts_with = "csv")]
     json: bool,
@@ -65,8 +69,15 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
         dt: args.dt,
         ..DynamicSettings::default()
     };
-    let mut arm =
-        FreeArm::new(model, &start, settings, drive, !args.no_limits).map_err(bad_input)?;
+    let mut arm = FreeArm::new(
+        model,
+        &start,
+        settings,
+        drive,
+        !args.no_limits,
+        !args.no_contacts,
+    )
+    .map_err(bad_input)?;
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
     let write = |out: &mut dyn Write, arm: &FreeArm, first: bool| {
         let (q, v) = (arm.joints(), arm.speeds());

@@ -223,6 +223,8 @@ fn drive(
     progress.finish();
     let wall_seconds = started.elapsed().as_secs_f64();
     let stats = learner.stats();
+    let work = trials.sim().work();
+    let per_trial = |v: f64| v / config.trials as f64;
     let summary = RunSummary {
         method: learner.name().to_string(),
         sim: config.sim.to_string(),
@@ -236,6 +238,10 @@ fn drive(
         bins: stats.bins,
         patterns: stats.patterns,
         failures: failures.total(),
+        physics_steps_per_trial: per_trial(work.physics_steps as f64),
+        simulated_seconds_per_trial: per_trial(work.simulated_seconds),
+        settle_timeouts: work.settle_timeouts,
+        stopped_by_contact: work.contact_stops,
         events: events.iter().map(Event::to_string).collect(),
         window: figures.window(),
         mean_distance_mm: figures.means(),
@@ -309,6 +315,18 @@ fn write_info_tail(folder: &Path, summary: &RunSummary, stats: &LearnerStats) ->
     if summary.interrupted {
         writeln!(info, "interrupted after trial {}", summary.trials)?;
     }
+    writeln!(
+        info,
+        "physics_steps_per_trial {:.1}",
+        summary.physics_steps_per_trial
+    )?;
+    writeln!(
+        info,
+        "simulated_seconds_per_trial {:.4}",
+        summary.simulated_seconds_per_trial
+    )?;
+    writeln!(info, "settle_timeouts {}", summary.settle_timeouts)?;
+    writeln!(info, "stopped_by_contact {}", summary.stopped_by_contact)?;
     writeln!(info, "peak_rss_kb {}", summary.peak_rss_kb)?;
     writeln!(info, "\n# tree per level: depth nodes bins patterns error")?;
     for (depth, level) in stats.levels.iter().enumerate() {

@@ -32,6 +32,14 @@ pub struct RunSummary {
     pub patterns: usize,
     /// Trials that failed (object lost or not seen, unreachable target, bad move).
     pub failures: usize,
+    /// Physics steps the simulator took per trial (0 on the kinematic simulator).
+    pub physics_steps_per_trial: f64,
+    /// Simulated seconds of moves per trial, settling included.
+    pub simulated_seconds_per_trial: f64,
+    /// Moves, placings and link changes after which the dynamic arm had not settled in time.
+    pub settle_timeouts: u64,
+    /// Moves stopped by a contact: the floor (both simulators) or another link (dynamic).
+    pub stopped_by_contact: u64,
     /// The run's events (`rotate:TRIAL:DEG`, `elongate:TRIAL:LINK:CM`), in trial order.
     pub events: Vec<String>,
     /// The number of last trials the distance figures are taken over.

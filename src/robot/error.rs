@@ -144,6 +144,16 @@ pub enum UrdfErrorKind {
         /// Velocity limit (rad/s).
         velocity: f64,
     },
+    /// A `<dynamics>` damping or friction that is negative or not finite.
+    #[error("joint `{joint}` needs a finite, non-negative dynamics damping and friction (has {damping} N·m·s/rad, {friction} N·m)")]
+    BadDynamics {
+        /// The joint.
+        joint: String,
+        /// Viscous damping (N·m·s/rad).
+        damping: f64,
+        /// Dry friction (N·m).
+        friction: f64,
+    },
     /// A link mass that is not positive.
     #[error("link `{link}` needs a positive mass, has {mass}")]
     NoMass {

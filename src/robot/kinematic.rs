@@ -1,9 +1,10 @@
 //! The kinematic simulator: forward kinematics straight from the URDF, no dynamics. A move
 //! is instant in wall time; its simulated duration follows the trapezoidal profile.
 
+use super::collision::{body_elements, floor_stop, reach, Elements};
 use super::model::{ArmModel, Controlled, Joints};
 use super::motion::{limit_stop_fraction, TrapezoidProfile};
-use super::simulator::{MoveReport, MoveSettings, Simulator};
+use super::simulator::{MoveReport, MoveSettings, SimWork, Simulator};
 use super::RobotError;
 use nalgebra::{Isometry3, Vector3};
 
@@ -17,6 +18,10 @@ pub struct KinematicSim {
     settings: MoveSettings,
     theta: Controlled,
     joints: Joints,
+    /// Each link's collision elements (link 1 first) and how far they reach, for the floor.
+    collision: [Elements; 6],
+    reach: f64,
+    work: SimWork,
 }
 
 impl KinematicSim {
@@ -26,12 +31,23 @@ impl KinematicSim {
         let upper = Vector3::from_fn(|i, _| model.joints()[i].upper);
         let theta = Controlled::zeros().sup(&lower).inf(&upper);
         let joints = model.full_pose(&theta);
-        KinematicSim {
+        let mut sim = KinematicSim {
             model,
             settings,
             theta,
             joints,
-        }
+            collision: Default::default(),
+            reach: 0.0,
+            work: SimWork::default(),
+        };
+        sim.refresh_collision();
+        sim
+    }
+
+    /// Takes the collision elements from the model as it is now.
+    fn refresh_collision(&mut self) {
+        self.collision = std::array::from_fn(|k| body_elements(&self.model, k + 1));
+        self.reach = reach(&self.model, &self.collision);
     }
 
     fn limits(&self) -> (Vector3<f64>, Vector3<f64>) {
@@ -75,6 +91,7 @@ impl Simulator for KinematicSim {
             commanded: *delta,
             executed: Controlled::zeros(),
             stopped_by_limit: None,
+            stopped_by_contact: false,
             duration: 0.0,
             settled: true,
         };
@@ -94,6 +111,21 @@ impl Simulator for KinematicSim {
             fraction = self.wrist_stop(delta, fraction);
             report.stopped_by_limit = Some(4);
         }
+        let floor = floor_stop(
+            &self.model,
+            &self.collision,
+            self.reach,
+            &self.theta,
+            delta,
+            fraction,
+            self.settings.floor_z,
+        );
+        if floor < fraction {
+            fraction = floor;
+            report.stopped_by_limit = None;
+            report.stopped_by_contact = true;
+            self.work.contact_stops += 1;
+        }
         let before = self.theta;
         self.theta = (self.theta + delta * fraction).sup(&lower).inf(&upper);
         let executed = self.theta - before;
@@ -102,6 +134,8 @@ impl Simulator for KinematicSim {
         report.duration =
             TrapezoidProfile::new(executed.amax(), self.settings.speed, self.settings.accel)
                 .duration();
+        self.work.moves += 1;
+        self.work.simulated_seconds += report.duration;
         report
     }
 
@@ -116,6 +150,7 @@ impl Simulator for KinematicSim {
     fn stretch_link(&mut self, link: usize, delta_m: f64) -> Result<(), RobotError> {
         self.model.stretch_link(link, delta_m)?;
         self.joints = self.model.full_pose(&self.theta);
+        self.refresh_collision();
         Ok(())
     }
 
@@ -123,6 +158,11 @@ impl Simulator for KinematicSim {
         if angle.is_finite() {
             self.model.rotate_camera(angle);
             self.joints = self.model.full_pose(&self.theta);
+            self.refresh_collision();
         }
+    }
+
+    fn work(&self) -> SimWork {
+        self.work
     }
 }

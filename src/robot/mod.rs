@@ -1,6 +1,7 @@
 //! The OSCAR-6 arm: its URDF model and forward kinematics, inverse kinematics for the
 //! camera position, the reach space, moves, and the simulators behind one trait.
 
+mod collision;
 pub mod description;
 mod dynamic;
 mod error;
@@ -13,6 +14,7 @@ mod reach;
 mod simulator;
 mod urdf;
 
+pub use collision::DEFAULT_FLOOR_Z;
 pub use description::{Chain, DescriptionError, DescriptionOptions, RobotDescription};
 pub use dynamic::{Drive, DynamicSettings, DynamicSim, FreeArm, SimCounters};
 pub use error::{RobotError, UrdfError, UrdfErrorKind};
@@ -21,5 +23,5 @@ pub use kinematic::KinematicSim;
 pub use model::{ArmModel, Controlled, Joints};
 pub use motion::{limit_stop_fraction, TrapezoidProfile};
 pub use reach::ReachSpace;
-pub use simulator::{MoveReport, MoveSettings, Simulator};
+pub use simulator::{MoveReport, MoveSettings, SimWork, Simulator};
 pub use urdf::{load_urdf, parse_urdf, DEFAULT_URDF, DEFAULT_URDF_NAME};

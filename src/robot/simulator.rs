@@ -2,7 +2,7 @@
 //! or dynamic.
 
 use super::model::{ArmModel, Controlled, Joints};
-use super::RobotError;
+use super::{RobotError, DEFAULT_FLOOR_Z};
 use nalgebra::Isometry3;
 
 /// How commanded moves are executed.
@@ -12,15 +12,25 @@ pub struct MoveSettings {
     pub speed: f64,
     /// Joint acceleration (rad/s²) of the lead joint.
     pub accel: f64,
+    /// Height of the floor (m, world frame): a move stops where a link or the camera
+    /// would go below it; default [`DEFAULT_FLOOR_Z`], `-inf` for none.
+    pub floor_z: f64,
 }
 
 impl MoveSettings {
-    /// Settings from the config's `robot_speed` (°/s) and `robot_accel` (°/s²).
+    /// Settings from the config's `robot_speed` (°/s) and `robot_accel` (°/s²), with the
+    /// default floor.
     pub fn from_degrees(speed_deg: f64, accel_deg: f64) -> MoveSettings {
         MoveSettings {
             speed: speed_deg.to_radians(),
             accel: accel_deg.to_radians(),
+            floor_z: DEFAULT_FLOOR_Z,
         }
+    }
+
+    /// These settings with the floor at `floor_z` (m).
+    pub fn with_floor(self, floor_z: f64) -> MoveSettings {
+        MoveSettings { floor_z, ..self }
     }
 }
 
@@ -33,10 +43,28 @@ pub struct MoveReport {
     pub executed: Controlled,
     /// The 0-based joint whose limit stopped the move early, if one did.
     pub stopped_by_limit: Option<usize>,
+    /// True when the move stopped early because a link or the camera touched the floor
+    /// (either simulator) or another link (the dynamic one).
+    pub stopped_by_contact: bool,
     /// Simulated duration of the move (s), settling included.
     pub duration: f64,
     /// False when a dynamic move timed out before the arm settled.
     pub settled: bool,
+}
+
+/// What a simulator has done so far (the kinematic one takes no physics steps).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct SimWork {
+    /// Moves executed.
+    pub moves: u64,
+    /// Physics steps taken (moves, placing, settling).
+    pub physics_steps: u64,
+    /// Simulated time (s) of the moves, settling included.
+    pub simulated_seconds: f64,
+    /// Moves, placings and link changes after which the arm had not settled in time.
+    pub settle_timeouts: u64,
+    /// Moves stopped by a contact (floor or another link).
+    pub contact_stops: u64,
 }
 
 /// A simulated OSCAR-6 with a camera in its end-effector.
@@ -64,4 +92,7 @@ pub trait Simulator: std::fmt::Debug {
 
     /// Turns the camera about its optical axis by `angle` (rad).
     fn rotate_camera(&mut self, angle: f64);
+
+    /// What the simulator has done so far.
+    fn work(&self) -> SimWork;
 }

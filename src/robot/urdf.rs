@@ -228,9 +228,11 @@ fn revolute(joint: &urdf_rs::Joint) -> Result<RevoluteJoint, UrdfErrorKind> {
         .as_ref()
         .map_or((0.0, 0.0), |d| (d.damping, d.friction));
     if !(damping.is_finite() && damping >= 0.0 && friction.is_finite() && friction >= 0.0) {
-        return Err(format!(
-            "joint `{name}` needs a finite, non-negative dynamics damping and friction, has {damping} and {friction}"
-        ));
+        return Err(UrdfErrorKind::BadDynamics {
+            joint: name.clone(),
+            damping,
+            friction,
+        });
     }
     Ok(RevoluteJoint {
         name: name.clone(),

@@ -133,6 +133,9 @@ config_entries! {
     /// Dynamic simulator: simulated seconds a move may take to settle before it is
     /// reported as not settled.
     settle_timeout: f64,
+    /// Height of the floor (cm, world frame): a move stops where a link or the camera
+    /// would go below it, in both simulators; default −22 (the lowest target's bottom).
+    floor_z: f64,
     /// Raycast camera: rays per image side (the 512×512 image is sampled N×N).
     raycast_resolution: usize,
     /// Raycast camera: σ of each pixel's grey level (coverage 0–1) before the blob is

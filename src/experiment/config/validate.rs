@@ -10,6 +10,8 @@ use crate::experiment::config_values::ConfigValue;
 /// Most feedback steps a trial may take: a trial learns every pair of its poses, so
 /// N steps give N(N+1)/2 patterns (500,500 at 1000).
 const MAX_FEEDBACK_STEPS: usize = 1000;
+/// Most physics steps one settling may take.
+const MAX_SETTLE_STEPS: f64 = 1e5;
 /// Largest magnitude of an input boundary.
 const MAX_BOUNDARY: f64 = 1e6;
 
@@ -266,26 +268,33 @@ impl Config {
     }
 
     fn check_dynamics(&self) -> Check {
-        rule(
-            self.dt > 0.0 && self.dt <= 0.1,
-            "dt",
-            &self.dt,
-            "must be in (0, 0.1] seconds",
-        )?;
+        within("dt", self.dt, 1e-5, 0.1, " seconds")?;
         within("solver_iterations", self.solver_iterations, 1, 100, "")?;
-        for (name, value) in [
-            ("motor_stiffness", self.motor_stiffness),
-            ("motor_damping", self.motor_damping),
-            ("settle_position_tol", self.settle_position_tol),
-            ("settle_speed_tol", self.settle_speed_tol),
-        ] {
-            rule(value > 0.0, name, &value, "must be above 0")?;
-        }
+        positive_up_to("motor_stiffness", self.motor_stiffness, 1e9, " per s²")?;
+        positive_up_to("motor_damping", self.motor_damping, 1e6, " per s")?;
+        positive_up_to("settle_position_tol", self.settle_position_tol, 10.0, "°")?;
+        positive_up_to("settle_speed_tol", self.settle_speed_tol, 1000.0, "°/s")?;
         rule(
-            self.settle_timeout >= self.dt,
+            self.settle_timeout >= self.dt && self.settle_timeout <= 60.0,
             "settle_timeout",
             &self.settle_timeout,
-            "must be at least one time step (dt)",
+            "must be at least one time step (dt) and at most 60 seconds",
+        )?;
+        rule(
+            self.settle_timeout / self.dt <= MAX_SETTLE_STEPS,
+            "settle_timeout",
+            &self.settle_timeout,
+            &format!(
+                "must be at most {MAX_SETTLE_STEPS} time steps of dt {} s",
+                self.dt
+            ),
+        )?;
+        within(
+            "floor_z",
+            self.floor_z,
+            -1000.0,
+            0.0,
+            " cm (at or below the base plane)",
         )?;
         within("raycast_resolution", self.raycast_resolution, 16, 4096, "")
     }

@@ -69,9 +69,11 @@ pub fn dynamic_settings(config: &Config) -> DynamicSettings {
     }
 }
 
-/// The moves' speed profile from `robot_speed` and `robot_accel`.
+/// The moves' speed profile from `robot_speed` and `robot_accel`, and the floor from
+/// `floor_z`.
 pub fn move_settings(config: &Config) -> MoveSettings {
     MoveSettings::from_degrees(config.robot_speed, config.robot_accel)
+        .with_floor(config.floor_z * M_PER_CM)
 }
 
 /// The learner the config names. `model` is the nominal robot (for `ik`); a learner that

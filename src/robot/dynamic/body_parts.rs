@@ -1,48 +1,26 @@
 //! What each rigid body of the arm is made of: its mass properties and collision elements
-//! in its link frame, with the camera link merged into link 6 and a stretched link grown
-//! as a uniform rod (see [`Inertial::stretched`] and [`stretched`]).
+//! in its link frame, the camera link merged into link 6, a stretched link grown as a
+//! uniform rod (see [`Inertial::stretched`]).
 
-use super::colliders::stretched;
 use super::inertia::Inertial;
-use crate::robot::{ArmModel, Shape};
-use nalgebra::{Isometry3, Unit};
-
-/// Collision elements of a body: shapes and their poses in the body's frame.
-pub(super) type Elements = Vec<(Isometry3<f64>, Shape)>;
+use crate::robot::collision::{body_elements, stretch_of, Elements};
+use crate::robot::ArmModel;
+use nalgebra::Isometry3;
 
 /// Body `k` (0 the base, 1–6 the links) of `model` as it is now.
 pub(super) fn body_parts(model: &ArmModel, k: usize) -> (Inertial, Elements) {
     let links = model.links();
-    let mut parts = vec![(Isometry3::identity(), &links[k])];
+    let mut parts = vec![Inertial::of_link(&links[k], &Isometry3::identity())];
     if k == 6 {
-        parts.push((model.camera_mount(), &links[7]));
+        parts.push(Inertial::of_link(&links[7], &model.camera_mount()));
     }
-    let inertial = Inertial::sum(
-        &parts
-            .iter()
-            .map(|(at, link)| Inertial::of_link(link, at))
-            .collect::<Vec<_>>(),
-    );
-    let elements: Elements = parts
-        .iter()
-        .flat_map(|(at, link)| link.collisions.iter().map(move |(p, s)| (*at * p, *s)))
-        .collect();
-    let stretch = if (1..=3).contains(&k) {
-        model.link_stretch(k)
-    } else {
-        0.0
+    let inertial = Inertial::sum(&parts);
+    let inertial = match stretch_of(model, k) {
+        Some((direction, stretch)) => {
+            let length = model.joints()[k].origin.translation.vector.norm();
+            inertial.stretched(&direction, length - stretch, length)
+        }
+        None => inertial,
     };
-    if stretch == 0.0 {
-        return (inertial, elements);
-    }
-    let far = model.joints()[k].origin.translation.vector;
-    let direction = Unit::new_normalize(far);
-    let length = far.norm();
-    (
-        inertial.stretched(&direction, length - stretch, length),
-        elements
-            .iter()
-            .map(|(pose, shape)| stretched(pose, shape, &direction, stretch))
-            .collect(),
-    )
+    (inertial, body_elements(model, k))
 }

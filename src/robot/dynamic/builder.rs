@@ -105,7 +105,6 @@ impl Arm {
         let multibody = link_of(bodies[1]).multibody;
         let link_ids = std::array::from_fn(|i| link_of(bodies[i + 1]).id);
         if let Some(mb) = world.multibody_joints.get_multibody_mut(multibody) {
-            mb.set_self_contacts_enabled(false);
             // Rapier gives every joint a damping of its own; the URDF's is the one to use.
             mb.damping_mut().fill(0.0);
             for (joint, &id) in model.joints().iter().zip(&link_ids) {
@@ -114,14 +113,16 @@ impl Arm {
                 }
             }
         }
-        Arm {
+        let mut arm = Arm {
             world,
             multibody,
             link_ids,
             bodies: bodies.try_into().expect("seven bodies"),
             colliders: colliders.try_into().expect("seven bodies"),
             inertials: inertials.try_into().expect("six links"),
-        }
+        };
+        arm.add_world(model, settings.moves.floor_z);
+        arm
     }
 }
 

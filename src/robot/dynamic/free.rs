@@ -28,14 +28,16 @@ pub struct FreeArm {
 impl FreeArm {
     /// The arm of `model` at rest at `start` (all six angles, rad), stepped with
     /// `settings` (sanitised as the dynamic simulator does); with `limits` false the
-    /// joints turn past their URDF limits. Fails when a start angle is not finite, or
-    /// outside its limits while they apply.
+    /// joints turn past their URDF limits, with `contacts` false the links pass through
+    /// the floor and each other. Fails when a start angle is not finite, or outside its
+    /// limits while they apply.
     pub fn new(
         model: ArmModel,
         start: &Joints,
         settings: DynamicSettings,
         drive: Drive,
         limits: bool,
+        contacts: bool,
     ) -> Result<FreeArm, RobotError> {
         let outside = match start.iter().position(|a| !a.is_finite()) {
             Some(i) => Some(i),
@@ -56,6 +58,9 @@ impl FreeArm {
         arm.teleport(start);
         if drive == Drive::Passive || !limits {
             arm.release(limits);
+        }
+        if !contacts {
+            arm.remove_contacts();
         }
         Ok(FreeArm {
             arm,
@@ -99,14 +104,14 @@ impl FreeArm {
     }
 
     /// The joint accelerations (rad/s²) of the arm at rest at `q` with its servos off:
-    /// one step from rest, its speeds over `dt` (exact for the semi-implicit step, which
-    /// takes the accelerations at the start pose; joint limits off).
+    /// one step from rest, its speeds over `dt` (the instant's accelerations as `dt` goes
+    /// to 0; joint limits and contacts off).
     pub fn accelerations_at_rest(
         model: ArmModel,
         q: &Joints,
         settings: DynamicSettings,
     ) -> Result<Joints, RobotError> {
-        let mut arm = FreeArm::new(model, q, settings, Drive::Passive, false)?;
+        let mut arm = FreeArm::new(model, q, settings, Drive::Passive, false, false)?;
         arm.step();
         Ok(arm.speeds() / arm.dt())
     }

@@ -4,6 +4,7 @@
 mod body_parts;
 mod builder;
 mod colliders;
+mod contacts;
 mod convert;
 mod free;
 mod gravity;

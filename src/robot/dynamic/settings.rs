@@ -7,8 +7,8 @@ use crate::robot::MoveSettings;
 /// shipped configs: a stiff, critically damped 25 Hz servo on a 200 Hz control loop.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DynamicSettings {
-    /// The trapezoidal profile of a move (top speed and acceleration of the lead joint);
-    /// default 90°/s and 180°/s².
+    /// The trapezoidal profile of a move (top speed and acceleration of the lead joint)
+    /// and the floor; default 90°/s, 180°/s² and −0.22 m.
     pub moves: MoveSettings,
     /// Physics and control time step (s); default 0.005 (200 Hz).
     pub dt: f64,
@@ -61,6 +61,11 @@ impl DynamicSettings {
             moves: MoveSettings {
                 speed: pick(self.moves.speed, default.moves.speed),
                 accel: pick(self.moves.accel, default.moves.accel),
+                floor_z: if self.moves.floor_z.is_nan() {
+                    default.moves.floor_z
+                } else {
+                    self.moves.floor_z
+                },
             },
             dt: pick(self.dt, default.dt),
             solver_iterations: self.solver_iterations.max(1),

@@ -25,8 +25,9 @@ impl DynamicSim {
     }
 
     /// Feeds the move from set-point `start` along `delta` (θ1..θ3) to the servos under the
-    /// trapezoidal profile, one tick per step; returns the steps taken.
-    pub(super) fn follow(&mut self, start: &Joints, delta: &Controlled) -> usize {
+    /// trapezoidal profile, one tick per step, until a contact stops it: the steps taken,
+    /// and whether a contact stopped it.
+    pub(super) fn follow(&mut self, start: &Joints, delta: &Controlled) -> (usize, bool) {
         let moves = self.settings.moves;
         let profile = TrapezoidProfile::new(delta.amax(), moves.speed, moves.accel);
         let dt = self.settings.dt;
@@ -36,9 +37,12 @@ impl DynamicSim {
         for k in 0..ticks {
             let next = self.set_point(&from, delta, profile.fraction_at((k + 1) as f64 * dt));
             self.tick(&now, &((next - now) / dt));
+            if self.arm.in_contact() {
+                return (k + 1, true);
+            }
             now = next;
         }
-        ticks
+        (ticks, false)
     }
 
     /// Steps at the current set-point until the arm has settled or the time-out: whether

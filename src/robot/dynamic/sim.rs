@@ -38,7 +38,9 @@ use super::colliders::compound;
 use super::convert::{to_isometry, to_pose};
 use super::inertia::Inertial;
 use super::settings::DynamicSettings;
-use crate::robot::{ArmModel, Controlled, Joints, KinematicSim, MoveReport, RobotError, Simulator};
+use crate::robot::{
+    ArmModel, Controlled, Joints, KinematicSim, MoveReport, RobotError, SimWork, Simulator,
+};
 use nalgebra::Isometry3;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
@@ -50,6 +52,7 @@ pub struct SimCounters {
     pub(super) steps: AtomicU64,
     pub(super) moves: AtomicU64,
     pub(super) settle_timeouts: AtomicU64,
+    pub(super) contact_stops: AtomicU64,
 }
 
 impl SimCounters {
@@ -66,6 +69,11 @@ impl SimCounters {
     /// Moves, placings and link changes after which the arm had not settled in time.
     pub fn settle_timeouts(&self) -> u64 {
         self.settle_timeouts.load(Ordering::Relaxed)
+    }
+
+    /// Moves a contact stopped (the floor, in the plan or in the physics, or another link).
+    pub fn contact_stops(&self) -> u64 {
+        self.contact_stops.load(Ordering::Relaxed)
     }
 
     pub(super) fn count(counter: &AtomicU64) {
@@ -140,7 +148,18 @@ impl Simulator for DynamicSim {
             return report;
         }
         SimCounters::count(&self.counters.moves);
-        let steps = self.follow(&start, &report.executed);
+        let (steps, touched) = self.follow(&start, &report.executed);
+        if touched {
+            // Stopped where the contact found the arm: the plan follows.
+            let reached = self.arm.joints().fixed_rows::<3>(0).into_owned();
+            if self.plan.place(&reached).is_ok() {
+                report.stopped_by_contact = true;
+                report.stopped_by_limit = None;
+            }
+        }
+        if report.stopped_by_contact {
+            SimCounters::count(&self.counters.contact_stops);
+        }
         let (settled, settle_steps) = self.settle();
         report.settled = settled;
         report.duration = (steps + settle_steps) as f64 * self.settings.dt;
@@ -179,6 +198,17 @@ impl Simulator for DynamicSim {
 
     fn rotate_camera(&mut self, angle: f64) {
         self.plan.rotate_camera(angle);
+    }
+
+    fn work(&self) -> SimWork {
+        let c = &self.counters;
+        SimWork {
+            moves: c.moves(),
+            physics_steps: c.steps(),
+            simulated_seconds: c.steps() as f64 * self.settings.dt,
+            settle_timeouts: c.settle_timeouts(),
+            contact_stops: c.contact_stops(),
+        }
     }
 }
 

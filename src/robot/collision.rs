@@ -1,0 +1,261 @@
+//! The arm's collision geometry outside any physics engine: each body's collision elements
+//! as the arm is now (the camera on link 6, a stretched link's shapes grown with it), and
+//! how low they reach — the floor rule both simulators share.
+
+use super::{ArmModel, Controlled, Joints, Shape};
+use nalgebra::{Isometry3, Unit, Vector3};
+
+/// Shapes never get shorter than this when a link is shortened (m).
+const MIN_SIZE: f64 = 1e-3;
+/// Cosine above which a shape's axis counts as lying along a link.
+const PARALLEL: f64 = 1.0 - 1e-9;
+/// The floor's default height (m, world frame): the bottom of the lowest target — the
+/// reach space's lowest camera height 0, less the 20 cm standoff and the 2 cm sphere radius.
+pub const DEFAULT_FLOOR_Z: f64 = -0.22;
+
+/// The shortest step of the floor march (a fraction of the move).
+const MIN_MARCH: f64 = 1e-3;
+/// Bisection steps that find where a move meets the floor (1e-12 of a move).
+const FLOOR_BISECTIONS: usize = 40;
+
+/// Collision elements of a body: shapes and their poses in the body's frame.
+pub(crate) type Elements = Vec<(Isometry3<f64>, Shape)>;
+
+/// The collision elements of body `k` (0 the base, 1–6 the links; the camera link rides
+/// on link 6) of `model` as it is now.
+pub(crate) fn body_elements(model: &ArmModel, k: usize) -> Elements {
+    let links = model.links();
+    let mut parts = vec![(Isometry3::identity(), &links[k])];
+    if k == 6 {
+        parts.push((model.camera_mount(), &links[7]));
+    }
+    let elements = parts
+        .iter()
+        .flat_map(|(at, link)| link.collisions.iter().map(move |(p, s)| (*at * p, *s)));
+    match stretch_of(model, k) {
+        Some((direction, stretch)) => elements
+            .map(|(pose, shape)| stretched(&pose, &shape, &direction, stretch))
+            .collect(),
+        None => elements.collect(),
+    }
+}
+
+/// The direction (link frame) and length change (m) of link `k` when it is stretched.
+pub(crate) fn stretch_of(model: &ArmModel, k: usize) -> Option<(Unit<Vector3<f64>>, f64)> {
+    if !(1..=3).contains(&k) {
+        return None;
+    }
+    let stretch = model.link_stretch(k);
+    let far = model.joints()[k].origin.translation.vector;
+    (stretch != 0.0).then(|| (Unit::new_normalize(far), stretch))
+}
+
+/// The lowest world height (m) any moving link or the camera reaches at pose `q`, with
+/// each body's collision elements (`bodies[k - 1]` for link k).
+pub(crate) fn lowest_point(model: &ArmModel, bodies: &[Elements; 6], q: &Joints) -> f64 {
+    let frames = model.link_frames(q);
+    frames
+        .iter()
+        .zip(bodies)
+        .flat_map(|(frame, elements)| elements.iter().map(move |(p, s)| lowest_z(&(frame * p), s)))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// How far any point of the arm can be from a joint axis (m): the joint origins, the
+/// camera mount and each collision element's reach added up. A joint turn of δ rad moves
+/// no point of the arm by more than this times δ.
+pub(crate) fn reach(model: &ArmModel, bodies: &[Elements; 6]) -> f64 {
+    let chain: f64 = model
+        .joints()
+        .iter()
+        .map(|j| j.origin.translation.vector.norm())
+        .sum();
+    let extent = |(pose, shape): &(Isometry3<f64>, Shape)| {
+        pose.translation.vector.norm()
+            + match *shape {
+                Shape::Sphere { radius } => radius,
+                Shape::Cuboid(size) => 0.5 * size.norm(),
+                Shape::Cylinder { radius, length } | Shape::Capsule { radius, length } => {
+                    radius + 0.5 * length
+                }
+            }
+    };
+    let shapes = bodies.iter().flatten().map(extent).fold(0.0, f64::max);
+    chain + model.camera_mount().translation.vector.norm() + shapes
+}
+
+/// How far along the controlled move from `theta` by `delta` (fractions up to `up_to`)
+/// the arm gets before a link or the camera would go below `floor` (m): `up_to` when
+/// none does, or when the arm starts below it. Marches in steps that cannot skip a dip
+/// (each no longer than the clearance over `reach` allows), then bisects the crossing.
+pub(crate) fn floor_stop(
+    model: &ArmModel,
+    bodies: &[Elements; 6],
+    reach: f64,
+    theta: &Controlled,
+    delta: &Controlled,
+    up_to: f64,
+    floor: f64,
+) -> f64 {
+    let clearance =
+        |s: f64| lowest_point(model, bodies, &model.full_pose(&(theta + delta * s))) - floor;
+    // θ5 follows θ2 and θ3: it turns by at most their sum.
+    let speed = reach * (delta.abs().sum() + (delta.y.abs() + delta.z.abs()));
+    let mut s = 0.0;
+    let mut gap = clearance(0.0);
+    if !(gap >= 0.0) || speed == 0.0 {
+        return up_to;
+    }
+    while s < up_to {
+        let next = (s + (gap / speed).max(MIN_MARCH)).min(up_to);
+        let next_gap = clearance(next);
+        if next_gap < 0.0 {
+            let (mut above, mut below) = (s, next);
+            for _ in 0..FLOOR_BISECTIONS {
+                let middle = 0.5 * (above + below);
+                if clearance(middle) < 0.0 {
+                    below = middle;
+                } else {
+                    above = middle;
+                }
+            }
+            return above;
+        }
+        (s, gap) = (next, next_gap);
+    }
+    up_to
+}
+
+/// The lowest world height (m) of `shape` at world pose `pose`.
+fn lowest_z(pose: &Isometry3<f64>, shape: &Shape) -> f64 {
+    let centre = pose.translation.vector.z;
+    let axis_z = (pose.rotation * Vector3::z()).z.abs();
+    let across = (1.0 - axis_z * axis_z).max(0.0).sqrt();
+    match *shape {
+        Shape::Sphere { radius } => centre - radius,
+        Shape::Cuboid(size) => {
+            let r = pose.rotation.to_rotation_matrix();
+            centre - (0..3).map(|i| r[(2, i)].abs() * 0.5 * size[i]).sum::<f64>()
+        }
+        Shape::Cylinder { radius, length } => centre - 0.5 * length * axis_z - radius * across,
+        Shape::Capsule { radius, length } => centre - 0.5 * length * axis_z - radius,
+    }
+}
+
+/// The collision element after its link grew by `delta` (m) along `direction` (the link's
+/// far joint origin, in the link frame): a cylinder, capsule or box lying along the link
+/// gets longer by `delta` and its centre moves by half of it, so it still spans the link
+/// from joint to joint; other shapes stay as they are.
+pub(crate) fn stretched(
+    pose: &Isometry3<f64>,
+    shape: &Shape,
+    direction: &Unit<Vector3<f64>>,
+    delta: f64,
+) -> (Isometry3<f64>, Shape) {
+    let along = |local: Vector3<f64>| (pose.rotation * local).dot(direction).abs() > PARALLEL;
+    let shifted = || {
+        let mut moved = *pose;
+        moved.translation.vector += direction.into_inner() * (0.5 * delta);
+        moved
+    };
+    let longer = |length: f64| (length + delta).max(MIN_SIZE);
+    match *shape {
+        Shape::Cylinder { radius, length } if along(Vector3::z()) => (
+            shifted(),
+            Shape::Cylinder {
+                radius,
+                length: longer(length),
+            },
+        ),
+        Shape::Capsule { radius, length } if along(Vector3::z()) => (
+            shifted(),
+            Shape::Capsule {
+                radius,
+                length: longer(length),
+            },
+        ),
+        Shape::Cuboid(size) => match (0..3).find(|&k| along(Vector3::ith(k, 1.0))) {
+            Some(k) => {
+                let mut size = size;
+                size[k] = longer(size[k]);
+                (shifted(), Shape::Cuboid(size))
+            }
+            None => (*pose, *shape),
+        },
+        _ => (*pose, *shape),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::FRAC_PI_2;
+
+    #[test]
+    fn a_cylinder_along_the_link_spans_it_after_a_stretch() {
+        // The upper arm: a 0.6 m cylinder along x, centred halfway to the elbow.
+        let pose = Isometry3::new(Vector3::new(0.3, 0.0, 0.0), Vector3::y() * FRAC_PI_2);
+        let shape = Shape::Cylinder {
+            radius: 0.08,
+            length: 0.6,
+        };
+        let (moved, longer) = stretched(&pose, &shape, &Vector3::x_axis(), 0.1);
+        assert!((moved.translation.vector - Vector3::new(0.35, 0.0, 0.0)).norm() < 1e-15);
+        assert_eq!(
+            longer,
+            Shape::Cylinder {
+                radius: 0.08,
+                length: 0.7
+            }
+        );
+        let ball = Shape::Sphere { radius: 0.05 };
+        assert_eq!(
+            stretched(&pose, &ball, &Vector3::x_axis(), 0.1),
+            (pose, ball)
+        );
+    }
+
+    #[test]
+    fn a_box_grows_along_its_side_that_lies_along_the_link() {
+        let pose = Isometry3::translation(0.0, 0.0, 0.1);
+        let shape = Shape::Cuboid(Vector3::new(0.1, 0.1, 0.2));
+        let (moved, grown) = stretched(&pose, &shape, &Vector3::z_axis(), -0.05);
+        let Shape::Cuboid(size) = grown else {
+            panic!("still a box: {grown:?}")
+        };
+        assert!((size - Vector3::new(0.1, 0.1, 0.15)).norm() < 1e-15);
+        assert!((moved.translation.vector.z - 0.075).abs() < 1e-15);
+    }
+
+    #[test]
+    fn the_lowest_point_of_each_shape() {
+        let tilted = Isometry3::new(Vector3::new(0.0, 0.0, 1.0), Vector3::y() * FRAC_PI_2);
+        let rod = Shape::Cylinder {
+            radius: 0.1,
+            length: 0.6,
+        };
+        // Lying down: the radius reaches lowest; standing: half the length.
+        assert!((lowest_z(&tilted, &rod) - 0.9).abs() < 1e-12);
+        let upright = Isometry3::translation(0.0, 0.0, 1.0);
+        assert!((lowest_z(&upright, &rod) - 0.7).abs() < 1e-12);
+        let capsule = Shape::Capsule {
+            radius: 0.1,
+            length: 0.6,
+        };
+        assert!((lowest_z(&upright, &capsule) - 0.6).abs() < 1e-12);
+        let cube = Shape::Cuboid(Vector3::new(0.2, 0.2, 0.2));
+        let on_edge = Isometry3::new(Vector3::new(0.0, 0.0, 1.0), Vector3::x() * FRAC_PI_2 * 0.5);
+        assert!((lowest_z(&on_edge, &cube) - (1.0 - 0.1 * 2f64.sqrt())).abs() < 1e-12);
+        assert!((lowest_z(&upright, &Shape::Sphere { radius: 0.3 }) - 0.7).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_camera_of_the_zero_pose_hangs_above_the_default_floor() {
+        let model = ArmModel::oscar6();
+        let bodies = std::array::from_fn(|k| body_elements(&model, k + 1));
+        let low = lowest_point(&model, &bodies, &model.full_pose(&Vector3::zeros()));
+        // The camera looks down from 0.1 m beyond the wrist, its 6 cm box below the lens
+        // centre... the lowest point is the camera box's bottom edge.
+        assert!(low > DEFAULT_FLOOR_Z && low < 0.55, "{low}");
+    }
+}

@@ -107,7 +107,11 @@ pub(crate) fn floor_stop(
         return up_to;
     }
     while s < up_to {
-        let next = (s + (gap / speed).max(MIN_MARCH)).min(up_to);
+        let next = s + (gap / speed).max(MIN_MARCH);
+        if next >= up_to && gap >= speed * (up_to - s) {
+            return up_to; // the rest of the move cannot reach the floor
+        }
+        let next = next.min(up_to);
         let next_gap = clearance(next);
         if next_gap < 0.0 {
             let (mut above, mut below) = (s, next);

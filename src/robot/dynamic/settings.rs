@@ -4,7 +4,7 @@
 use crate::robot::MoveSettings;
 
 /// How the dynamic simulator steps and servoes the arm. [`Default`] gives the values of the
-/// shipped configs: a stiff, critically damped 25 Hz servo on a 200 Hz control loop.
+/// shipped configs: a stiff, critically damped 100 Hz servo on a 200 Hz control loop.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DynamicSettings {
     /// The trapezoidal profile of a move (top speed and acceleration of the lead joint)
@@ -15,9 +15,9 @@ pub struct DynamicSettings {
     /// Constraint solver iterations per step; default 2.
     pub solver_iterations: usize,
     /// Position gain of every joint servo (1/s², acceleration-based: the joint's effective
-    /// inertia is factored in); default 25,000 (a 25 Hz servo).
+    /// inertia is factored in); default 400,000 (a 100 Hz servo).
     pub motor_stiffness: f64,
-    /// Velocity gain of every joint servo (1/s, acceleration-based); default 316 (critical
+    /// Velocity gain of every joint servo (1/s, acceleration-based); default 1265 (critical
     /// damping for the default stiffness).
     pub motor_damping: f64,
     /// A move has settled once every joint is this close to its set-point (rad); default
@@ -36,8 +36,8 @@ impl Default for DynamicSettings {
             moves: MoveSettings::from_degrees(90.0, 180.0),
             dt: 0.005,
             solver_iterations: 2,
-            motor_stiffness: 25_000.0,
-            motor_damping: 316.0,
+            motor_stiffness: 400_000.0,
+            motor_damping: 1265.0,
             settle_position_tol: 0.0005f64.to_radians(),
             settle_speed_tol: 0.05f64.to_radians(),
             settle_timeout: 2.0,

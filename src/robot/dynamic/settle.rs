@@ -26,21 +26,30 @@ impl DynamicSim {
 
     /// Feeds the move from set-point `start` along `delta` (θ1..θ3) to the servos under the
     /// trapezoidal profile, one tick per step, until a contact stops it: the steps taken,
-    /// and whether a contact stopped it.
+    /// and whether a contact stopped it. Each tick sends the set-point the step ends at,
+    /// its speed over the next step, and its acceleration as a lead of a/k on the position
+    /// (an acceleration-based servo's acceleration feed-forward), so the arm arrives with
+    /// the profile instead of lagging behind it.
     pub(super) fn follow(&mut self, start: &Joints, delta: &Controlled) -> (usize, bool) {
         let moves = self.settings.moves;
         let profile = TrapezoidProfile::new(delta.amax(), moves.speed, moves.accel);
         let dt = self.settings.dt;
+        let lead = 1.0 / (dt * dt * self.settings.motor_stiffness);
         let ticks = (profile.duration() / dt).ceil() as usize;
         let from = start.fixed_rows::<3>(0).into_owned();
-        let mut now = self.set_point(&from, delta, 0.0);
+        let at = |k: usize| profile.fraction_at(k as f64 * dt);
+        let (mut now, mut next) = (
+            self.set_point(&from, delta, 0.0),
+            self.set_point(&from, delta, at(1)),
+        );
         for k in 0..ticks {
-            let next = self.set_point(&from, delta, profile.fraction_at((k + 1) as f64 * dt));
-            self.tick(&now, &((next - now) / dt));
+            let after = self.set_point(&from, delta, at(k + 2));
+            let accelerated = next + (after - 2.0 * next + now) * lead;
+            self.tick(&accelerated, &((after - next) / dt));
             if self.arm.in_contact() {
                 return (k + 1, true);
             }
-            now = next;
+            (now, next) = (next, after);
         }
         (ticks, false)
     }
@@ -53,6 +62,7 @@ impl DynamicSim {
         let limit = self.settings.settle_steps().max(1);
         for step in 1..=limit {
             self.tick(&target, &still);
+            SimCounters::count(&self.counters.settle_steps);
             if self.is_settled(&target) {
                 return (true, step);
             }

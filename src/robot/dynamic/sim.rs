@@ -4,8 +4,9 @@
 //!
 //! How it moves, and why (numbers measured on the development machine, 2 cores):
 //! - A move's trapezoidal profile (`robot_speed`, `robot_accel`) is sampled every `dt`
-//!   along the straight joint-space line; each tick sends every servo the set-point and
-//!   its speed (velocity feed-forward), θ5 from the vertical-wrist rule, θ4 = θ6 = 0. After
+//!   along the straight joint-space line; each tick sends every servo the set-point, its
+//!   speed and its acceleration (velocity and acceleration feed-forward), θ5 from the
+//!   vertical-wrist rule, θ4 = θ6 = 0. After
 //!   the profile the arm steps until every joint is within `settle_position_tol` of its
 //!   set-point and slower than `settle_speed_tol`, or `settle_timeout` passes (reported in
 //!   the move's [`MoveReport`] and counted, not fatal).
@@ -16,21 +17,27 @@
 //!   (2·10⁻³ rad at 10⁴/s², a probe found), with it a held arm drifts by 10⁻¹⁸ rad in 10 s.
 //!   Set-points are clamped to the limits (a command past a limit stops at it, exactly where
 //!   the kinematic simulator stops); the multibody's own limits stay on as a backstop.
-//! - Defaults: `dt` 5 ms (200 Hz), 2 solver iterations, stiffness 25,000/s² and damping
-//!   316/s (a critically damped 25 Hz servo). Settled poses are within 10⁻⁵ rad of the
-//!   set-point and the camera within 0.005 mm of the kinematic model's; 1 or 2 solver
-//!   iterations are as precise as 8 here (only the motors and limits are constraints) and
-//!   a step costs about 19 µs with 2 iterations, 31 µs with 4.
+//! - Defaults: `dt` 5 ms (200 Hz), 2 solver iterations, stiffness 400,000/s² and damping
+//!   1265/s (a critically damped 100 Hz servo; Rapier's motors are implicit, so stable at
+//!   ω·dt ≈ 3). With the joints' damping now the URDF's (zero, not Rapier's default 0.1
+//!   N·m·s/rad), the former 25 Hz servo took 16 ticks to settle after a move; the 100 Hz
+//!   servo with acceleration feed-forward takes about 2. Settled poses are within 10⁻⁵ rad
+//!   of the set-point and the camera within 0.005 mm of the kinematic model's; 1 or 2
+//!   solver iterations are as precise as 8 here (only the motors, limits and contacts are
+//!   constraints).
 //! - f64 (rapier3d-f64): the camera must match the kinematic model to 0.05 mm over a
 //!   1.2 m arm. A probe of Rapier 0.36 measured end-effector errors against plain forward
 //!   kinematics of 10⁻⁴–5·10⁻⁴ mm in f32 and 10⁻¹² mm in f64, f32 unstable with stiff
 //!   motors at a 1 ms step, and a step only 3–20% dearer in f64 (36–42 µs vs 35 µs, 4
 //!   iterations): f64 keeps the servo error, not rounding, as the only gap, and identical
 //!   inputs give bit-identical runs.
-//! - Self-collision is off (the kinematic model passes through itself too); the colliders
-//!   are the URDF's, massless (the bodies carry the URDF inertials), and follow a stretched
-//!   link. The camera link is merged into link 6; turning the camera turns the model's
-//!   mount, not its collider.
+//! - The world: a floor at `floor_z` and contacts between links that are neither
+//!   neighbours nor touching at the zero pose (`contacts.rs`). The plan already stops a
+//!   move where a link or the camera would go below the floor (the kinematic rule); a
+//!   contact deeper than 0.5 mm during a move stops it where the arm is, reported and
+//!   counted. Each body has one massless compound collider of its URDF shapes, which
+//!   follows a stretched link. The camera link is merged into link 6; turning the camera
+//!   turns the model's mount, not its collider.
 
 use super::body_parts::body_parts;
 use super::builder::{joint_frame, Arm};
@@ -53,6 +60,7 @@ pub struct SimCounters {
     pub(super) moves: AtomicU64,
     pub(super) settle_timeouts: AtomicU64,
     pub(super) contact_stops: AtomicU64,
+    pub(super) settle_steps: AtomicU64,
 }
 
 impl SimCounters {
@@ -69,6 +77,11 @@ impl SimCounters {
     /// Moves, placings and link changes after which the arm had not settled in time.
     pub fn settle_timeouts(&self) -> u64 {
         self.settle_timeouts.load(Ordering::Relaxed)
+    }
+
+    /// Physics steps spent settling (after profiles, placings and link changes).
+    pub fn settle_steps(&self) -> u64 {
+        self.settle_steps.load(Ordering::Relaxed)
     }
 
     /// Moves a contact stopped (the floor, in the plan or in the physics, or another link).

@@ -4,7 +4,7 @@
 
 use eyehand::experiment::Config;
 use eyehand::robot::{
-    ArmModel, Controlled, DynamicSettings, DynamicSim, Drive, FreeArm, Joints, KinematicSim,
+    ArmModel, Controlled, Drive, DynamicSettings, DynamicSim, FreeArm, Joints, KinematicSim,
     Simulator, DEFAULT_FLOOR_Z,
 };
 
@@ -40,7 +40,11 @@ fn a_move_into_the_floor_stops_on_it_in_both_simulators() {
     let gap = (dynamic.camera_pose().translation.vector
         - kinematic.camera_pose().translation.vector)
         .norm();
-    assert!(gap < 0.05e-3, "the simulators stop {:.3} mm apart", gap * 1e3);
+    assert!(
+        gap < 0.05e-3,
+        "the simulators stop {:.3} mm apart",
+        gap * 1e3
+    );
     assert_eq!(dynamic.work().contact_stops, 1);
     // The arm stopped with its lowest point on the floor, above it by at most a hair.
     let camera_z = dynamic.camera_pose().translation.z;
@@ -85,7 +89,10 @@ fn a_falling_arm_lands_on_the_floor() {
         if contacts {
             assert!(lowest > DEFAULT_FLOOR_Z - 0.01, "camera sank to {lowest} m");
         } else {
-            assert!(lowest < DEFAULT_FLOOR_Z - 0.1, "camera fell only to {lowest} m");
+            assert!(
+                lowest < DEFAULT_FLOOR_Z - 0.1,
+                "camera fell only to {lowest} m"
+            );
         }
     }
 }
@@ -95,7 +102,11 @@ fn absurd_dynamic_entries_are_refused_before_any_work() {
     let base = Config::default_config().to_text();
     for (entry, value, words) in [
         ("dt", "1e-300", "dt: must be 1e-5 to 0.1"),
-        ("solver_iterations", "0", "solver_iterations: must be 1 to 100"),
+        (
+            "solver_iterations",
+            "0",
+            "solver_iterations: must be 1 to 100",
+        ),
         ("motor_stiffness", "1e300", "motor_stiffness: must be in"),
         ("settle_timeout", "1e9", "settle_timeout: must be"),
         ("floor_z", "50", "floor_z: must be -1000 to 0"),
@@ -108,7 +119,9 @@ fn absurd_dynamic_entries_are_refused_before_any_work() {
             })
             .collect::<Vec<_>>()
             .join("\n");
-        let error = Config::parse(&text, "test.conf").expect_err(entry).to_string();
+        let error = Config::parse(&text, "test.conf")
+            .expect_err(entry)
+            .to_string();
         assert!(error.contains(words), "{entry} {value}: {error}");
     }
 }

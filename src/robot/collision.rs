@@ -103,7 +103,7 @@ pub(crate) fn floor_stop(
     let speed = reach * (delta.abs().sum() + (delta.y.abs() + delta.z.abs()));
     let mut s = 0.0;
     let mut gap = clearance(0.0);
-    if !(gap >= 0.0) || speed == 0.0 {
+    if gap.is_nan() || gap < 0.0 || speed == 0.0 {
         return up_to;
     }
     while s < up_to {

@@ -146,6 +146,16 @@ impl Simulator for DynamicSim {
     }
 
     fn place(&mut self, theta: &Controlled) -> Result<(), RobotError> {
+        let q = self.model().check_limits(theta)?;
+        let (torques, _) = self.arm.weight_torques(self.model(), &q);
+        let joints = self.model().joints();
+        if let Some(i) = (0..6).find(|&i| torques[i].is_nan() || torques[i].abs() > joints[i].effort) {
+            return Err(RobotError::CannotHold {
+                joint: i + 1,
+                torque_nm: torques[i].abs(),
+                effort_nm: joints[i].effort,
+            });
+        }
         self.plan.place(theta)?;
         let q = self.plan.joints();
         self.arm.teleport(&q);

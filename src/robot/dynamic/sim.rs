@@ -149,7 +149,9 @@ impl Simulator for DynamicSim {
         let q = self.model().check_limits(theta)?;
         let (torques, _) = self.arm.weight_torques(self.model(), &q);
         let joints = self.model().joints();
-        if let Some(i) = (0..6).find(|&i| torques[i].is_nan() || torques[i].abs() > joints[i].effort) {
+        if let Some(i) =
+            (0..6).find(|&i| torques[i].is_nan() || torques[i].abs() > joints[i].effort)
+        {
             return Err(RobotError::CannotHold {
                 joint: i + 1,
                 torque_nm: torques[i].abs(),

@@ -1,8 +1,8 @@
 //! The dynamic (Rapier) simulator against the kinematic one, seed 1, configs/lin5.conf:
 //! `ik` (what the servos and settling cost in precision) and `lin5` over 5,000 trials —
 //! mean distance after feedback steps 1..5 over the last tenth of the trials, trials per
-//! second, physics steps per trial, settle time-outs — then where a dynamic trial's time
-//! goes.
+//! second, physics steps per trial (and how many of them settle), settle time-outs — then
+//! where a dynamic trial's time goes, and the arm against MuJoCo (tests/data/mujoco_*).
 //! Prints markdown tables.
 //!
 //! `cargo bench --bench dynamic`
@@ -16,6 +16,9 @@ use eyehand::robot::{ArmModel, Controlled, DynamicSettings, DynamicSim, Kinemati
 use nalgebra::{Point3, Vector3};
 use std::time::Instant;
 
+#[path = "../tests/mujoco/mod.rs"]
+mod mujoco;
+
 const SEED: u64 = 1;
 const IK_TRIALS: usize = 1_000;
 const LIN5_TRIALS: usize = 5_000;
@@ -25,6 +28,7 @@ struct Row {
     trials_per_second: f64,
     means: Vec<String>,
     steps_per_trial: Option<f64>,
+    settle_steps_per_trial: Option<f64>,
     timeouts: Option<u64>,
     failures: usize,
     window: usize,
@@ -59,6 +63,7 @@ fn trials(method: Method, sim: SimKind, count: usize) -> Row {
     let started = Instant::now();
     loop_.prelearn(learner.as_mut()).expect("pre-learning");
     let before = counters.as_ref().map_or(0, |c| c.steps());
+    let settle_before = counters.as_ref().map_or(0, |c| c.settle_steps());
     for trial in 1..=count {
         let outcome = loop_.run_trial(learner.as_mut()).expect("a trial");
         failures += usize::from(outcome.failure.is_some());
@@ -75,6 +80,9 @@ fn trials(method: Method, sim: SimKind, count: usize) -> Row {
         steps_per_trial: counters
             .as_ref()
             .map(|c| (c.steps() - before) as f64 / count as f64),
+        settle_steps_per_trial: counters
+            .as_ref()
+            .map(|c| (c.settle_steps() - settle_before) as f64 / count as f64),
         timeouts: counters.as_ref().map(|c| c.settle_timeouts()),
         failures,
         window: figures.window(),
@@ -84,10 +92,11 @@ fn trials(method: Method, sim: SimKind, count: usize) -> Row {
 fn print_row(label: &str, row: &Row) {
     let or_dash = |v: Option<String>| v.unwrap_or_else(|| "-".into());
     println!(
-        "| {label} | {:.0} | {} | {} | {} | {} |",
+        "| {label} | {:.0} | {} | {} | {} | {} | {} |",
         row.trials_per_second,
         row.means.join(" | "),
         or_dash(row.steps_per_trial.map(|s| format!("{s:.0}"))),
+        or_dash(row.settle_steps_per_trial.map(|s| format!("{s:.0}"))),
         or_dash(row.timeouts.map(|t| t.to_string())),
         row.failures
     );
@@ -131,8 +140,8 @@ fn micros_per_read(camera: &dyn Camera) -> f64 {
 fn main() {
     let header = |what: &str| {
         println!("\n{what}\n");
-        println!("| run | trials/s | 1 | 2 | 3 | 4 | 5 | physics steps/trial | settle time-outs | failures |");
-        println!("|---|---|---|---|---|---|---|---|---|---|");
+        println!("| run | trials/s | 1 | 2 | 3 | 4 | 5 | physics steps/trial | of them settling | settle time-outs | failures |");
+        println!("|---|---|---|---|---|---|---|---|---|---|---|");
     };
     header("`ik`, 1,000 trials");
     let ik_kinematic = trials(Method::Ik, SimKind::Kinematic, IK_TRIALS);
@@ -169,4 +178,38 @@ fn main() {
         micros_per_read(&RaycastCamera::new(model, 256)),
         micros_per_read(&RaycastCamera::new(model, 512)),
     );
+    print_mujoco_comparison();
+}
+
+/// The arm against MuJoCo 4.0 (RK4, 0.1 ms) on the same URDF.
+fn print_mujoco_comparison() {
+    let worst =
+        |gaps: Vec<(eyehand::robot::Joints, f64)>| gaps.iter().map(|g| g.1).fold(0.0, f64::max);
+    let model = ArmModel::oscar6();
+    println!("\n| the dynamic arm against MuJoCo | |\n|---|---|");
+    for dt in [1e-4, 5e-3] {
+        println!(
+            "| accelerations from rest, 50 poses, one step of {} ms: largest relative difference | {:.1e} |",
+            dt * 1e3,
+            worst(mujoco::acceleration_gaps(&model, "mujoco_accelerations.csv", 6, dt))
+        );
+    }
+    let mut long = model.clone();
+    long.stretch_link(2, 0.1).expect("a valid stretch");
+    println!(
+        "| link 2 10 cm longer: accelerations (0.1 ms step), largest relative difference | {:.1e} |",
+        worst(mujoco::acceleration_gaps(&long, "mujoco_stretched.csv", 12, 1e-4))
+    );
+    for dt in [1e-3, 5e-3] {
+        for n in 1..=3 {
+            let gaps = mujoco::swing_gaps(n, dt);
+            println!(
+                "| passive swing {n}, dt {} ms: apart at 0.2 / 0.5 / 1 s | {:.3}° / {:.3}° / {:.2}° |",
+                dt * 1e3,
+                mujoco::gap_at(&gaps, 0.2),
+                mujoco::gap_at(&gaps, 0.5),
+                mujoco::gap_at(&gaps, 1.0)
+            );
+        }
+    }
 }

@@ -55,16 +55,17 @@ pub fn acceleration_gaps(
         .collect()
 }
 
-/// Passive swing `n` (1–3) stepped at `dt` beside MuJoCo's: at each of its rows the time
-/// (s) and the largest joint angle difference (°).
-pub fn swing_gaps(n: usize, dt: f64) -> Vec<(f64, f64)> {
+/// Passive swing `n` (1–3) stepped with `settings` beside MuJoCo's: at each of its rows
+/// the time (s) and the largest joint angle difference (°).
+pub fn swing_gaps(n: usize, settings: DynamicSettings) -> Vec<(f64, f64)> {
     let reference = rows(&format!("mujoco_swing_{n}.csv"));
     let start = joints(&reference[0][1..]);
+    let dt = settings.dt;
     // MuJoCo's arm has no limits and no contacts.
     let mut arm = FreeArm::new(
         ArmModel::oscar6(),
         &start,
-        with_dt(dt),
+        settings,
         Drive::Passive,
         false,
         false,

@@ -12,7 +12,7 @@ pub struct DynamicSettings {
     pub moves: MoveSettings,
     /// Physics and control time step (s); default 0.005 (200 Hz).
     pub dt: f64,
-    /// Constraint solver iterations per step; default 2.
+    /// Constraint solver iterations per step; default 1.
     pub solver_iterations: usize,
     /// Position gain of every joint servo (1/s², acceleration-based: the joint's effective
     /// inertia is factored in); default 400,000 (a 100 Hz servo).
@@ -35,7 +35,7 @@ impl Default for DynamicSettings {
         DynamicSettings {
             moves: MoveSettings::from_degrees(90.0, 180.0),
             dt: 0.005,
-            solver_iterations: 2,
+            solver_iterations: 1,
             motor_stiffness: 400_000.0,
             motor_damping: 1265.0,
             settle_position_tol: 0.0005f64.to_radians(),

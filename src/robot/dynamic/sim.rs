@@ -17,7 +17,7 @@
 //!   (2·10⁻³ rad at 10⁴/s², a probe found), with it a held arm drifts by 10⁻¹⁸ rad in 10 s.
 //!   Set-points are clamped to the limits (a command past a limit stops at it, exactly where
 //!   the kinematic simulator stops); the multibody's own limits stay on as a backstop.
-//! - Defaults: `dt` 5 ms (200 Hz), 2 solver iterations, stiffness 400,000/s² and damping
+//! - Defaults: `dt` 5 ms (200 Hz), 1 solver iteration, stiffness 400,000/s² and damping
 //!   1265/s (a critically damped 100 Hz servo; Rapier's motors are implicit, so stable at
 //!   ω·dt ≈ 3). With the joints' damping now the URDF's (zero, not Rapier's default 0.1
 //!   N·m·s/rad), the former 25 Hz servo took 16 ticks to settle after a move; the 100 Hz

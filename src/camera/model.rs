@@ -61,6 +61,21 @@ impl CameraModel {
         self.reference_area() / (1.0 + cz / 100.0).powi(2)
     }
 
+    /// False when a camera at `centre` looking straight down cannot see the object at
+    /// `object`, however it is turned about its optical axis (world, m): the object is too
+    /// close below it, or its centre's image falls outside the circle through the frame's
+    /// corners (a visible sphere's image holds its centre's, and lies inside the frame).
+    /// A few pixels of slack allow for an optical axis a little off vertical; true does
+    /// not mean seen.
+    pub fn may_see_from_above(&self, centre: &Point3<f64>, object: &Point3<f64>) -> bool {
+        const SLACK_PX: f64 = 16.0;
+        const SLACK_M: f64 = 1e-6;
+        let depth = centre.z - object.z;
+        let off_axis = (centre.x - object.x).hypot(centre.y - object.y);
+        let corner = 0.5 * self.width.hypot(self.height) + SLACK_PX;
+        depth >= self.min_depth - SLACK_M && self.focal * off_axis <= corner * depth
+    }
+
     /// Where the camera centre must be to be at the target: straight above the object's
     /// centre by the standoff (world, m).
     pub fn goal_point(&self, object: &Point3<f64>) -> Point3<f64> {

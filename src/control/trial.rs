@@ -180,6 +180,10 @@ impl TrialLoop {
     fn draw_start(&mut self, object: &Point3<f64>) -> Result<Observation, Failure> {
         for _ in 0..MAX_DRAWS {
             let at = self.reach.sample(&mut self.rng);
+            // Most draws do not see the object: skip their inverse kinematics.
+            if !self.camera.model().may_see_from_above(&at, object) {
+                continue;
+            }
             let Ok(theta) = self.sim.model().solve_camera_position(&at) else {
                 continue;
             };

@@ -22,6 +22,8 @@ pub struct KinematicSim {
     collision: [Elements; 6],
     reach: f64,
     work: SimWork,
+    /// The camera's pose at `joints`, kept with them.
+    camera: Isometry3<f64>,
 }
 
 impl KinematicSim {
@@ -30,12 +32,13 @@ impl KinematicSim {
         let lower = Vector3::from_fn(|i, _| model.joints()[i].lower);
         let upper = Vector3::from_fn(|i, _| model.joints()[i].upper);
         let theta = Controlled::zeros().sup(&lower).inf(&upper);
-        let joints = model.full_pose(&theta);
+        let pose = model.pose_of(&theta);
         let mut sim = KinematicSim {
             model,
             settings,
             theta,
-            joints,
+            joints: pose.joints,
+            camera: pose.camera,
             collision: Default::default(),
             reach: 0.0,
             work: SimWork::default(),
@@ -48,6 +51,14 @@ impl KinematicSim {
     fn refresh_collision(&mut self) {
         self.collision = std::array::from_fn(|k| body_elements(&self.model, k + 1));
         self.reach = reach(&self.model, &self.collision);
+    }
+
+    /// Puts the arm at `theta` (inside the limits).
+    fn set_pose(&mut self, theta: Controlled) {
+        let pose = self.model.pose_of(&theta);
+        self.theta = theta;
+        self.joints = pose.joints;
+        self.camera = pose.camera;
     }
 
     fn limits(&self) -> (Vector3<f64>, Vector3<f64>) {
@@ -81,8 +92,10 @@ impl Simulator for KinematicSim {
     }
 
     fn place(&mut self, theta: &Controlled) -> Result<(), RobotError> {
-        self.joints = self.model.check_limits(theta)?;
+        let pose = self.model.pose_of(theta);
+        self.joints = self.model.check_joint_limits(&pose.joints)?;
         self.theta = *theta;
+        self.camera = pose.camera;
         Ok(())
     }
 
@@ -106,8 +119,9 @@ impl Simulator for KinematicSim {
                 (end - lower[i]).abs() < 1e-12 || (end - upper[i]).abs() < 1e-12
             });
         }
-        let end = self.model.full_pose(&(self.theta + delta * fraction));
-        if !self.model.joints()[4].admits(end[4]) {
+        let end = self.theta + delta * fraction;
+        let mut end_pose = self.model.pose_of(&end);
+        if !self.model.joints()[4].admits(end_pose.joints[4]) {
             fraction = self.wrist_stop(delta, fraction);
             report.stopped_by_limit = Some(4);
         }
@@ -127,9 +141,19 @@ impl Simulator for KinematicSim {
             self.work.contact_stops += 1;
         }
         let before = self.theta;
-        self.theta = (self.theta + delta * fraction).sup(&lower).inf(&upper);
+        let after = (self.theta + delta * fraction).sup(&lower).inf(&upper);
+        // (Bit for bit: a zero's sign could change the pose's last bits.)
+        if after
+            .iter()
+            .zip(end.iter())
+            .any(|(a, b)| a.to_bits() != b.to_bits())
+        {
+            end_pose = self.model.pose_of(&after);
+        }
+        self.theta = after;
+        self.joints = end_pose.joints;
+        self.camera = end_pose.camera;
         let executed = self.theta - before;
-        self.joints = self.model.full_pose(&self.theta);
         report.executed = executed;
         report.duration =
             TrapezoidProfile::new(executed.amax(), self.settings.speed, self.settings.accel)
@@ -144,12 +168,12 @@ impl Simulator for KinematicSim {
     }
 
     fn camera_pose(&self) -> Isometry3<f64> {
-        self.model.camera_pose(&self.joints)
+        self.camera
     }
 
     fn stretch_link(&mut self, link: usize, delta_m: f64) -> Result<(), RobotError> {
         self.model.stretch_link(link, delta_m)?;
-        self.joints = self.model.full_pose(&self.theta);
+        self.set_pose(self.theta);
         self.refresh_collision();
         Ok(())
     }
@@ -157,7 +181,7 @@ impl Simulator for KinematicSim {
     fn rotate_camera(&mut self, angle: f64) {
         if angle.is_finite() {
             self.model.rotate_camera(angle);
-            self.joints = self.model.full_pose(&self.theta);
+            self.set_pose(self.theta);
             self.refresh_collision();
         }
     }

@@ -1,6 +1,7 @@
 //! The arm's kinematic model: forward kinematics from the URDF's joint origins and axes,
 //! the wrist angle that keeps the optical axis vertical, link stretching and camera turning.
 
+use super::ik::GuessGeometry;
 use super::joint::{LinkBody, RevoluteJoint};
 use super::RobotError;
 use nalgebra::{Isometry3, Point3, Unit, UnitQuaternion, Vector3, Vector6};
@@ -10,6 +11,18 @@ pub type Joints = Vector6<f64>;
 /// The three controlled joint angles θ1, θ2, θ3 (rad).
 pub type Controlled = Vector3<f64>;
 
+/// A controlled pose worked out once: its six angles, the camera frame's pose and the
+/// joint frames with θ4 = θ5 = θ6 = 0 (the wrist angle and the elbow test read those).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ArmPose {
+    /// θ1..θ6: θ4 = θ6 = 0, θ5 keeping the optical axis vertical.
+    pub joints: Joints,
+    /// The camera frame's pose in the world (z along the optical axis).
+    pub camera: Isometry3<f64>,
+    /// The six joint frames for (θ1, θ2, θ3, 0, 0, 0).
+    pub level_frames: [Isometry3<f64>; 6],
+}
+
 /// The OSCAR-6 as its URDF describes it, plus the run-time changes made to it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ArmModel {
@@ -18,7 +31,11 @@ pub struct ArmModel {
     nominal_origins: [Isometry3<f64>; 6],
     camera_mount: Isometry3<f64>,
     camera_turn: f64,
+    /// `camera_mount` turned by `camera_turn`, kept up to date with it.
+    turned_mount: Isometry3<f64>,
     links: Vec<LinkBody>,
+    /// The link lengths the inverse kinematics starts from, kept up to date with the links.
+    guess: GuessGeometry,
 }
 
 impl ArmModel {
@@ -31,14 +48,30 @@ impl ArmModel {
         links: Vec<LinkBody>,
     ) -> ArmModel {
         let nominal_origins = joints.clone().map(|j| j.origin);
-        ArmModel {
+        let mut model = ArmModel {
             name,
             joints,
             nominal_origins,
             camera_mount,
             camera_turn: 0.0,
+            turned_mount: camera_mount,
             links,
-        }
+            guess: GuessGeometry::default(),
+        };
+        model.update_derived();
+        model
+    }
+
+    /// Recomputes what is derived from the joints and the camera turn.
+    fn update_derived(&mut self) {
+        self.turned_mount = self.camera_mount
+            * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), self.camera_turn);
+        self.guess = GuessGeometry::of(self);
+    }
+
+    /// The link lengths the inverse kinematics starts from.
+    pub(super) fn guess_geometry(&self) -> &GuessGeometry {
+        &self.guess
     }
 
     /// The shipped OSCAR-6 (`urdf/oscar6.urdf`).
@@ -64,7 +97,7 @@ impl ArmModel {
 
     /// The fixed camera joint's pose in link 6, including any camera turn.
     pub fn camera_mount(&self) -> Isometry3<f64> {
-        self.camera_mount * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), self.camera_turn)
+        self.turned_mount
     }
 
     /// Poses of the six joint frames (the child links' frames) in the world frame.
@@ -88,10 +121,31 @@ impl ArmModel {
         self.camera_pose(q) * Point3::origin()
     }
 
+    /// A controlled pose worked out with one pass down the chain: the same numbers as
+    /// [`full_pose`](Self::full_pose) and [`camera_pose`](Self::camera_pose), at about half
+    /// their cost together.
+    pub fn pose_of(&self, theta: &Controlled) -> ArmPose {
+        let level_frames = self.link_frames(&Joints::new(theta.x, theta.y, theta.z, 0.0, 0.0, 0.0));
+        let wrist = self.wrist_angle_from(&level_frames);
+        // The chain again from joint 5 on, as `link_frames` walks it.
+        let mut flange = level_frames[3];
+        flange *= self.joints[4].transform(wrist);
+        flange *= self.joints[5].transform(0.0);
+        ArmPose {
+            joints: Joints::new(theta.x, theta.y, theta.z, 0.0, wrist, 0.0),
+            camera: flange * self.camera_mount(),
+            level_frames,
+        }
+    }
+
     /// θ5 that makes the optical axis point straight down for these θ1..θ3 (θ4 = θ6 = 0).
     pub fn vertical_wrist_angle(&self, theta: &Controlled) -> f64 {
         let q = Joints::new(theta.x, theta.y, theta.z, 0.0, 0.0, 0.0);
-        let frames = self.link_frames(&q);
+        self.wrist_angle_from(&self.link_frames(&q))
+    }
+
+    /// θ5 from the joint frames of (θ1, θ2, θ3, 0, 0, 0).
+    fn wrist_angle_from(&self, frames: &[Isometry3<f64>; 6]) -> f64 {
         let axis = frames[4].rotation * self.joints[4].axis.into_inner();
         let optical = (frames[5] * self.camera_mount()).rotation * Vector3::z();
         let down = -Vector3::z();
@@ -119,9 +173,13 @@ impl ArmModel {
 
     /// Checks that a controlled pose and its wrist angle are inside the joint limits.
     pub fn check_limits(&self, theta: &Controlled) -> Result<Joints, RobotError> {
-        let q = self.full_pose(theta);
-        match self.violated_limit(&q) {
-            None => Ok(q),
+        self.check_joint_limits(&self.full_pose(theta))
+    }
+
+    /// Checks that all six angles `q` are inside the joint limits.
+    pub fn check_joint_limits(&self, q: &Joints) -> Result<Joints, RobotError> {
+        match self.violated_limit(q) {
+            None => Ok(*q),
             Some(i) => Err(RobotError::OutsideLimits {
                 joint: i + 1,
                 angle_deg: q[i].to_degrees(),
@@ -149,6 +207,7 @@ impl ArmModel {
             });
         }
         self.joints[link].origin.translation.vector = current + direction.into_inner() * delta_m;
+        self.update_derived();
         Ok(())
     }
 
@@ -161,6 +220,7 @@ impl ArmModel {
     /// Turns the camera about its optical axis by `angle` (rad); turns add up.
     pub fn rotate_camera(&mut self, angle: f64) {
         self.camera_turn += angle;
+        self.update_derived();
     }
 
     /// The camera's total turn about its optical axis (rad).

@@ -13,6 +13,7 @@
 //! node's parent instead; the model never answers NaN. Inputs that queries always hold at
 //! 0 (lin8's readings after the move) may be left out of a fit while they have not varied.
 
+mod lu;
 mod settings;
 mod stagger;
 mod sums;
@@ -20,7 +21,7 @@ mod sums;
 pub use settings::PerceptronSettings;
 
 use crate::learn::tree::Approximator;
-use nalgebra::{Const, DimMin, SMatrix, SVector, Vector3};
+use nalgebra::{SMatrix, SVector, Vector3};
 use stagger::Stagger;
 use std::ops::Range;
 use sums::NormalSums;
@@ -76,10 +77,7 @@ impl<const N: usize, const M: usize> Perceptron<N, M> {
     }
 }
 
-impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M>
-where
-    Const<M>: DimMin<Const<M>, Output = Const<M>>,
-{
+impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M> {
     fn add(&mut self, input: &SVector<f64, N>, target: &Vector3<f64>, seq: u64) {
         let z = Self::augmented(input);
         let zz = z * z.transpose();

@@ -1,6 +1,7 @@
 //! Normal-equation sums of a least-squares fit, and their solution.
 
-use nalgebra::{Const, DimMin, SMatrix, SVector};
+use super::lu::SmallLu;
+use nalgebra::{SMatrix, SVector};
 
 /// Below this reciprocal condition estimate a fit counts as singular: its coefficients
 /// would carry less than about six correct digits.
@@ -60,10 +61,7 @@ impl<const M: usize> NormalSums<M> {
     /// of the other inputs is equilibrated to a unit diagonal; an LU decomposition with
     /// partial pivoting is made once and solved for the three joints. The ratio of its
     /// smallest to largest pivot estimates the reciprocal condition number.
-    pub(super) fn solve(&self, may_idle: &[bool; M]) -> Option<SMatrix<f64, 3, M>>
-    where
-        Const<M>: DimMin<Const<M>, Output = Const<M>>,
-    {
+    pub(super) fn solve(&self, may_idle: &[bool; M]) -> Option<SMatrix<f64, 3, M>> {
         let diagonal = self.zz.diagonal();
         // The constant's diagonal counts the patterns.
         let count = diagonal[M - 1];
@@ -85,8 +83,8 @@ impl<const M: usize> NormalSums<M> {
         for i in (0..M).filter(|&i| idle[i]) {
             equilibrated[(i, i)] = 1.0;
         }
-        let lu = equilibrated.lu();
-        let pivots = lu.u().diagonal().map(f64::abs);
+        let lu = SmallLu::new(&equilibrated);
+        let pivots = SVector::<f64, M>::from(lu.pivot_magnitudes());
         // (False for NaN pivots too.)
         let well_conditioned = pivots.min() > MIN_RCOND * pivots.max();
         if !well_conditioned {

@@ -46,30 +46,34 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
         &mut self.params
     }
 
-    fn offsets(&self) -> (usize, usize, usize) {
-        let b1 = self.hidden * I;
-        let w2 = b1 + self.hidden;
-        (b1, w2, w2 + O * self.hidden)
+    /// The parameters as (W1, b1, W2, b2).
+    fn layers(params: &[f64], hidden: usize) -> (&[f64], &[f64], &[f64], &[f64]) {
+        let (w1, rest) = params.split_at(hidden * I);
+        let (b1, rest) = rest.split_at(hidden);
+        let (w2, b2) = rest.split_at(O * hidden);
+        (w1, b1, w2, b2)
     }
 
-    /// The net's output for `x`.
+    /// The net's output for `x`. (Sums run in index order from −0, as `Iterator::sum`
+    /// does, so the loops' shape does not change a bit of the result.)
     pub fn forward(&mut self, x: &SVector<f64, I>) -> SVector<f64, O> {
-        let (b1, w2, b2) = self.offsets();
-        let h = self.hidden;
-        for j in 0..h {
-            let row = &self.params[j * I..(j + 1) * I];
-            let sum: f64 =
-                row.iter().zip(x.iter()).map(|(w, v)| w * v).sum::<f64>() + self.params[b1 + j];
-            self.activations[j] = sum.tanh();
+        let (w1, b1, w2, b2) = Self::layers(&self.params, self.hidden);
+        for ((a, row), b) in self.activations.iter_mut().zip(w1.chunks_exact(I)).zip(b1) {
+            let row: &[f64; I] = row.try_into().expect("rows of I weights");
+            let mut sum = -0.0;
+            for i in 0..I {
+                sum += row[i] * x[i];
+            }
+            *a = (sum + b).tanh();
         }
-        SVector::from_fn(|k, _| {
-            let row = &self.params[w2 + k * h..w2 + (k + 1) * h];
-            row.iter()
-                .zip(&self.activations)
-                .map(|(w, a)| w * a)
-                .sum::<f64>()
-                + self.params[b2 + k]
-        })
+        let mut out = [-0.0; O];
+        let h = self.hidden;
+        for (j, a) in self.activations.iter().enumerate() {
+            for (k, o) in out.iter_mut().enumerate() {
+                *o += w2[k * h + j] * a;
+            }
+        }
+        SVector::from_fn(|k, _| out[k] + b2[k])
     }
 
     /// Adds ∂(½‖y − t‖²)/∂params for one pattern to `grad`; returns ½‖y − t‖².
@@ -80,23 +84,33 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
         grad: &mut [f64],
     ) -> f64 {
         let error = self.forward(x) - target;
-        let (b1, w2, b2) = self.offsets();
         let h = self.hidden;
-        for j in 0..h {
-            let back: f64 = (0..O).map(|k| error[k] * self.params[w2 + k * h + j]).sum();
-            self.deltas[j] = back * (1.0 - self.activations[j] * self.activations[j]);
-        }
-        for k in 0..O {
-            for j in 0..h {
-                grad[w2 + k * h + j] += error[k] * self.activations[j];
+        let (_, _, w2, _) = Self::layers(&self.params, h);
+        // Each unit's share of the error, summed over the outputs in order (from −0, as
+        // `Iterator::sum` starts).
+        self.deltas.fill(-0.0);
+        for (row, e) in w2.chunks_exact(h).zip(error.iter()) {
+            for (back, w) in self.deltas.iter_mut().zip(row) {
+                *back += e * w;
             }
-            grad[b2 + k] += error[k];
         }
-        for j in 0..h {
-            for i in 0..I {
-                grad[j * I + i] += self.deltas[j] * x[i];
+        for (delta, a) in self.deltas.iter_mut().zip(&self.activations) {
+            *delta *= 1.0 - a * a;
+        }
+        let (w1_grad, rest) = grad.split_at_mut(h * I);
+        let (b1_grad, rest) = rest.split_at_mut(h);
+        let (w2_grad, b2_grad) = rest.split_at_mut(O * h);
+        for ((row, b), e) in w2_grad.chunks_exact_mut(h).zip(b2_grad).zip(error.iter()) {
+            for (g, a) in row.iter_mut().zip(&self.activations) {
+                *g += e * a;
             }
-            grad[b1 + j] += self.deltas[j];
+            *b += e;
+        }
+        for ((row, b), d) in w1_grad.chunks_exact_mut(I).zip(b1_grad).zip(&self.deltas) {
+            for (g, v) in row.iter_mut().zip(x.iter()) {
+                *g += d * v;
+            }
+            *b += d;
         }
         0.5 * error.norm_squared()
     }

@@ -13,7 +13,6 @@ pub struct DenseNet<const I: usize, const O: usize> {
     /// Layout: W1 (hidden × I, row-major), b1 (hidden), W2 (O × hidden, row-major), b2 (O).
     params: Vec<f64>,
     activations: Vec<f64>,
-    deltas: Vec<f64>,
 }
 
 impl<const I: usize, const O: usize> DenseNet<I, O> {
@@ -27,7 +26,6 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
             hidden,
             params,
             activations: vec![0.0; hidden],
-            deltas: vec![0.0; hidden],
         }
     }
 
@@ -86,31 +84,27 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
         let error = self.forward(x) - target;
         let h = self.hidden;
         let (_, _, w2, _) = Self::layers(&self.params, h);
-        // Each unit's share of the error, summed over the outputs in order (from −0, as
-        // `Iterator::sum` starts).
-        self.deltas.fill(-0.0);
-        for (row, e) in w2.chunks_exact(h).zip(error.iter()) {
-            for (back, w) in self.deltas.iter_mut().zip(row) {
-                *back += e * w;
-            }
-        }
-        for (delta, a) in self.deltas.iter_mut().zip(&self.activations) {
-            *delta *= 1.0 - a * a;
-        }
         let (w1_grad, rest) = grad.split_at_mut(h * I);
         let (b1_grad, rest) = rest.split_at_mut(h);
         let (w2_grad, b2_grad) = rest.split_at_mut(O * h);
-        for ((row, b), e) in w2_grad.chunks_exact_mut(h).zip(b2_grad).zip(error.iter()) {
-            for (g, a) in row.iter_mut().zip(&self.activations) {
-                *g += e * a;
+        // Unit by unit: its share of the error (summed over the outputs in order, from −0
+        // as `Iterator::sum` starts), then its weights' gradients. Each gradient entry gets
+        // one addition per pattern, so the order of units does not change a bit.
+        let rows = w1_grad.chunks_exact_mut(I).zip(b1_grad);
+        for (j, ((row, bias), a)) in rows.zip(&self.activations).enumerate() {
+            let mut back = -0.0;
+            for (k, e) in error.iter().enumerate() {
+                back += e * w2[k * h + j];
+                w2_grad[k * h + j] += e * a;
             }
-            *b += e;
-        }
-        for ((row, b), d) in w1_grad.chunks_exact_mut(I).zip(b1_grad).zip(&self.deltas) {
+            let delta = back * (1.0 - a * a);
             for (g, v) in row.iter_mut().zip(x.iter()) {
-                *g += d * v;
+                *g += delta * v;
             }
-            *b += d;
+            *bias += delta;
+        }
+        for (b, e) in b2_grad.iter_mut().zip(error.iter()) {
+            *b += e;
         }
         0.5 * error.norm_squared()
     }

@@ -1,15 +1,19 @@
 //! One PNG per run with the panels of the study's result figures: distance after feedback
 //! steps 1..5 (log axis, mm), nodes, bins, memory, patterns and time used, each against
-//! trials and smoothed, with the run's events marked.
+//! trials and smoothed, with the run's events marked. Long runs are drawn from evenly
+//! spaced points of their smoothed curves.
 
 use super::canvas::{draw_panel, register_font, Line, Panel, PALETTE};
-use super::series::{event_trials, Series};
+use super::series::{decimated, event_trials, Series};
 use super::PlotError;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 
 /// Width and height of a run's plot (px).
 pub const PLOT_SIZE: (u32, u32) = (1400, 1800);
+/// A line is drawn from at most about this many points (a panel is 700 px wide), so a
+/// million-trial run plots as fast as a short one.
+const POINTS_PER_LINE: usize = 4000;
 /// Panels of a run's plot, in reading order (5 rows of 2).
 pub const PANELS: [&str; 10] = [
     "distance after step 1",
@@ -42,16 +46,17 @@ pub fn plot_run(run_dir: &Path, smooth: usize) -> Result<PathBuf, PlotError> {
         read("mem")?,
         read("patterns")?,
     );
+    let thin = |points: &[(f64, f64)]| decimated(points, POINTS_PER_LINE);
     let mut lines: Vec<PanelLine> = steps
         .iter()
         .enumerate()
-        .map(|(i, s)| (PANELS[i].to_string(), "mm", s.smoothed(smooth), true))
+        .map(|(i, s)| (PANELS[i].to_string(), "mm", thin(&s.smoothed(smooth)), true))
         .collect();
-    lines.push((PANELS[5].into(), "nodes", nodes.points.clone(), false));
-    lines.push((PANELS[6].into(), "bins", bins.points.clone(), false));
-    lines.push((PANELS[7].into(), "kB", mem.points.clone(), false));
-    lines.push((PANELS[8].into(), "patterns", patterns.points.clone(), false));
-    lines.push((PANELS[9].into(), "minutes", nodes.minutes.clone(), false));
+    lines.push((PANELS[5].into(), "nodes", thin(&nodes.points), false));
+    lines.push((PANELS[6].into(), "bins", thin(&bins.points), false));
+    lines.push((PANELS[7].into(), "kB", thin(&mem.points), false));
+    lines.push((PANELS[8].into(), "patterns", thin(&patterns.points), false));
+    lines.push((PANELS[9].into(), "minutes", thin(&nodes.minutes), false));
 
     let out = run_dir.join("plot.png");
     let draw_error = |reason: String| PlotError::Draw {

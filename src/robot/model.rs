@@ -29,10 +29,11 @@ pub struct ArmModel {
     name: String,
     joints: [RevoluteJoint; 6],
     nominal_origins: [Isometry3<f64>; 6],
-    camera_mount: Isometry3<f64>,
+    /// The fixed camera joint's origin in link 6, as the URDF gives it.
+    urdf_mount: Isometry3<f64>,
     camera_turn: f64,
-    /// `camera_mount` turned by `camera_turn`, kept up to date with it.
-    turned_mount: Isometry3<f64>,
+    /// `urdf_mount` turned by `camera_turn`, kept up to date with it.
+    camera_mount: Isometry3<f64>,
     links: Vec<LinkBody>,
     /// The link lengths the inverse kinematics starts from, kept up to date with the links.
     guess: GuessGeometry,
@@ -52,9 +53,9 @@ impl ArmModel {
             name,
             joints,
             nominal_origins,
-            camera_mount,
+            urdf_mount: camera_mount,
             camera_turn: 0.0,
-            turned_mount: camera_mount,
+            camera_mount,
             links,
             guess: GuessGeometry::default(),
         };
@@ -64,8 +65,8 @@ impl ArmModel {
 
     /// Recomputes what is derived from the joints and the camera turn.
     fn update_derived(&mut self) {
-        self.turned_mount = self.camera_mount
-            * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), self.camera_turn);
+        self.camera_mount =
+            self.urdf_mount * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), self.camera_turn);
         self.guess = GuessGeometry::of(self);
     }
 
@@ -97,7 +98,7 @@ impl ArmModel {
 
     /// The fixed camera joint's pose in link 6, including any camera turn.
     pub fn camera_mount(&self) -> Isometry3<f64> {
-        self.turned_mount
+        self.camera_mount
     }
 
     /// Poses of the six joint frames (the child links' frames) in the world frame.

@@ -70,8 +70,9 @@ impl<const M: usize> SmallLu<M> {
         let factors = &left[i];
         for column in right {
             let head = column[i];
-            for r in i + 1..M {
-                column[r] = -head * factors[r] + column[r];
+            // (x + (−h·f) is nalgebra's (−h·f) + x: addition commutes exactly.)
+            for (value, factor) in column[i + 1..].iter_mut().zip(&factors[i + 1..]) {
+                *value += -head * factor;
             }
         }
     }
@@ -94,9 +95,10 @@ impl<const M: usize> SmallLu<M> {
             let mut b: [f64; M] = std::array::from_fn(|r| x[(r, k)]);
             // L y = P b, unit diagonal.
             for i in 0..M.saturating_sub(1) {
-                let coefficient = b[i];
-                for r in i + 1..M {
-                    b[r] = -coefficient * self.columns[i][r] + b[r];
+                let (done, rest) = b.split_at_mut(i + 1);
+                let coefficient = done[i];
+                for (value, l) in rest.iter_mut().zip(&self.columns[i][i + 1..]) {
+                    *value += -coefficient * l;
                 }
             }
             // U x = y.
@@ -107,8 +109,8 @@ impl<const M: usize> SmallLu<M> {
                 }
                 let coefficient = b[i] / diagonal;
                 b[i] = coefficient;
-                for r in 0..i {
-                    b[r] = -coefficient * self.columns[i][r] + b[r];
+                for (value, u) in b[..i].iter_mut().zip(&self.columns[i][..i]) {
+                    *value += -coefficient * u;
                 }
             }
             for (r, value) in b.iter().enumerate() {

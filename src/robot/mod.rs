@@ -20,7 +20,7 @@ pub use dynamic::{Drive, DynamicSettings, DynamicSim, FreeArm, SimCounters};
 pub use error::{RobotError, UrdfError, UrdfErrorKind};
 pub use joint::{LinkBody, RevoluteJoint, Shape};
 pub use kinematic::KinematicSim;
-pub use model::{ArmModel, Controlled, Joints};
+pub use model::{ArmModel, ArmPose, Controlled, Joints};
 pub use motion::{limit_stop_fraction, TrapezoidProfile};
 pub use reach::ReachSpace;
 pub use simulator::{MoveReport, MoveSettings, SimWork, Simulator};

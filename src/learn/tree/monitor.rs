@@ -3,10 +3,13 @@
 /// The mean error E and mean squared error E² of the last `window` patterns.
 ///
 /// Values are kept (as `f32`) in a ring so the oldest can leave the sums; the sums are
-/// recomputed from the ring each time it wraps, so rounding never accumulates.
+/// recomputed from the ring each time it wraps, so rounding never accumulates. The ring
+/// grows with the values it is given, up to the window: a tree has a monitor for every
+/// sub-box of every node, and most see only a few values.
 #[derive(Debug, Clone)]
 pub(crate) struct Monitor {
-    ring: Box<[f32]>,
+    ring: Vec<f32>,
+    window: usize,
     next: usize,
     len: usize,
     sum: f64,
@@ -17,7 +20,8 @@ impl Monitor {
     /// An empty monitor averaging over `window` (at least 1) values.
     pub(crate) fn new(window: usize) -> Self {
         Monitor {
-            ring: vec![0.0; window.max(1)].into_boxed_slice(),
+            ring: Vec::new(),
+            window: window.max(1),
             next: 0,
             len: 0,
             sum: 0.0,
@@ -35,12 +39,21 @@ impl Monitor {
         } else {
             self.len += 1;
         }
-        self.ring[self.next] = value;
+        if self.next < self.ring.len() {
+            self.ring[self.next] = value;
+        } else {
+            if self.ring.len() == self.ring.capacity() {
+                // Doubling, but never past the window.
+                let more = self.ring.len().max(4).min(self.window - self.ring.len());
+                self.ring.reserve_exact(more);
+            }
+            self.ring.push(value);
+        }
         let value = f64::from(value);
         self.sum += value;
         self.sum_sq += value * value;
         self.next += 1;
-        if self.next == self.ring.len() {
+        if self.next == self.window {
             self.next = 0;
             self.sum = self.ring.iter().map(|&v| f64::from(v)).sum();
             self.sum_sq = self.ring.iter().map(|&v| f64::from(v).powi(2)).sum();
@@ -54,7 +67,7 @@ impl Monitor {
 
     /// Whether a whole window of values has arrived.
     pub(crate) fn is_full(&self) -> bool {
-        self.len == self.ring.len()
+        self.len == self.window
     }
 
     /// Mean of the values held, `None` when empty.
@@ -96,6 +109,24 @@ mod tests {
         assert_eq!(m.mean_square(), Some((4.0 + 9.0 + 100.0) / 3.0));
         m.clear();
         assert_eq!((m.len(), m.mean()), (0, None));
+    }
+
+    #[test]
+    fn the_ring_grows_with_its_values_up_to_the_window() {
+        let mut m = Monitor::new(300);
+        assert_eq!(m.ring.capacity(), 0);
+        for i in 0..10 {
+            m.push(f64::from(i));
+        }
+        assert!(m.ring.capacity() < 20, "{}", m.ring.capacity());
+        for i in 0..1000 {
+            m.push(f64::from(i));
+        }
+        assert_eq!(m.ring.capacity(), 300);
+        assert_eq!(m.mean(), Some((700..1000).sum::<i32>() as f64 / 300.0));
+        m.clear();
+        m.push(2.0);
+        assert_eq!((m.len(), m.mean()), (1, Some(2.0)));
     }
 
     #[test]

@@ -3,6 +3,7 @@
 //! `min_feedback_steps` steps) or `feedback_steps` are used; the trial's poses are then
 //! learned.
 
+use super::feedback::{ActiveTrial, StepError, StepReport, TrialEnd};
 use super::sensors::{NoisySensors, SensorNoise};
 use crate::camera::{Camera, NotSeen};
 use crate::learn::Observation;
@@ -65,6 +66,7 @@ pub struct TrialLoop {
     rng: ChaCha8Rng,
     sensors: NoisySensors,
     path: Vec<Observation>,
+    active: Option<ActiveTrial>,
 }
 
 impl TrialLoop {
@@ -84,6 +86,7 @@ impl TrialLoop {
             rng: ChaCha8Rng::seed_from_u64(seed),
             sensors: NoisySensors::new(settings.noise, seed),
             path: Vec::with_capacity(settings.feedback_steps + 1),
+            active: None,
         }
     }
 
@@ -103,51 +106,137 @@ impl TrialLoop {
     }
 
     /// Runs one trial with `learner` and lets it learn from the trial's poses; fails only
-    /// when the learner cannot learn (its pattern storage failed).
+    /// when the learner cannot learn (its pattern storage failed). Built on
+    /// [`begin_trial`](Self::begin_trial), [`step_trial`](Self::step_trial) and
+    /// [`finish_trial`](Self::finish_trial).
     pub fn run_trial(&mut self, learner: &mut dyn Learner) -> Result<TrialOutcome, LearnError> {
         let mut outcome = TrialOutcome {
             distances_mm: Vec::with_capacity(self.settings.feedback_steps),
             failure: None,
         };
-        let object = match self.draw_target() {
-            Ok(object) => object,
+        let mut here = match self.begin_trial() {
+            Ok(start) => start,
             Err(failure) => {
                 outcome.failure = Some(failure);
                 return Ok(outcome);
             }
         };
-        self.path.clear();
-        match self.draw_start(&object) {
-            Ok(start) => self.path.push(start),
-            Err(failure) => {
-                outcome.failure = Some(failure);
-                return Ok(outcome);
-            }
-        }
-        let goal = self.camera.model().goal_point(&object);
-        for step in 1..=self.settings.feedback_steps {
-            let here = self.path[self.path.len() - 1];
+        for _ in 0..self.settings.feedback_steps {
             let delta_deg = learner.propose(&here.query());
-            if !delta_deg.iter().all(|v| v.is_finite()) {
-                outcome.failure = Some(Failure::NonFiniteMove);
-                break;
-            }
-            self.sim.execute(&delta_deg.map(f64::to_radians));
-            match self.observe(&object) {
-                Ok(seen) => self.path.push(seen),
-                Err(not_seen) => {
-                    outcome.failure = Some(Failure::LostObject(not_seen));
+            let report = match self.step_trial(&delta_deg) {
+                Ok(report) => report,
+                Err(_) => {
+                    outcome.failure = Some(Failure::NonFiniteMove);
                     break;
                 }
+            };
+            if report.reading.is_ok() {
+                outcome.distances_mm.push(report.distance_mm);
+                here = self.path[self.path.len() - 1];
             }
-            let distance = (self.sim.camera_pose().translation.vector - goal.coords).norm();
-            outcome.distances_mm.push(distance * MM_PER_M);
-            if step >= self.settings.min_feedback_steps && distance <= self.settings.epsilon {
+            if let Some(end) = report.end {
+                outcome.failure = end.failure();
                 break;
             }
         }
-        learner.learn(&self.path)?;
+        self.finish_trial(learner)?;
         Ok(outcome)
+    }
+
+    /// Begins a trial: draws a reachable target and a start from which the object is seen,
+    /// places the arm there and returns what it sees. Any trial going on is dropped
+    /// unlearned.
+    pub fn begin_trial(&mut self) -> Result<Observation, Failure> {
+        self.active = None;
+        self.path.clear();
+        let object = self.draw_target()?;
+        let start = self.draw_start(&object)?;
+        self.path.push(start);
+        self.active = Some(ActiveTrial {
+            object,
+            goal: self.camera.model().goal_point(&object),
+            steps: 0,
+            end: None,
+        });
+        Ok(start)
+    }
+
+    /// Takes one feedback step of the trial going on: executes `delta_deg` (Δθ1, Δθ2, Δθ3
+    /// in degrees), reads the camera and measures the distance to the target. The trial is
+    /// over once the camera is within ε (after `min_feedback_steps`), `feedback_steps`
+    /// were taken, or the object is lost.
+    pub fn step_trial(&mut self, delta_deg: &Vector3<f64>) -> Result<StepReport, StepError> {
+        let Some(trial) = self.active.filter(|t| t.end.is_none()) else {
+            return Err(StepError::NoTrial);
+        };
+        if !delta_deg.iter().all(|v| v.is_finite()) {
+            return Err(StepError::NonFiniteMove {
+                delta_deg: *delta_deg,
+            });
+        }
+        self.sim.execute(&delta_deg.map(f64::to_radians));
+        let step = trial.steps + 1;
+        let (theta_deg, reading) = match self.observe(&trial.object) {
+            Ok(seen) => {
+                self.path.push(seen);
+                (seen.theta_deg, Ok(seen.c))
+            }
+            Err(not_seen) => {
+                let q = self.sim.joints();
+                let exact = Vector3::new(q[0], q[1], q[2]).map(f64::to_degrees);
+                (exact, Err(not_seen))
+            }
+        };
+        let distance = (self.sim.camera_pose().translation.vector - trial.goal.coords).norm();
+        let end = match reading {
+            Err(not_seen) => Some(TrialEnd::Lost(not_seen)),
+            Ok(_)
+                if step >= self.settings.min_feedback_steps
+                    && distance <= self.settings.epsilon =>
+            {
+                Some(TrialEnd::Reached)
+            }
+            Ok(_) if step >= self.settings.feedback_steps => Some(TrialEnd::StepsUsed),
+            Ok(_) => None,
+        };
+        self.active = Some(ActiveTrial {
+            steps: step,
+            end,
+            ..trial
+        });
+        Ok(StepReport {
+            step,
+            theta_deg,
+            reading,
+            distance_mm: distance * MM_PER_M,
+            end,
+        })
+    }
+
+    /// Finishes the trial begun last, over or not: `learner` learns from its poses. Does
+    /// nothing when no trial was begun since the last finish (or the draw failed).
+    pub fn finish_trial(&mut self, learner: &mut dyn Learner) -> Result<(), LearnError> {
+        match self.active.take() {
+            Some(_) => learner.learn(&self.path),
+            None => Ok(()),
+        }
+    }
+
+    /// The poses of the current (or last) trial in the order they were seen: the start and
+    /// the pose after every step at which the object was seen.
+    pub fn path(&self) -> &[Observation] {
+        &self.path
+    }
+
+    /// Feedback steps taken in the trial going on and why it is over, if it is; `None`
+    /// when no trial is going on.
+    pub fn trial_state(&self) -> Option<(usize, Option<TrialEnd>)> {
+        self.active.map(|t| (t.steps, t.end))
+    }
+
+    /// The control loop's settings.
+    pub fn settings(&self) -> &TrialSettings {
+        &self.settings
     }
 
     /// What the sensors and camera report at the current pose (with their noise), or why
@@ -198,7 +287,9 @@ impl TrialLoop {
 
     /// Pre-learning: the fixed moves of [`prelearning_moves`](super::prelearning_moves), each
     /// executed by the simulator and learned like a trial.
+    /// Drops any trial going on unlearned.
     pub fn prelearn(&mut self, learner: &mut dyn Learner) -> Result<(), LearnError> {
+        self.active = None;
         let Some((object, moves)) = super::prelearning_moves(self.sim.model(), self.camera.model())
         else {
             return Ok(());

@@ -90,6 +90,11 @@ impl TrialLoop {
         }
     }
 
+    /// Restarts the random generator from `seed`, as a new loop would start it.
+    pub fn reseed(&mut self, seed: u64) {
+        self.rng = ChaCha8Rng::seed_from_u64(seed);
+    }
+
     /// The simulator, for events that change the robot.
     pub fn sim_mut(&mut self) -> &mut dyn Simulator {
         self.sim.as_mut()
@@ -232,6 +237,12 @@ impl TrialLoop {
     /// when no trial is going on.
     pub fn trial_state(&self) -> Option<(usize, Option<TrialEnd>)> {
         self.active.map(|t| (t.steps, t.end))
+    }
+
+    /// The distance (mm) from the camera to the target of the trial going on, as it is now.
+    pub fn distance_mm(&self) -> Option<f64> {
+        let goal = self.active?.goal;
+        Some((self.sim.camera_pose().translation.vector - goal.coords).norm() * MM_PER_M)
     }
 
     /// The control loop's settings.

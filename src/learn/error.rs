@@ -14,4 +14,13 @@ pub enum LearnError {
         /// Why.
         source: std::io::Error,
     },
+    /// A learner written outside the crate (a Python learner, say) failed; the run stops
+    /// with what it wrote.
+    #[error("learner `{learner}` failed: {reason}")]
+    Failed {
+        /// The learner's name.
+        learner: String,
+        /// What went wrong, in the learner's words.
+        reason: String,
+    },
 }

@@ -1,0 +1,100 @@
+"""eyehand from Python: the OSCAR-6 testbed, its built-in learners and runs, and the
+Gymnasium environment ``eyehand/Reach-v0`` — all on the Rust engine the ``eyehand`` command
+line uses.
+
+- ``Testbed``: a trial driven one feedback step at a time (``reset``, ``step``, ``learn``,
+  ``prelearn``, ``stretch_link``, ``rotate_camera``, ``fk``).
+- ``Learner``: a built-in learner (``lin5``, ``lin8``, ``nnw``, ``ffn``, ``kohonen``, ``ik``)
+  with ``propose(query)`` and ``learn(path)``.
+- ``run``: a whole run of a built-in or a Python learner, writing the run folder
+  ``eyehand run`` writes.
+
+A query (and the environment's observation) is (cx, cy, cz, θ2, θ3); a path is an (n, 6)
+array of poses (cx, cy, cz, θ1, θ2, θ3); moves are (Δθ1, Δθ2, Δθ3) in degrees.
+"""
+
+import json
+import pathlib
+
+import numpy as np
+
+from ._eyehand import ENTRY_NAMES, Learner, Testbed
+from ._eyehand import run as _run
+
+__all__ = ["ENTRY_NAMES", "Learner", "Testbed", "run", "RECORDED_STEPS"]
+
+#: Distances after feedback steps 1..RECORDED_STEPS are written to ``1step`` … ``5step``.
+RECORDED_STEPS = 5
+
+
+def run(
+    learner=None,
+    *,
+    method=None,
+    trials=None,
+    config=None,
+    data="data",
+    seed=None,
+    sim=None,
+    camera=None,
+    urdf=None,
+    events=(),
+    plot=False,
+    **entries,
+):
+    """Runs every trial of a run and returns what it wrote.
+
+    ``learner`` is any object with ``propose(query) -> (3,)`` and ``learn(path)`` (its
+    ``name`` attribute, or its class name, names its folder); without it the built-in
+    ``method`` (default: the config's) runs. ``config`` is a config file (default: the
+    shipped ``configs/lin5.conf``); keyword ``entries`` override its entries as ``--set``
+    does; ``events`` are ``rotate:TRIAL:DEG`` / ``elongate:TRIAL:LINK:CM`` strings.
+
+    Returns a dict: ``folder`` (a ``pathlib.Path``), ``summary`` (summary.json as a dict),
+    ``trials`` and ``distances_mm``: for each feedback step 1..5, NumPy arrays of the
+    trials that took that step and the distance to the target (mm) after it.
+
+    The GIL is released while Rust runs (a Python learner takes it back for its calls).
+    A Python learner's exception — or a non-finite move, as ``ValueError`` — stops the run
+    and is raised here; the run folder keeps the data files written so far.
+    """
+    folder, summary = _run(
+        learner,
+        method=method,
+        trials=trials,
+        config=None if config is None else str(config),
+        data=str(data),
+        seed=seed,
+        sim=sim,
+        camera=camera,
+        urdf=None if urdf is None else str(urdf),
+        events=list(events),
+        plot=plot,
+        **entries,
+    )
+    folder = pathlib.Path(folder)
+    steps = [_read_step_file(folder / f"{k}step") for k in range(1, RECORDED_STEPS + 1)]
+    return {
+        "folder": folder,
+        "summary": json.loads(summary),
+        "trials": [trials for trials, _ in steps],
+        "distances_mm": [distances for _, distances in steps],
+    }
+
+
+def _read_step_file(path):
+    """The trial and distance columns of a ``Nstep`` file (the minutes column dropped)."""
+    if path.stat().st_size == 0:
+        return np.zeros(0, dtype=np.int64), np.zeros(0)
+    table = np.loadtxt(path, ndmin=2)
+    return table[:, 0].astype(np.int64), table[:, 1]
+
+
+def _register_environment():
+    from gymnasium.envs.registration import register, registry
+
+    if "eyehand/Reach-v0" not in registry:
+        register(id="eyehand/Reach-v0", entry_point="eyehand.env:ReachEnv")
+
+
+_register_environment()

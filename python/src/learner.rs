@@ -1,0 +1,206 @@
+//! Learners across the boundary: a Python object with `propose` and `learn` as a Rust
+//! [`Learner`], and the built-in learners as the Python class `eyehand.Learner`.
+
+use crate::convert::{load_config, path_array, path_from, query_array, query_from, vector3};
+use eyehand::experiment::setup::build_learner;
+use eyehand::learn::{LearnError, Learner, LearnerStats, Observation, Query};
+use eyehand::robot::{load_urdf, ArmModel};
+use nalgebra::Vector3;
+use numpy::PyArray1;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+
+/// The first error a Python learner raised, kept for the caller to raise again.
+pub type ErrorSlot = Arc<Mutex<Option<PyErr>>>;
+
+/// A Python object with `propose(query) -> (3,)` and `learn(path)`, driven by the Rust
+/// trial loop. The first exception (or non-finite move) is kept in its slot; from then on
+/// it proposes no move and its `learn` fails, which stops the run.
+#[derive(Debug)]
+pub struct PyLearner {
+    object: Py<PyAny>,
+    name: String,
+    error: ErrorSlot,
+}
+
+impl PyLearner {
+    /// Wraps `object`; its runs are filed under its `name` attribute, or its class name.
+    pub fn new(object: &Bound<'_, PyAny>, error: ErrorSlot) -> PyResult<PyLearner> {
+        let name = match object.getattr("name") {
+            Ok(name) if name.is_instance_of::<pyo3::types::PyString>() => name.extract()?,
+            _ => object.get_type().name()?.to_string(),
+        };
+        Ok(PyLearner {
+            object: object.clone().unbind(),
+            name,
+            error,
+        })
+    }
+
+    fn failed(&self) -> bool {
+        self.error.lock().map_or(true, |slot| slot.is_some())
+    }
+
+    fn keep(&self, error: PyErr) {
+        if let Ok(mut slot) = self.error.lock() {
+            slot.get_or_insert(error);
+        }
+    }
+
+    fn call_propose(&self, py: Python<'_>, query: &Query) -> PyResult<Vector3<f64>> {
+        let answer = self
+            .object
+            .bind(py)
+            .call_method1("propose", (query_array(py, query),))?;
+        let delta = vector3(&answer, "propose's answer")?;
+        if !delta.iter().all(|v| v.is_finite()) {
+            return Err(PyValueError::new_err(format!(
+                "learner `{}` proposed a non-finite move ({}, {}, {}) for the query \
+                 (cx {}, cy {}, cz {}, θ2 {}, θ3 {})",
+                self.name,
+                delta.x,
+                delta.y,
+                delta.z,
+                query.c.x,
+                query.c.y,
+                query.c.z,
+                query.theta2_deg,
+                query.theta3_deg
+            )));
+        }
+        Ok(delta)
+    }
+}
+
+impl Learner for PyLearner {
+    fn name(&self) -> &str {
+        &self.name
+    }
+
+    fn propose(&mut self, query: &Query) -> Vector3<f64> {
+        if self.failed() {
+            return Vector3::repeat(f64::NAN);
+        }
+        Python::attach(|py| match self.call_propose(py, query) {
+            Ok(delta) => delta,
+            Err(error) => {
+                self.keep(error);
+                Vector3::repeat(f64::NAN)
+            }
+        })
+    }
+
+    fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
+        if !self.failed() {
+            let called = Python::attach(|py| {
+                let path = path_array(py, path)?;
+                self.object
+                    .bind(py)
+                    .call_method1("learn", (path,))
+                    .map(drop)
+            });
+            if let Err(error) = called {
+                self.keep(error);
+            }
+        }
+        match self
+            .error
+            .lock()
+            .ok()
+            .and_then(|slot| slot.as_ref().map(|e| e.to_string()))
+        {
+            Some(reason) => Err(LearnError::Failed {
+                learner: self.name.clone(),
+                reason,
+            }),
+            None => Ok(()),
+        }
+    }
+}
+
+/// A built-in learner (`lin5`, `lin8`, `nnw`, `ffn`, `kohonen`, `ik`) with the settings of
+/// a config: `Learner(method="lin5", config=None, urdf=None, **entries)`.
+#[pyclass(unsendable, module = "eyehand", name = "Learner")]
+#[derive(Debug)]
+pub struct BuiltinLearner {
+    inner: Box<dyn Learner>,
+}
+
+impl BuiltinLearner {
+    /// The learner, for the trial loop.
+    pub fn inner_mut(&mut self) -> &mut dyn Learner {
+        self.inner.as_mut()
+    }
+}
+
+#[pymethods]
+impl BuiltinLearner {
+    #[new]
+    #[pyo3(signature = (method = "lin5", config = None, urdf = None, **entries))]
+    fn new(
+        method: &str,
+        config: Option<PathBuf>,
+        urdf: Option<PathBuf>,
+        entries: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<BuiltinLearner> {
+        let (mut config, _) = load_config(config.as_deref(), entries)?;
+        crate::convert::set_entry(&mut config, "method", method)?;
+        let model = nominal_model(urdf.as_deref())?;
+        let inner = build_learner(&config, &model, None).map_err(crate::convert::value_error)?;
+        Ok(BuiltinLearner { inner })
+    }
+
+    /// The method's name.
+    #[getter]
+    fn name(&self) -> String {
+        self.inner.name().to_string()
+    }
+
+    /// The move (Δθ1, Δθ2, Δθ3 in degrees) for a query (cx, cy, cz, θ2, θ3).
+    fn propose<'py>(
+        &mut self,
+        py: Python<'py>,
+        query: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let delta = self.inner.propose(&query_from(query)?);
+        Ok(PyArray1::from_slice(py, delta.as_slice()))
+    }
+
+    /// Learns from a trial's poses, an (n, 6) array of (cx, cy, cz, θ1, θ2, θ3).
+    fn learn(&mut self, path: &Bound<'_, PyAny>) -> PyResult<()> {
+        let path = path_from(path)?;
+        self.inner
+            .learn(&path)
+            .map_err(|e| pyo3::exceptions::PyOSError::new_err(e.to_string()))
+    }
+
+    /// The learner's figures: nodes, bins and patterns.
+    fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let LearnerStats {
+            nodes,
+            bins,
+            patterns,
+            ..
+        } = self.inner.stats();
+        let dict = PyDict::new(py);
+        dict.set_item("nodes", nodes)?;
+        dict.set_item("bins", bins)?;
+        dict.set_item("patterns", patterns)?;
+        Ok(dict)
+    }
+
+    fn __repr__(&self) -> String {
+        format!("eyehand.Learner({:?})", self.inner.name())
+    }
+}
+
+/// The robot a URDF describes, or the shipped OSCAR-6; a bad URDF is a `ValueError`.
+pub fn nominal_model(urdf: Option<&std::path::Path>) -> PyResult<ArmModel> {
+    match urdf {
+        Some(path) => load_urdf(path).map_err(crate::convert::value_error),
+        None => Ok(ArmModel::oscar6()),
+    }
+}

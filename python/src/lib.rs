@@ -1,0 +1,20 @@
+//! The Python extension `eyehand._eyehand`: the testbed, the built-in learners and runs,
+//! on the same engine as the `eyehand` command line.
+
+mod convert;
+mod learner;
+mod run;
+mod testbed;
+
+use pyo3::prelude::*;
+
+/// The module `eyehand._eyehand`.
+#[pymodule]
+fn _eyehand(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<testbed::Testbed>()?;
+    m.add_class::<learner::BuiltinLearner>()?;
+    m.add_function(wrap_pyfunction!(run::run_py, m)?)?;
+    m.add_function(wrap_pyfunction!(run::parse_event, m)?)?;
+    m.add("ENTRY_NAMES", eyehand::experiment::ENTRY_NAMES.to_vec())?;
+    Ok(())
+}

@@ -1,0 +1,260 @@
+//! `eyehand.Testbed`: the trial loop of a run, driven one feedback step at a time from
+//! Python, on the simulator and camera a run's config names.
+
+use crate::convert::{load_config, path_array, query_array, set_entry, value_error, vector3};
+use crate::learner::{nominal_model, BuiltinLearner, ErrorSlot, PyLearner};
+use eyehand::control::{Failure, StepError, TrialEnd, TrialLoop};
+use eyehand::experiment::setup::{build_camera, build_simulator, trial_settings};
+use eyehand::learn::{LearnError, Learner};
+use eyehand::robot::Controlled;
+use eyehand::units::{MM_PER_M, M_PER_CM};
+use numpy::{PyArray1, PyArray2, PyArrayMethods};
+use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::path::PathBuf;
+
+/// What a step returns: the reading (None when not seen), θ1..θ3, the distance (mm) and
+/// whether the object is seen.
+type StepTuple<'py> = (
+    Option<Bound<'py, PyArray1<f64>>>,
+    Bound<'py, PyArray1<f64>>,
+    f64,
+    bool,
+);
+
+/// The testbed: `Testbed(config=None, sim="kinematic", camera="projection", seed=1,
+/// urdf=None, **entries)`.
+#[pyclass(unsendable, module = "eyehand")]
+#[derive(Debug)]
+pub struct Testbed {
+    trials: TrialLoop,
+}
+
+#[pymethods]
+impl Testbed {
+    #[new]
+    #[pyo3(signature = (config = None, sim = "kinematic", camera = "projection", seed = 1, urdf = None, **entries))]
+    fn new(
+        config: Option<PathBuf>,
+        sim: &str,
+        camera: &str,
+        seed: u64,
+        urdf: Option<PathBuf>,
+        entries: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<Testbed> {
+        let (mut config, _) = load_config(config.as_deref(), entries)?;
+        set_entry(&mut config, "sim", sim)?;
+        set_entry(&mut config, "camera", camera)?;
+        config.seed = seed;
+        let model = nominal_model(urdf.as_deref())?;
+        let trials = TrialLoop::new(
+            build_simulator(&config, model),
+            build_camera(&config),
+            trial_settings(&config),
+            seed,
+        );
+        Ok(Testbed { trials })
+    }
+
+    /// Begins a trial (target and start drawn as a run draws them) and returns the
+    /// observation (cx, cy, cz, θ2, θ3). With `seed`, the draws restart from it.
+    #[pyo3(signature = (seed = None))]
+    fn reset<'py>(
+        &mut self,
+        py: Python<'py>,
+        seed: Option<u64>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        if let Some(seed) = seed {
+            self.trials.reseed(seed);
+        }
+        match self.trials.begin_trial() {
+            Ok(start) => Ok(query_array(py, &start.query())),
+            Err(failure) => Err(PyRuntimeError::new_err(failure_message(failure))),
+        }
+    }
+
+    /// Executes a move (Δθ1, Δθ2, Δθ3 in degrees) and returns (reading or None, joint
+    /// angles θ1..θ3 in degrees, distance to the target in mm, seen).
+    fn step<'py>(
+        &mut self,
+        py: Python<'py>,
+        delta_deg: &Bound<'py, PyAny>,
+    ) -> PyResult<StepTuple<'py>> {
+        let delta = vector3(delta_deg, "a move")?;
+        let report = self.trials.step_trial(&delta).map_err(|e| match e {
+            StepError::NoTrial => PyRuntimeError::new_err(e.to_string()),
+            _ => PyValueError::new_err(e.to_string()),
+        })?;
+        let reading = report
+            .reading
+            .ok()
+            .map(|c| PyArray1::from_slice(py, c.as_slice()));
+        let seen = reading.is_some();
+        let joints = PyArray1::from_slice(py, report.theta_deg.as_slice());
+        Ok((reading, joints, report.distance_mm, seen))
+    }
+
+    /// The latest observation of the trial (cx, cy, cz, θ2, θ3): where the object was last
+    /// seen; None before the first reset.
+    #[getter]
+    fn observation<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray1<f64>>> {
+        let last = self.trials.path().last()?;
+        Some(query_array(py, &last.query()))
+    }
+
+    /// The distance (mm) from the camera to the target as it is now; None when no trial
+    /// was begun.
+    #[getter]
+    fn distance_mm(&self) -> Option<f64> {
+        self.trials.distance_mm()
+    }
+
+    /// The reading's bounds: (low, high) of cx, cy (pixels, the image's half size) and cz
+    /// (above −100; no upper bound), a (3, 2) array.
+    #[getter]
+    fn reading_bounds<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let camera = self.trials.camera().model();
+        let (x, y) = (camera.width / 2.0, camera.height / 2.0);
+        let flat = vec![-x, x, -y, y, -100.0, f64::INFINITY];
+        PyArray1::from_vec(py, flat).reshape([3, 2])
+    }
+
+    /// Feedback steps taken in the trial going on (0 when none is).
+    #[getter]
+    fn steps(&self) -> usize {
+        self.trials.trial_state().map_or(0, |(steps, _)| steps)
+    }
+
+    /// Why the trial is over: "reached", "steps_used", "lost", or None while it goes on.
+    #[getter]
+    fn end(&self) -> Option<&'static str> {
+        let (_, end) = self.trials.trial_state()?;
+        end.map(|end| match end {
+            TrialEnd::Reached => "reached",
+            TrialEnd::StepsUsed => "steps_used",
+            TrialEnd::Lost(_) => "lost",
+        })
+    }
+
+    /// True when no trial is going on or it is over.
+    #[getter]
+    fn done(&self) -> bool {
+        self.trials
+            .trial_state()
+            .is_none_or(|(_, end)| end.is_some())
+    }
+
+    /// The trial's poses so far, an (n, 6) array of (cx, cy, cz, θ1, θ2, θ3).
+    #[getter]
+    fn path<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        path_array(py, self.trials.path())
+    }
+
+    /// Finishes the trial: `learner` (an `eyehand.Learner` or any object with `learn`)
+    /// learns from its poses, as a run's learner does after each trial.
+    fn learn(&mut self, learner: &Bound<'_, PyAny>) -> PyResult<()> {
+        let trials = &mut self.trials;
+        with_learner(learner, |l| trials.finish_trial(l))
+    }
+
+    /// Pre-learning: the 8 fixed moves a run makes before its first trial, learned by
+    /// `learner`. Ends any trial going on unlearned.
+    fn prelearn(&mut self, learner: &Bound<'_, PyAny>) -> PyResult<()> {
+        let trials = &mut self.trials;
+        with_learner(learner, |l| trials.prelearn(l))
+    }
+
+    /// Stretches (positive) or shortens link 1, 2 or 3 by `cm`.
+    fn stretch_link(&mut self, link: usize, cm: f64) -> PyResult<()> {
+        self.trials
+            .sim_mut()
+            .stretch_link(link, cm * M_PER_CM)
+            .map_err(value_error)
+    }
+
+    /// Turns the camera about its optical axis by `degrees`.
+    fn rotate_camera(&mut self, degrees: f64) -> PyResult<()> {
+        if !degrees.is_finite() {
+            return Err(PyValueError::new_err(format!(
+                "a camera turn of {degrees} degrees"
+            )));
+        }
+        self.trials.sim_mut().rotate_camera(degrees.to_radians());
+        Ok(())
+    }
+
+    /// Forward kinematics of the robot as it is now, as `eyehand fk --json` gives it:
+    /// {"camera_cm": (3,), "joints_deg": (6,)} for θ1..θ3 in degrees.
+    fn fk<'py>(&self, py: Python<'py>, joints: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+        let theta = vector3(joints, "joints")?;
+        if !theta.iter().all(|v| v.is_finite()) {
+            return Err(PyValueError::new_err("joint angles must be finite"));
+        }
+        let model = self.trials.sim().model();
+        let q = model.full_pose(&Controlled::from(theta.map(f64::to_radians)));
+        let camera = model.camera_position(&q).coords / M_PER_CM;
+        let dict = PyDict::new(py);
+        dict.set_item("camera_cm", PyArray1::from_slice(py, camera.as_slice()))?;
+        let joints_deg: Vec<f64> = q.iter().map(|v| v.to_degrees()).collect();
+        dict.set_item("joints_deg", PyArray1::from_vec(py, joints_deg))?;
+        Ok(dict)
+    }
+
+    /// The limits (low, high) of θ1, θ2, θ3 in degrees, a (3, 2) array.
+    #[getter]
+    fn joint_limits_deg<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let joints = self.trials.sim().model().joints();
+        let flat: Vec<f64> = joints[..3]
+            .iter()
+            .flat_map(|j| [j.lower.to_degrees(), j.upper.to_degrees()])
+            .collect();
+        PyArray1::from_vec(py, flat).reshape([3, 2])
+    }
+
+    /// At most this many feedback steps a trial.
+    #[getter]
+    fn feedback_steps(&self) -> usize {
+        self.trials.settings().feedback_steps
+    }
+
+    /// At least this many feedback steps before reaching ε ends a trial.
+    #[getter]
+    fn min_feedback_steps(&self) -> usize {
+        self.trials.settings().min_feedback_steps
+    }
+
+    /// ε in mm.
+    #[getter]
+    fn epsilon_mm(&self) -> f64 {
+        self.trials.settings().epsilon * MM_PER_M
+    }
+}
+
+/// Runs `body` with `learner` as a Rust learner: a built-in `eyehand.Learner` directly,
+/// any other object through its `propose` and `learn`; its exception is raised again.
+fn with_learner(
+    learner: &Bound<'_, PyAny>,
+    body: impl FnOnce(&mut dyn Learner) -> Result<(), LearnError>,
+) -> PyResult<()> {
+    if let Ok(builtin) = learner.cast::<BuiltinLearner>() {
+        let mut builtin = builtin.try_borrow_mut()?;
+        return body(builtin.inner_mut()).map_err(|e| PyOSError::new_err(e.to_string()));
+    }
+    let slot = ErrorSlot::default();
+    let mut wrapped = PyLearner::new(learner, slot.clone())?;
+    let result = body(&mut wrapped);
+    if let Some(error) = slot.lock().ok().and_then(|mut s| s.take()) {
+        return Err(error);
+    }
+    result.map_err(|e| PyOSError::new_err(e.to_string()))
+}
+
+/// Why a trial could not begin, in words.
+fn failure_message(failure: Failure) -> String {
+    match failure {
+        Failure::UnreachableTarget => "no reachable target was drawn".into(),
+        Failure::NoStartSeen => "no start pose from which the object is seen was drawn".into(),
+        other => format!("the trial could not begin: {other:?}"),
+    }
+}

@@ -6,6 +6,7 @@ line uses.
   ``prelearn``, ``stretch_link``, ``rotate_camera``, ``fk``).
 - ``Learner``: a built-in learner (``lin5``, ``lin8``, ``nnw``, ``ffn``, ``kohonen``, ``ik``)
   with ``propose(query)`` and ``learn(path)``.
+- ``patterns``: a path's learning patterns as the built-in learners form them.
 - ``run``: a whole run of a built-in or a Python learner, writing the run folder
   ``eyehand run`` writes.
 
@@ -18,10 +19,10 @@ import pathlib
 
 import numpy as np
 
-from ._eyehand import ENTRY_NAMES, Learner, Testbed
+from ._eyehand import ENTRY_NAMES, Learner, Testbed, patterns
 from ._eyehand import run as _run
 
-__all__ = ["ENTRY_NAMES", "Learner", "Testbed", "run", "RECORDED_STEPS"]
+__all__ = ["ENTRY_NAMES", "Learner", "Testbed", "patterns", "run", "RECORDED_STEPS"]
 
 #: Distances after feedback steps 1..RECORDED_STEPS are written to ``1step`` … ``5step``.
 RECORDED_STEPS = 5

@@ -3,6 +3,7 @@
 
 mod convert;
 mod learner;
+mod patterns;
 mod run;
 mod testbed;
 
@@ -15,6 +16,7 @@ fn _eyehand(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<learner::BuiltinLearner>()?;
     m.add_function(wrap_pyfunction!(run::run_py, m)?)?;
     m.add_function(wrap_pyfunction!(run::parse_event, m)?)?;
+    m.add_function(wrap_pyfunction!(patterns::patterns, m)?)?;
     m.add("ENTRY_NAMES", eyehand::experiment::ENTRY_NAMES.to_vec())?;
     Ok(())
 }

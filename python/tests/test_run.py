@@ -126,3 +126,18 @@ def test_the_gil_is_released_during_a_long_run(tmp_path):
     assert elapsed > 0.3, f"the run is long enough to tell ({elapsed:.2f} s)"
     gaps = np.diff([started, *ticks, time.perf_counter()])
     assert gaps.max() < elapsed / 3, f"the main thread went on (longest pause {gaps.max():.3f} s of {elapsed:.2f} s)"
+
+
+def test_patterns_are_the_adjusted_patterns_in_the_query_order():
+    path = np.array(
+        [
+            [10.0, -20.0, 5.0, 0.0, 40.0, 100.0],
+            [0.0, 0.0, 0.0, 0.0, 45.0, 98.0],
+            [1.0, 2.0, 3.0, 0.0, 45.0, 98.05],
+        ]
+    )
+    inputs, targets = eyehand.patterns(path, minimal_joint_move=0.1)
+    assert inputs.shape == (2, 5) and targets.shape == (2, 3), "the 0.05° move is no pattern"
+    assert np.allclose(inputs[0], [10.0, -20.0, 5.0, 40.0, 100.0])
+    assert np.allclose(targets[0], [0.0, 5.0, -2.0])
+    assert np.allclose(inputs[1], [9.0, -22.0, 2.0, 40.0, 100.0])

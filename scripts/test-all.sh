@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Every test, Rust and Python: `cargo test --locked`, then the Python package built into a
+# virtual environment (target/python-venv) and its pytest suite (python/tests).
+#
+# Needs python3 (≥ 3.9, with venv); installs maturin, gymnasium, numpy, scikit-learn and
+# pytest from PyPI into the environment. The package is built in cargo's `test` profile so
+# that it reuses the dependencies `cargo test` just compiled (`pip install ./python` builds
+# the release wheel a user installs).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+cargo test --locked
+
+venv=target/python-venv
+[ -x "$venv/bin/python" ] || python3 -m venv "$venv"
+"$venv/bin/pip" install --quiet --disable-pip-version-check \
+    maturin gymnasium numpy scikit-learn pytest
+rm -rf target/python-wheel
+"$venv/bin/maturin" build --quiet --locked --profile test \
+    --manifest-path python/Cargo.toml --interpreter "$venv/bin/python" --out target/python-wheel
+"$venv/bin/pip" install --quiet --disable-pip-version-check --force-reinstall --no-deps \
+    target/python-wheel/eyehand-*.whl
+
+EYEHAND_BIN="$PWD/target/debug/eyehand" "$venv/bin/python" -m pytest -q python/tests

@@ -53,13 +53,11 @@ pub fn run_py(
         .map(|e| e.parse::<Event>().map_err(value_error))
         .collect::<PyResult<Vec<_>>>()?;
     let options = RunOptions {
-        config,
         config_name,
         urdf,
-        data_dir: data,
         events,
-        progress: false,
         plot,
+        ..RunOptions::new(config, data)
     };
     let result = match learner {
         None => py.detach(|| run(&options)).map_err(run_error)?,

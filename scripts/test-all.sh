@@ -3,7 +3,7 @@
 # virtual environment (target/python-venv) and its pytest suite (python/tests).
 #
 # Needs python3 (≥ 3.9, with venv); installs maturin, gymnasium, numpy, scikit-learn and
-# pytest from PyPI into the environment. The package is built in cargo's `test` profile so
+# pytest from PyPI into the environment. The package is built in cargo's `dev` profile so
 # that it reuses the dependencies `cargo test` just compiled (`pip install ./python` builds
 # the release wheel a user installs).
 set -euo pipefail
@@ -16,7 +16,7 @@ venv=target/python-venv
 "$venv/bin/pip" install --quiet --disable-pip-version-check \
     maturin gymnasium numpy scikit-learn pytest
 rm -rf target/python-wheel
-"$venv/bin/maturin" build --quiet --locked --profile test \
+"$venv/bin/maturin" build --quiet --locked --profile dev \
     --manifest-path python/Cargo.toml --interpreter "$venv/bin/python" --out target/python-wheel
 "$venv/bin/pip" install --quiet --disable-pip-version-check --force-reinstall --no-deps \
     target/python-wheel/eyehand-*.whl

@@ -4,6 +4,7 @@
 use crate::convert::{load_config, path_array, query_array, set_entry, value_error, vector3};
 use crate::learner::{nominal_model, BuiltinLearner, ErrorSlot, PyLearner};
 use eyehand::control::{Failure, StepError, TrialEnd, TrialLoop};
+use eyehand::experiment::preflight;
 use eyehand::experiment::setup::{build_camera, build_simulator, trial_settings};
 use eyehand::learn::{LearnError, Learner};
 use eyehand::robot::Controlled;
@@ -24,7 +25,7 @@ type StepTuple<'py> = (
 );
 
 /// The testbed: `Testbed(config=None, sim="kinematic", camera="projection", seed=1,
-/// urdf=None, **entries)`.
+/// urdf=None, **entries)`. The config and the arm pass a run's checks before it is built.
 #[pyclass(unsendable, module = "eyehand")]
 #[derive(Debug)]
 pub struct Testbed {
@@ -48,6 +49,7 @@ impl Testbed {
         set_entry(&mut config, "camera", camera)?;
         config.seed = seed;
         let model = nominal_model(urdf.as_deref())?;
+        preflight(&config, &model, &[]).map_err(value_error)?;
         let trials = TrialLoop::new(
             build_simulator(&config, model),
             build_camera(&config),

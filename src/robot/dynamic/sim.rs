@@ -2,7 +2,8 @@
 //! model plans every move (where a joint limit stops it, the wrist angle, link and camera
 //! changes); the multibody then follows the plan tick by tick and settles.
 //!
-//! How it moves, and why (numbers measured on the development machine, 2 cores):
+//! How it moves, and why (the measured figures are in docs/DYNAMIC.md, printed by
+//! `cargo bench --bench dynamic`; they drift, so none are copied here):
 //! - A move's trapezoidal profile (`robot_speed`, `robot_accel`) is sampled every `dt`
 //!   along the straight joint-space line; each tick sends every servo the set-point, its
 //!   speed and its acceleration (velocity and acceleration feed-forward), θ5 from the
@@ -13,24 +14,22 @@
 //! - The servos are Rapier position motors (acceleration-based, so one gain pair suits a
 //!   25 kg column and a 0.8 kg flange) bounded by the joints' URDF efforts. A gravity
 //!   feed-forward computed from the model at the set-point carries the arm's weight, as an
-//!   industrial controller's does: without it the servo error under gravity is k-bound
-//!   (2·10⁻³ rad at 10⁴/s², a probe found), with it a held arm drifts by 10⁻¹⁸ rad in 10 s.
+//!   industrial controller's does: without it the servo error under gravity is bound by
+//!   the stiffness, with it a held arm does not drift.
 //!   Set-points are clamped to the limits (a command past a limit stops at it, exactly where
 //!   the kinematic simulator stops); the multibody's own limits stay on as a backstop.
 //! - Defaults: `dt` 5 ms (200 Hz), 1 solver iteration, stiffness 400,000/s² and damping
 //!   1265/s (a critically damped 100 Hz servo; Rapier's motors are implicit, so stable at
-//!   ω·dt ≈ 3). With the joints' damping now the URDF's (zero, not Rapier's default 0.1
-//!   N·m·s/rad), the former 25 Hz servo took 16 ticks to settle after a move; the 100 Hz
-//!   servo with acceleration feed-forward takes about 2. Settled poses are within 10⁻⁵ rad
-//!   of the set-point and the camera within 0.005 mm of the kinematic model's; 1 or 2
-//!   solver iterations are as precise as 8 here (only the motors, limits and contacts are
+//!   ω·dt ≈ 3). With the joints' damping the URDF's (zero, not Rapier's default 0.1
+//!   N·m·s/rad), a slower servo rings for many ticks after a move; the 100 Hz servo with
+//!   acceleration feed-forward settles within a few. One solver iteration is as precise as
+//!   several for settled poses here (only the motors, limits and contacts are
 //!   constraints).
 //! - f64 (rapier3d-f64): the camera must match the kinematic model to 0.05 mm over a
-//!   1.2 m arm. A probe of Rapier 0.36 measured end-effector errors against plain forward
-//!   kinematics of 10⁻⁴–5·10⁻⁴ mm in f32 and 10⁻¹² mm in f64, f32 unstable with stiff
-//!   motors at a 1 ms step, and a step only 3–20% dearer in f64 (36–42 µs vs 35 µs, 4
-//!   iterations): f64 keeps the servo error, not rounding, as the only gap, and identical
-//!   inputs give bit-identical runs.
+//!   1.2 m arm. A probe of Rapier 0.36 (shared/notes) found f32's rounding a visible part
+//!   of that budget and f32 unstable with stiff motors, for a step only slightly dearer in
+//!   f64: f64 keeps the servo error, not rounding, as the only gap, and identical inputs
+//!   give bit-identical runs.
 //! - The world: a floor at `floor_z` and contacts between links that are neither
 //!   neighbours nor touching at the zero pose (`contacts.rs`). The plan already stops a
 //!   move where a link or the camera would go below the floor (the kinematic rule); a

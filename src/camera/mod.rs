@@ -7,7 +7,7 @@ mod raycast;
 
 pub use model::{CameraModel, NotSeen};
 pub use projection::ProjectionCamera;
-pub use raycast::RaycastCamera;
+pub use raycast::{PixelCoverage, RaycastCamera};
 
 use nalgebra::{Isometry3, Point3, Vector3};
 

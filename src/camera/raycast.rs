@@ -116,6 +116,51 @@ impl RaycastCamera {
     }
 }
 
+impl RaycastCamera {
+    /// The image this camera sees of the sphere centred at `p` (camera frame), without pixel
+    /// noise: every pixel the sphere covers, row by row. Empty when the sphere is not in
+    /// front of the camera or misses the image; a blob cut by the border is kept (the
+    /// reading refuses it).
+    pub fn render(&self, p: &Vector3<f64>) -> Vec<PixelCoverage> {
+        let m = &self.model;
+        let mut pixels = Vec::new();
+        if !(p.iter().all(|v| v.is_finite()) && p.z > m.object_radius) {
+            return pixels;
+        }
+        let (Some(columns), Some(rows)) =
+            (self.span(p.x, p.z, m.width), self.span(p.y, p.z, m.height))
+        else {
+            return pixels;
+        };
+        let noiseless = RaycastCamera::new(*m, self.resolution);
+        Coverage::each_pixel(
+            &noiseless,
+            p,
+            (columns, rows),
+            0,
+            |column, row, coverage, _, _| {
+                pixels.push(PixelCoverage {
+                    column,
+                    row,
+                    coverage,
+                });
+            },
+        );
+        pixels
+    }
+}
+
+/// A pixel of the ray-cast camera's image that the object covers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PixelCoverage {
+    /// The pixel's column (0 at the image's left, `resolution` pixels per side).
+    pub column: usize,
+    /// The pixel's row (0 at the image's top).
+    pub row: usize,
+    /// The covered fraction of the pixel (0–1]: its grey level.
+    pub coverage: f64,
+}
+
 impl Camera for RaycastCamera {
     fn read_local(&self, p: &Vector3<f64>) -> Result<Vector3<f64>, NotSeen> {
         let m = &self.model;
@@ -162,9 +207,33 @@ impl Coverage {
     fn measure(
         camera: &RaycastCamera,
         p: &Vector3<f64>,
-        (columns, rows): (RangeInclusive<usize>, RangeInclusive<usize>),
+        spans: (RangeInclusive<usize>, RangeInclusive<usize>),
         frame: u64,
     ) -> Coverage {
+        let m = &camera.model;
+        let n = camera.resolution;
+        let pixel_area = (m.width / n as f64) * (m.height / n as f64);
+        let mut blob = Coverage::default();
+        Coverage::each_pixel(camera, p, spans, frame, |column, row, covered, u, v| {
+            let area = covered * pixel_area;
+            blob.area += area;
+            blob.sum_u += area * u;
+            blob.sum_v += area * v;
+            blob.on_border |= row == 0 || column == 0 || row == n - 1 || column == n - 1;
+        });
+        blob
+    }
+
+    /// Calls `each(column, row, coverage, u, v)` for every pixel in `columns` × `rows` that
+    /// the sphere centred at `p` covers (after the pixel noise of frame `frame`): its
+    /// covered fraction and the centroid (px) of its covered part.
+    fn each_pixel(
+        camera: &RaycastCamera,
+        p: &Vector3<f64>,
+        (columns, rows): (RangeInclusive<usize>, RangeInclusive<usize>),
+        frame: u64,
+        mut each: impl FnMut(usize, usize, f64, f64, f64),
+    ) {
         let m = &camera.model;
         let n = camera.resolution;
         let (cell_u, cell_v) = (m.width / n as f64, m.height / n as f64);
@@ -216,7 +285,6 @@ impl Coverage {
         }
         let sigma = camera.pixel_noise;
         let pixel_area = cell_u * cell_v;
-        let mut blob = Coverage::default();
         for j in 0..h {
             for i in 0..w {
                 let (column, row) = (c0 + i, r0 + j);
@@ -233,17 +301,11 @@ impl Coverage {
                         0.0
                     };
                 }
-                if covered == 0.0 {
-                    continue;
+                if covered > 0.0 {
+                    each(column, row, covered, mean_u, mean_v);
                 }
-                let area = covered * pixel_area;
-                blob.area += area;
-                blob.sum_u += area * mean_u;
-                blob.sum_v += area * mean_v;
-                blob.on_border |= row == 0 || column == 0 || row == n - 1 || column == n - 1;
             }
         }
-        blob
     }
 }
 

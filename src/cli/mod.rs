@@ -1,10 +1,12 @@
-//! The command line: `eyehand run`, `plot`, `compare`, `sweep`, `check-config`, `fk` and `simulate`.
+//! The command line: `eyehand run`, `plot`, `compare`, `sweep`, `check-config`, `fk`,
+//! `simulate` and `show`.
 //! Flags are parsed here (validation only); each command hands resolved values to the
 //! library and turns the outcome into an exit code: 2 for bad input, 1 for a failed run,
 //! 130/143 for a run stopped by SIGINT/SIGTERM. Output goes through [`say`], so a closed
 //! pipe or a full disk behind stdout ends the program with a code, never a panic.
 
 mod run;
+mod show;
 mod simulate;
 mod study;
 mod tools;
@@ -37,6 +39,8 @@ enum Command {
     Fk(tools::FkArgs),
     /// Runs the dynamic arm free from a pose (servos off or holding) and prints every tick.
     Simulate(simulate::SimulateArgs),
+    /// Re-simulates trials of a run and draws them into RUN_DIR/show/N/.
+    Show(show::ShowArgs),
 }
 
 /// What a command's failure exits with, and says.
@@ -89,6 +93,7 @@ pub fn execute(cli: Cli) -> ExitCode {
         Command::CheckConfig(args) => tools::check_config(args),
         Command::Fk(args) => tools::fk(args),
         Command::Simulate(args) => simulate::simulate(args),
+        Command::Show(args) => show::show(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

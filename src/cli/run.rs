@@ -1,6 +1,7 @@
 //! `eyehand run`.
 
 use super::{bad_input, failed, say, Failure};
+use crate::experiment::show::TrialRange;
 use crate::experiment::{
     self, CameraKind, Event, RunError, RunRequest, RunResult, SimKind, StopRequest,
 };
@@ -46,6 +47,8 @@ pub(super) struct RunArgs {
     /// Does not draw plot.png at the end.
     #[arg(long)]
     no_plot: bool,
+    #[command(flatten)]
+    record: super::show::RecordArgs,
 }
 
 impl RunArgs {
@@ -83,6 +86,8 @@ impl RunArgs {
 
 pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
     let quiet = args.quiet;
+    args.record.check()?;
+    let record = args.record.clone();
     let mut options = args.request()?.options().map_err(bad_input)?;
     let stop = StopRequest::on_signals().map_err(|e| failed(format!("signal handlers: {e}")))?;
     options.stop = stop.clone();
@@ -94,7 +99,12 @@ pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
     if !quiet {
         say(&result.summary.one_screen())?;
     }
-    outcome(&result, &stop)
+    outcome(&result, &stop)?;
+    let finished = TrialRange {
+        first: 1,
+        last: result.summary.trials,
+    };
+    record.write(&result.folder, finished)
 }
 
 /// How a finished run exits: 130/143 when a signal stopped it, 1 when every trial failed

@@ -11,10 +11,12 @@ mod output;
 pub mod plot;
 mod preflight;
 mod progress;
+pub mod record;
 mod run;
 mod run_folder;
 mod run_request;
 pub mod setup;
+pub mod show;
 pub mod study;
 mod summary;
 

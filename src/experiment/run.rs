@@ -12,7 +12,7 @@ use super::{
     allocate_run_folder, fresh_run_folder, peak_rss_kb, preflight, resident_kb, Config, Event,
     PreflightError, RunFolderError,
 };
-use crate::control::TrialLoop;
+use crate::control::{TrialLoop, TrialOutcome};
 use crate::learn::{LearnError, Learner, LearnerStats};
 use crate::robot::{load_urdf, ArmModel, RobotError, UrdfError};
 use std::io::{self, Write};
@@ -188,19 +188,7 @@ fn drive(
         if options.stop.signal().is_some() {
             break;
         }
-        for event in events.iter().filter(|e| e.trial() == trial) {
-            event
-                .apply(trials.sim_mut())
-                .map_err(|source| RunError::Event {
-                    event: *event,
-                    source,
-                })?;
-        }
-        learner.start_trial(trial);
-        if learner.take_relearn_request() {
-            trials.prelearn(learner.as_mut())?;
-        }
-        let outcome = trials.run_trial(learner.as_mut())?;
+        let outcome = next_trial(&mut trials, learner.as_mut(), &events, trial)?;
         learner.drain_events(&mut model_events);
         files.record_model_events(trial, &model_events)?;
         model_events.clear();
@@ -259,6 +247,30 @@ fn drive(
         summary,
         failures,
     })
+}
+
+/// Trial `trial` of a run: the events due before it applied, the learner told, pre-learning
+/// repeated if the learner asks, then the trial run and learned. A replay of a run goes
+/// through the same steps, so it reproduces the run exactly.
+pub(crate) fn next_trial(
+    trials: &mut TrialLoop,
+    learner: &mut dyn Learner,
+    events: &[Event],
+    trial: usize,
+) -> Result<TrialOutcome, RunError> {
+    for event in events.iter().filter(|e| e.trial() == trial) {
+        event
+            .apply(trials.sim_mut())
+            .map_err(|source| RunError::Event {
+                event: *event,
+                source,
+            })?;
+    }
+    learner.start_trial(trial);
+    if learner.take_relearn_request() {
+        trials.prelearn(learner)?;
+    }
+    Ok(trials.run_trial(learner)?)
 }
 
 /// One line on how the tree is built up, for `verbose_output`.

@@ -95,4 +95,11 @@ pub trait Simulator: std::fmt::Debug {
 
     /// What the simulator has done so far.
     fn work(&self) -> SimWork;
+    /// Starts (`true`) or stops keeping the joint angles of every physics tick, for a
+    /// recording of the run; a simulator without physics ticks keeps none.
+    fn keep_ticks(&mut self, _keep: bool) {}
+
+    /// Moves the joint angles of the ticks kept since the last call into `sink`, oldest
+    /// first (one per `dt`).
+    fn drain_ticks(&mut self, _sink: &mut Vec<Joints>) {}
 }

@@ -6,6 +6,7 @@ mod compare_plot;
 mod run_plot;
 mod series;
 
+pub(crate) use canvas::{register_font, FAMILY};
 pub use compare_plot::{plot_curves, Curve};
 pub use run_plot::{plot_run, PANELS, PLOT_SIZE};
 pub use series::{event_trials, moving_average, Series};

@@ -12,6 +12,9 @@ impl DynamicSim {
         self.arm.drive(target, speed, &efforts, &self.settings);
         self.arm.world.step();
         SimCounters::count(&self.counters.steps);
+        if let Some(ticks) = &mut self.kept_ticks {
+            ticks.push(self.arm.joints());
+        }
     }
 
     /// The set-point of the line from `start` (θ1..θ3) along `delta` at `fraction`:

@@ -101,6 +101,8 @@ pub struct DynamicSim {
     pub(super) arm: Arm,
     pub(super) settings: DynamicSettings,
     pub(super) counters: Arc<SimCounters>,
+    /// The joints after every tick since the last drain, when a recording asks for them.
+    pub(super) kept_ticks: Option<Vec<Joints>>,
 }
 
 impl DynamicSim {
@@ -115,6 +117,7 @@ impl DynamicSim {
             arm,
             settings,
             counters: Arc::default(),
+            kept_ticks: None,
         };
         let start = sim.plan.joints();
         sim.arm.teleport(&start);
@@ -232,6 +235,16 @@ impl Simulator for DynamicSim {
             simulated_seconds: c.steps() as f64 * self.settings.dt,
             settle_timeouts: c.settle_timeouts(),
             contact_stops: c.contact_stops(),
+        }
+    }
+
+    fn keep_ticks(&mut self, keep: bool) {
+        self.kept_ticks = keep.then(Vec::new);
+    }
+
+    fn drain_ticks(&mut self, sink: &mut Vec<Joints>) {
+        if let Some(ticks) = &mut self.kept_ticks {
+            sink.append(ticks);
         }
     }
 }

@@ -1,0 +1,105 @@
+//! Re-simulating a run: the run's config, seed, URDF and events give the same simulator,
+//! camera, learner and trial loop, driven through trials 1..=N exactly as the run drove
+//! them (runs are deterministic), with the trials of interest watched.
+
+use super::watch::{Look, SharedLog, WatchLog, WatchedCamera, WatchedSim};
+use super::{RecordedRun, ShowError};
+use crate::control::{Failure, TrialLoop, TrialOutcome};
+use crate::experiment::run::next_trial;
+use crate::experiment::setup::{build_camera, build_learner, build_simulator, trial_settings};
+use crate::experiment::Event;
+use crate::learn::ModelEvent;
+use crate::robot::{ArmModel, Joints};
+use std::path::Path;
+
+/// What one replayed trial did, pose by pose.
+#[derive(Debug, Clone)]
+pub struct TrialTrace {
+    /// The trial (1-based).
+    pub trial: usize,
+    /// The start pose's look and one look after every feedback step (the last one may not
+    /// see the object); empty when no target or start was drawn.
+    pub looks: Vec<Look>,
+    /// Joint angles of every physics tick from the start pose on, with their simulated
+    /// time (s); empty on the kinematic simulator or when ticks were not asked for.
+    pub ticks: Vec<(f64, Joints)>,
+    /// The distances and failure the run logged for this trial.
+    pub outcome: TrialOutcome,
+    /// The robot as it was during the trial (links stretched, camera turned).
+    pub model: ArmModel,
+    /// The events in effect: those applied before or at this trial.
+    pub events: Vec<Event>,
+}
+
+/// Replays trials 1..=`last` of `run`, handing every trial for which `watched` is true to
+/// `on_trial`. `ticks` keeps the dynamic simulator's physics ticks. A learner that stores
+/// its patterns in a file puts it in `scratch`.
+pub fn replay(
+    run: &RecordedRun,
+    last: usize,
+    watched: impl Fn(usize) -> bool,
+    ticks: bool,
+    scratch: &Path,
+    mut on_trial: impl FnMut(TrialTrace) -> Result<(), ShowError>,
+) -> Result<(), ShowError> {
+    run.check_trials(1, last)?;
+    let config = &run.config;
+    let log = SharedLog::default();
+    let sim = WatchedSim::new(build_simulator(config, run.model.clone()), log.clone());
+    let camera = WatchedCamera::new(build_camera(config), log.clone());
+    let mut learner = build_learner(config, &run.model, Some(scratch))
+        .map_err(crate::experiment::RunError::from)?;
+    let mut trials = TrialLoop::new(
+        Box::new(sim),
+        Box::new(camera),
+        trial_settings(config),
+        config.seed,
+    );
+    let mut model_events: Vec<ModelEvent> = Vec::new();
+    learner.start_trial(0);
+    trials
+        .prelearn(learner.as_mut())
+        .map_err(crate::experiment::RunError::from)?;
+    for trial in 1..=last {
+        log.borrow_mut().clear();
+        trials.sim_mut().keep_ticks(ticks && watched(trial));
+        let outcome = next_trial(&mut trials, learner.as_mut(), &run.events, trial)?;
+        learner.drain_events(&mut model_events);
+        model_events.clear();
+        if watched(trial) {
+            on_trial(trace_of(trial, outcome, &log, &trials, &run.events))?;
+        }
+    }
+    Ok(())
+}
+
+fn trace_of(
+    trial: usize,
+    outcome: TrialOutcome,
+    log: &SharedLog,
+    trials: &TrialLoop,
+    events: &[Event],
+) -> TrialTrace {
+    let mut log = log.borrow_mut();
+    let drawn = !matches!(
+        outcome.failure,
+        Some(Failure::UnreachableTarget | Failure::NoStartSeen)
+    );
+    let WatchLog { looks, ticks, .. } = &mut *log;
+    TrialTrace {
+        trial,
+        looks: if drawn {
+            std::mem::take(looks)
+        } else {
+            Vec::new()
+        },
+        ticks: std::mem::take(ticks),
+        outcome,
+        model: trials.sim().model().clone(),
+        events: events
+            .iter()
+            .filter(|e| e.trial() <= trial)
+            .copied()
+            .collect(),
+    }
+}

@@ -12,6 +12,7 @@ mod model;
 mod motion;
 mod reach;
 mod simulator;
+mod tracking;
 mod urdf;
 
 pub use collision::DEFAULT_FLOOR_Z;
@@ -24,4 +25,5 @@ pub use model::{ArmModel, ArmPose, Controlled, Joints};
 pub use motion::{limit_stop_fraction, TrapezoidProfile};
 pub use reach::ReachSpace;
 pub use simulator::{MoveReport, MoveSettings, SimWork, Simulator};
+pub use tracking::SetPointTracker;
 pub use urdf::{load_urdf, parse_urdf, DEFAULT_URDF, DEFAULT_URDF_NAME};

@@ -95,6 +95,28 @@ pub trait Simulator: std::fmt::Debug {
 
     /// What the simulator has done so far.
     fn work(&self) -> SimWork;
+    /// The simulator's clock tick (s): the physics step of a simulator that moves in
+    /// ticks (the dynamic one), in which continuous servoing and a camera's frame times
+    /// are counted; `None` for one without a clock (the kinematic one: its moves take no
+    /// steps).
+    fn tick_seconds(&self) -> Option<f64> {
+        None
+    }
+
+    /// Continuous servoing: from now on the servos' set-point heads for θ1..θ3 = `goal`
+    /// (rad) from where it is, keeping its velocity, under the moves' speed and
+    /// acceleration limits and without settling first; the goal is cut where a straight
+    /// move from the set-point would meet a joint limit or the floor. A simulator without
+    /// a clock ignores it.
+    fn servo_toward(&mut self, _goal: &Controlled) {}
+
+    /// One clock tick of continuous servoing (the arm held still once its set-point is at
+    /// the goal); true when a contact stopped the arm, which is then held where it is.
+    /// A simulator without a clock does nothing.
+    fn servo_tick(&mut self) -> bool {
+        false
+    }
+
     /// Starts (`true`) or stops keeping the joint angles of every physics tick, for a
     /// recording of the run; a simulator without physics ticks keeps none.
     fn keep_ticks(&mut self, _keep: bool) {}

@@ -130,6 +130,30 @@ impl Simulator for WatchedSim {
     fn keep_ticks(&mut self, keep: bool) {
         self.inner.keep_ticks(keep);
     }
+
+    fn tick_seconds(&self) -> Option<f64> {
+        self.inner.tick_seconds()
+    }
+
+    fn servo_toward(&mut self, goal: &Controlled) {
+        self.inner.servo_toward(goal);
+    }
+
+    fn servo_tick(&mut self) -> bool {
+        let stopped = self.inner.servo_tick();
+        let dt = self.inner.tick_seconds().unwrap_or(0.0);
+        let mut log = self.log.borrow_mut();
+        let mut ticks = std::mem::take(&mut log.tick_buffer);
+        self.inner.drain_ticks(&mut ticks);
+        log.sim_time += dt;
+        let time = log.sim_time;
+        log.ticks
+            .extend(ticks.drain(..).map(|joints| (time, joints)));
+        log.tick_buffer = ticks;
+        drop(log);
+        self.note_joints();
+        stopped
+    }
 }
 
 /// A camera that notes every look it takes.

@@ -10,6 +10,7 @@ mod free;
 mod gravity;
 mod inertia;
 mod motors;
+mod servo;
 mod settings;
 mod settle;
 mod sim;

@@ -7,7 +7,7 @@ use crate::robot::{Controlled, Joints, Simulator, TrapezoidProfile};
 impl DynamicSim {
     /// One control tick: servo targets and gravity feed-forward for set-point `target`
     /// moving at `speed`, then a physics step.
-    fn tick(&mut self, target: &Joints, speed: &Joints) {
+    pub(super) fn tick(&mut self, target: &Joints, speed: &Joints) {
         let efforts = self.arm.hold_weight(self.plan.model(), target);
         self.arm.drive(target, speed, &efforts, &self.settings);
         self.arm.world.step();
@@ -20,8 +20,14 @@ impl DynamicSim {
     /// The set-point of the line from `start` (θ1..θ3) along `delta` at `fraction`:
     /// θ5 keeps the camera vertical (inside its limits), θ4 = θ6 = 0.
     fn set_point(&self, start: &Controlled, delta: &Controlled, fraction: f64) -> Joints {
+        self.full_set_point(&(start + delta * fraction))
+    }
+
+    /// The servos' set-point for θ1..θ3 = `theta`: θ5 keeps the camera vertical (inside
+    /// its limits), θ4 = θ6 = 0.
+    pub(super) fn full_set_point(&self, theta: &Controlled) -> Joints {
         let model = self.model();
-        let mut q = model.full_pose(&(start + delta * fraction));
+        let mut q = model.full_pose(theta);
         let wrist = &model.joints()[4];
         q[4] = q[4].clamp(wrist.lower, wrist.upper);
         q
@@ -37,7 +43,7 @@ impl DynamicSim {
         let moves = self.settings.moves;
         let profile = TrapezoidProfile::new(delta.amax(), moves.speed, moves.accel);
         let dt = self.settings.dt;
-        let lead = 1.0 / (dt * dt * self.settings.motor_stiffness);
+        let lead = self.acceleration_lead();
         let ticks = (profile.duration() / dt).ceil() as usize;
         let from = start.fixed_rows::<3>(0).into_owned();
         let at = |k: usize| profile.fraction_at(k as f64 * dt);
@@ -55,6 +61,13 @@ impl DynamicSim {
             (now, next) = (next, after);
         }
         (ticks, false)
+    }
+
+    /// The acceleration feed-forward's lead on the position per unit second difference of
+    /// the set-point: a/k as a multiple of (next − 2·this + last).
+    pub(super) fn acceleration_lead(&self) -> f64 {
+        let dt = self.settings.dt;
+        1.0 / (dt * dt * self.settings.motor_stiffness)
     }
 
     /// Steps at the current set-point until the arm has settled or the time-out: whether

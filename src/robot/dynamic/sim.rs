@@ -45,7 +45,8 @@ use super::convert::{to_isometry, to_pose};
 use super::inertia::Inertial;
 use super::settings::DynamicSettings;
 use crate::robot::{
-    ArmModel, Controlled, Joints, KinematicSim, MoveReport, RobotError, SimWork, Simulator,
+    ArmModel, Controlled, Joints, KinematicSim, MoveReport, RobotError, SetPointTracker, SimWork,
+    Simulator,
 };
 use nalgebra::Isometry3;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -103,6 +104,8 @@ pub struct DynamicSim {
     pub(super) counters: Arc<SimCounters>,
     /// The joints after every tick since the last drain, when a recording asks for them.
     pub(super) kept_ticks: Option<Vec<Joints>>,
+    /// The set-point of continuous servoing, while it goes on.
+    pub(super) tracker: Option<SetPointTracker>,
 }
 
 impl DynamicSim {
@@ -118,6 +121,7 @@ impl DynamicSim {
             settings,
             counters: Arc::default(),
             kept_ticks: None,
+            tracker: None,
         };
         let start = sim.plan.joints();
         sim.arm.teleport(&start);
@@ -160,6 +164,7 @@ impl Simulator for DynamicSim {
                 effort_nm: joints[i].effort,
             });
         }
+        self.end_servoing();
         self.plan.place(theta)?;
         let q = self.plan.joints();
         self.arm.teleport(&q);
@@ -168,6 +173,7 @@ impl Simulator for DynamicSim {
     }
 
     fn execute(&mut self, delta: &Controlled) -> MoveReport {
+        self.end_servoing();
         let start = self.plan.joints();
         let before = self.arm.joints();
         let mut report = self.plan.execute(delta);
@@ -206,6 +212,7 @@ impl Simulator for DynamicSim {
     }
 
     fn stretch_link(&mut self, link: usize, delta_m: f64) -> Result<(), RobotError> {
+        self.end_servoing();
         self.plan.stretch_link(link, delta_m)?;
         let model = self.plan.model();
         let joint = &model.joints()[link];
@@ -236,6 +243,18 @@ impl Simulator for DynamicSim {
             settle_timeouts: c.settle_timeouts(),
             contact_stops: c.contact_stops(),
         }
+    }
+
+    fn tick_seconds(&self) -> Option<f64> {
+        Some(self.settings.dt)
+    }
+
+    fn servo_toward(&mut self, goal: &Controlled) {
+        self.aim(goal);
+    }
+
+    fn servo_tick(&mut self) -> bool {
+        self.servo_step()
     }
 
     fn keep_ticks(&mut self, keep: bool) {

@@ -67,7 +67,7 @@ fn trials(method: Method, sim: SimKind, count: usize) -> Row {
     for trial in 1..=count {
         let outcome = loop_.run_trial(learner.as_mut()).expect("a trial");
         failures += usize::from(outcome.failure.is_some());
-        figures.record(trial, &outcome.distances_mm);
+        figures.record(trial, &outcome.distances_mm, None);
     }
     let seconds = started.elapsed().as_secs_f64();
     Row {

@@ -16,6 +16,7 @@ fn trial_loop(seed: u64) -> TrialLoop {
         epsilon: EPSILON_MM / 1000.0,
         minimal_joint_move_deg: 0.01,
         noise: SensorNoise::default(),
+        timing: Default::default(),
     };
     TrialLoop::new(
         Box::new(sim),

@@ -39,6 +39,9 @@ pub struct StepReport {
     pub reading: Result<Vector3<f64>, NotSeen>,
     /// The true distance from the camera to the target after the move (mm).
     pub distance_mm: f64,
+    /// Simulated seconds since the trial's first frame: the moves' durations, settling
+    /// included, and under a camera clock the waits for frames (this step's delivery).
+    pub seconds: f64,
     /// Whether this step ended the trial, and why.
     pub end: Option<TrialEnd>,
 }
@@ -67,6 +70,8 @@ pub(super) struct ActiveTrial {
     pub(super) goal: Point3<f64>,
     /// Feedback steps taken.
     pub(super) steps: usize,
+    /// Simulated seconds since the trial's first frame.
+    pub(super) seconds: f64,
     /// Why the trial is over, once it is.
     pub(super) end: Option<TrialEnd>,
 }
@@ -87,6 +92,7 @@ mod tests {
             epsilon: 0.001,
             minimal_joint_move_deg: 0.1,
             noise: Default::default(),
+            timing: Default::default(),
         };
         TrialLoop::new(
             Box::new(sim),

@@ -3,8 +3,10 @@
 //! `min_feedback_steps` steps) or `feedback_steps` are used; the trial's poses are then
 //! learned.
 
+use super::clocked::FrameQueue;
 use super::feedback::{ActiveTrial, StepError, StepReport, TrialEnd};
 use super::sensors::{NoisySensors, SensorNoise};
+use super::timing::{CameraTiming, FrameClock};
 use crate::camera::{Camera, NotSeen};
 use crate::learn::Observation;
 use crate::learn::{LearnError, Learner};
@@ -32,6 +34,8 @@ pub struct TrialSettings {
     pub minimal_joint_move_deg: f64,
     /// The noise of the camera's and the encoders' reports.
     pub noise: SensorNoise,
+    /// When the camera delivers frames, and whether the arm settles between them.
+    pub timing: CameraTiming,
 }
 
 /// Why a trial could not be completed; counted, never fatal.
@@ -54,30 +58,44 @@ pub struct TrialOutcome {
     pub distances_mm: Vec<f64>,
     /// Why the trial stopped early, if it did.
     pub failure: Option<Failure>,
+    /// True when the camera came within ε of the target.
+    pub reached: bool,
+    /// Simulated seconds of the feedback steps: from the first frame's delivery to the
+    /// last step's frame (moves, settling and waits for frames).
+    pub seconds: f64,
 }
+
+/// What a frame shows: the pose and reading as the sensors report them, or why the object
+/// is not seen with the joint angles (θ1..θ3, degrees) as they were.
+pub(super) type Sight = Result<Observation, (NotSeen, Vector3<f64>)>;
 
 /// The control loop over a simulator and camera, with the run's random generator.
 #[derive(Debug)]
 pub struct TrialLoop {
-    sim: Box<dyn Simulator>,
+    pub(super) sim: Box<dyn Simulator>,
     camera: Box<dyn Camera>,
     reach: ReachSpace,
     settings: TrialSettings,
     rng: ChaCha8Rng,
     sensors: NoisySensors,
-    path: Vec<Observation>,
+    pub(super) path: Vec<Observation>,
     active: Option<ActiveTrial>,
+    /// The camera's clock; `None` for the study's timing or a simulator without a clock.
+    clock: Option<FrameClock>,
+    pub(super) frames: FrameQueue,
 }
 
 impl TrialLoop {
     /// A loop whose every random draw comes from `seed` (the sensor noise from a stream of
-    /// its own).
+    /// its own). On a simulator without a clock frames are taken as each move ends,
+    /// whatever `settings.timing` asks.
     pub fn new(
         sim: Box<dyn Simulator>,
         camera: Box<dyn Camera>,
         settings: TrialSettings,
         seed: u64,
     ) -> TrialLoop {
+        let clock = FrameClock::new(&settings.timing, sim.tick_seconds());
         TrialLoop {
             sim,
             camera,
@@ -87,6 +105,8 @@ impl TrialLoop {
             sensors: NoisySensors::new(settings.noise, seed),
             path: Vec::with_capacity(settings.feedback_steps + 1),
             active: None,
+            clock,
+            frames: FrameQueue::default(),
         }
     }
 
@@ -118,6 +138,8 @@ impl TrialLoop {
         let mut outcome = TrialOutcome {
             distances_mm: Vec::with_capacity(self.settings.feedback_steps),
             failure: None,
+            reached: false,
+            seconds: 0.0,
         };
         let mut here = match self.begin_trial() {
             Ok(start) => start,
@@ -135,12 +157,14 @@ impl TrialLoop {
                     break;
                 }
             };
+            outcome.seconds = report.seconds;
             if report.reading.is_ok() {
                 outcome.distances_mm.push(report.distance_mm);
                 here = self.path[self.path.len() - 1];
             }
             if let Some(end) = report.end {
                 outcome.failure = end.failure();
+                outcome.reached = end == TrialEnd::Reached;
                 break;
             }
         }
@@ -157,10 +181,14 @@ impl TrialLoop {
         let object = self.draw_target()?;
         let start = self.draw_start(&object)?;
         self.path.push(start);
+        if let Some(clock) = self.clock {
+            self.start_clock(&clock, &object);
+        }
         self.active = Some(ActiveTrial {
             object,
             goal: self.camera.model().goal_point(&object),
             steps: 0,
+            seconds: 0.0,
             end: None,
         });
         Ok(start)
@@ -169,7 +197,9 @@ impl TrialLoop {
     /// Takes one feedback step of the trial going on: executes `delta_deg` (Δθ1, Δθ2, Δθ3
     /// in degrees), reads the camera and measures the distance to the target. The trial is
     /// over once the camera is within ε (after `min_feedback_steps`), `feedback_steps`
-    /// were taken, or the object is lost.
+    /// were taken, or the object is lost. Under a camera clock the step ends when the
+    /// next frame arrives, and the distance is the camera's then; in continuous servoing
+    /// `delta_deg` is relative to the pose of the last frame and a step is a frame.
     pub fn step_trial(&mut self, delta_deg: &Vector3<f64>) -> Result<StepReport, StepError> {
         let Some(trial) = self.active.filter(|t| t.end.is_none()) else {
             return Err(StepError::NoTrial);
@@ -179,18 +209,24 @@ impl TrialLoop {
                 delta_deg: *delta_deg,
             });
         }
-        self.sim.execute(&delta_deg.map(f64::to_radians));
+        let delta = delta_deg.map(f64::to_radians);
+        let (sight, seconds) = match self.clock {
+            Some(clock) => {
+                let sight = self.clocked_step(&clock, &delta, &trial.object);
+                (sight, self.clock_seconds(&clock))
+            }
+            None => {
+                let duration = self.sim.execute(&delta).duration;
+                (self.look(&trial.object), trial.seconds + duration)
+            }
+        };
         let step = trial.steps + 1;
-        let (theta_deg, reading) = match self.observe(&trial.object) {
+        let (theta_deg, reading) = match sight {
             Ok(seen) => {
                 self.path.push(seen);
                 (seen.theta_deg, Ok(seen.c))
             }
-            Err(not_seen) => {
-                let q = self.sim.joints();
-                let exact = Vector3::new(q[0], q[1], q[2]).map(f64::to_degrees);
-                (exact, Err(not_seen))
-            }
+            Err((not_seen, exact)) => (exact, Err(not_seen)),
         };
         let distance = (self.sim.camera_pose().translation.vector - trial.goal.coords).norm();
         let end = match reading {
@@ -206,6 +242,7 @@ impl TrialLoop {
         };
         self.active = Some(ActiveTrial {
             steps: step,
+            seconds,
             end,
             ..trial
         });
@@ -214,6 +251,7 @@ impl TrialLoop {
             theta_deg,
             reading,
             distance_mm: distance * MM_PER_M,
+            seconds,
             end,
         })
     }
@@ -260,6 +298,18 @@ impl TrialLoop {
             c,
         };
         Ok(self.sensors.report(exact, self.camera.model()))
+    }
+
+    /// What the sensors and camera report at the current pose, or why the object is not
+    /// seen with the exact joint angles.
+    pub(super) fn look(&mut self, object: &Point3<f64>) -> Sight {
+        self.observe(object).map_err(|not_seen| {
+            let q = self.sim.joints();
+            (
+                not_seen,
+                Vector3::new(q[0], q[1], q[2]).map(f64::to_degrees),
+            )
+        })
     }
 
     /// The object's centre for a target drawn uniformly in the reach space and reachable by

@@ -1,6 +1,7 @@
 //! Typed values of config entries: how each kind is parsed and written back.
 
 use super::config::ValueError;
+use crate::control::ServoMode;
 use crate::learn::{MergeStrategy, Method};
 use std::fmt;
 use std::str::FromStr;
@@ -68,7 +69,7 @@ macro_rules! named_value {
         }
     )*};
 }
-named_value!(Method, SimKind, CameraKind, MergeStrategy);
+named_value!(Method, SimKind, CameraKind, MergeStrategy, ServoMode);
 
 /// Which simulator moves the arm.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -113,6 +114,7 @@ macro_rules! choice_names {
 choice_names!(SimKind, "simulator", Kinematic => "kinematic", Dynamic => "dynamic");
 choice_names!(CameraKind, "camera", Projection => "projection", Raycast => "raycast");
 choice_names!(MergeStrategy, "merge strategy", Thesis => "thesis", ChangeDetection => "change_detection");
+choice_names!(ServoMode, "servo mode", Step => "step", Continuous => "continuous");
 
 #[cfg(test)]
 mod tests {

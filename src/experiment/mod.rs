@@ -17,6 +17,7 @@ mod run_folder;
 mod run_request;
 pub mod setup;
 pub mod show;
+mod step_figures;
 pub mod study;
 mod summary;
 
@@ -36,4 +37,5 @@ pub use preflight::{
 pub use run::{run, run_learner, RunError, RunOptions, RunResult};
 pub use run_folder::{allocate_run_folder, fresh_run_folder, RunFolderError, RUN_IDS};
 pub use run_request::{RequestError, RunRequest};
-pub use summary::{RunSummary, StepFigures};
+pub use step_figures::StepFigures;
+pub use summary::{RunSummary, SensorSummary};

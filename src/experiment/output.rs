@@ -226,6 +226,8 @@ mod tests {
         let outcome = TrialOutcome {
             distances_mm: vec![12.5, 3.0, 1.0, 1.0, 1.0, 0.5, 0.25],
             failure: None,
+            reached: true,
+            seconds: 4.0,
         };
         files
             .record_trial(1, &outcome, &LearnerStats::default())

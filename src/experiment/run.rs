@@ -7,7 +7,8 @@ use super::output::DataFiles;
 use super::plot::{plot_run, PlotError};
 use super::progress::RunProgress;
 use super::setup::{build_camera, build_learner, build_simulator, trial_settings};
-use super::summary::{RunSummary, StepFigures};
+use super::summary::{RunSummary, SensorSummary};
+use super::StepFigures;
 use super::{
     allocate_run_folder, fresh_run_folder, peak_rss_kb, preflight, resident_kb, Config, Event,
     PreflightError, RunFolderError,
@@ -195,7 +196,8 @@ fn drive(
         if let Some(failure) = outcome.failure {
             failures.count(failure);
         }
-        figures.record(trial, &outcome.distances_mm);
+        let to_epsilon = outcome.reached.then_some(outcome.seconds);
+        figures.record(trial, &outcome.distances_mm, to_epsilon);
         let stats = learner.stats();
         files.record_trial(trial, &outcome, &stats)?;
         progress.trial_done(trial, &outcome.distances_mm, stats.nodes);
@@ -213,6 +215,8 @@ fn drive(
     let stats = learner.stats();
     let work = trials.sim().work();
     let per_trial = |v: f64| v / config.trials as f64;
+    let (mean_final_distance_mm, median_final_distance_mm) = figures.final_distance();
+    let (reached_epsilon, mean_seconds_to_epsilon) = figures.reaching();
     let summary = RunSummary {
         method: learner.name().to_string(),
         sim: config.sim.to_string(),
@@ -236,6 +240,11 @@ fn drive(
         median_distance_mm: figures.medians(),
         mean_distance_by_step_mm: figures.all_means(),
         interrupted: finished < config.trials,
+        mean_final_distance_mm,
+        median_final_distance_mm,
+        reached_epsilon,
+        mean_seconds_to_epsilon,
+        sensors: SensorSummary::of(config),
     };
     write_info_tail(&folder, &summary, &stats)?;
     summary.write(&folder)?;
@@ -339,6 +348,20 @@ fn write_info_tail(folder: &Path, summary: &RunSummary, stats: &LearnerStats) ->
     )?;
     writeln!(info, "settle_timeouts {}", summary.settle_timeouts)?;
     writeln!(info, "stopped_by_contact {}", summary.stopped_by_contact)?;
+    let figure = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
+    writeln!(
+        info,
+        "final_distance_mm mean {} median {}",
+        figure(summary.mean_final_distance_mm),
+        figure(summary.median_final_distance_mm)
+    )?;
+    writeln!(
+        info,
+        "reached_epsilon {} of {} (mean {} simulated s)",
+        summary.reached_epsilon,
+        summary.window,
+        figure(summary.mean_seconds_to_epsilon)
+    )?;
     writeln!(info, "peak_rss_kb {}", summary.peak_rss_kb)?;
     writeln!(info, "\n# tree per level: depth nodes bins patterns error")?;
     for (depth, level) in stats.levels.iter().enumerate() {

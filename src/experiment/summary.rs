@@ -1,5 +1,7 @@
-//! The run's `summary.json`, and the distance figures over the last trials it reports.
+//! The run's `summary.json`: what ran, how fast, and the distance figures over its last
+//! trials (from [`StepFigures`](super::StepFigures)).
 
+use super::Config;
 use crate::control::MAX_RECORDED_STEPS;
 use serde::{Deserialize, Serialize};
 use std::io;
@@ -55,6 +57,72 @@ pub struct RunSummary {
     /// finished (absent in summaries written before the field existed: false).
     #[serde(default)]
     pub interrupted: bool,
+    /// Mean distance (mm) after the last feedback step of each trial of the window.
+    #[serde(default)]
+    pub mean_final_distance_mm: Option<f64>,
+    /// Median distance (mm) after the last feedback step of each trial of the window.
+    #[serde(default)]
+    pub median_final_distance_mm: Option<f64>,
+    /// Trials of the window that came within ε.
+    #[serde(default)]
+    pub reached_epsilon: usize,
+    /// Mean simulated seconds from the first frame to the frame within ε, over the
+    /// window's trials that came within ε (null: none did).
+    #[serde(default)]
+    pub mean_seconds_to_epsilon: Option<f64>,
+    /// The sensors: noise, the ray-cast camera's pixel noise, the camera's clock.
+    #[serde(default)]
+    pub sensors: SensorSummary,
+}
+
+/// The run's sensing entries, as `summary.json` reports them (field names are the config
+/// entries').
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SensorSummary {
+    /// σ of the blob centroid (pixels).
+    pub camera_noise_px: f64,
+    /// σ of the blob area, relative to itself.
+    pub camera_area_noise: f64,
+    /// σ of each joint encoder (degrees).
+    pub joint_noise_deg: f64,
+    /// σ of each pixel's grey level of the ray-cast camera.
+    pub raycast_noise: f64,
+    /// Frames per second of a free-running camera (0: a frame as each move settles).
+    pub camera_fps: f64,
+    /// Age of a frame when it is delivered (ms).
+    pub camera_latency_ms: f64,
+    /// `step` or `continuous`.
+    pub servo_mode: String,
+}
+
+impl Default for SensorSummary {
+    /// The study's exact sensors (for summaries written before the field existed).
+    fn default() -> Self {
+        SensorSummary {
+            camera_noise_px: 0.0,
+            camera_area_noise: 0.0,
+            joint_noise_deg: 0.0,
+            raycast_noise: 0.0,
+            camera_fps: 0.0,
+            camera_latency_ms: 0.0,
+            servo_mode: "step".into(),
+        }
+    }
+}
+
+impl SensorSummary {
+    /// The sensing entries of `config`.
+    pub fn of(config: &Config) -> SensorSummary {
+        SensorSummary {
+            camera_noise_px: config.camera_noise_px,
+            camera_area_noise: config.camera_area_noise,
+            joint_noise_deg: config.joint_noise_deg,
+            raycast_noise: config.raycast_noise,
+            camera_fps: config.camera_fps,
+            camera_latency_ms: config.camera_latency_ms,
+            servo_mode: config.servo_mode.to_string(),
+        }
+    }
 }
 
 impl RunSummary {
@@ -96,146 +164,5 @@ impl RunSummary {
         text += &row("mean", &self.mean_distance_mm);
         text += &row("median", &self.median_distance_mm);
         text
-    }
-}
-
-/// Distances after each feedback step over the last trials of a run: the last
-/// `window_for(trials)` trials of a run that ran them all, the last `window_for(n)` of one
-/// stopped after trial n.
-#[derive(Debug, Clone, PartialEq)]
-pub struct StepFigures {
-    /// Trials kept: the window of the whole run.
-    capacity: usize,
-    /// Slots per trial: a distance after each step, NaN for a step not taken.
-    steps: usize,
-    /// The kept trials' slots, trial t in row (t − 1) mod `capacity`.
-    ring: Vec<f64>,
-    /// The number of the last trial recorded (0: none yet).
-    last_trial: usize,
-}
-
-impl StepFigures {
-    /// The window for a run of `trials`: min(1000, trials/10), at least 1.
-    pub fn window_for(trials: usize) -> usize {
-        (trials / 10).clamp(1, 1000)
-    }
-
-    /// Figures for a run of `trials` of up to `steps` feedback steps.
-    pub fn new(trials: usize, steps: usize) -> StepFigures {
-        let capacity = StepFigures::window_for(trials);
-        let steps = steps.max(MAX_RECORDED_STEPS);
-        StepFigures {
-            capacity,
-            steps,
-            ring: vec![f64::NAN; capacity * steps],
-            last_trial: 0,
-        }
-    }
-
-    /// Notes the distances of `trial` (trials are recorded in order, from 1).
-    pub fn record(&mut self, trial: usize, distances_mm: &[f64]) {
-        let row = (trial.max(1) - 1) % self.capacity;
-        let slots = &mut self.ring[row * self.steps..(row + 1) * self.steps];
-        slots.fill(f64::NAN);
-        for (slot, &d) in slots.iter_mut().zip(distances_mm) {
-            *slot = d;
-        }
-        self.last_trial = trial;
-    }
-
-    /// The window's length in trials: that of the trials recorded.
-    pub fn window(&self) -> usize {
-        StepFigures::window_for(self.last_trial).min(self.capacity)
-    }
-
-    /// The distances after step `step` (0-based) of the window's trials, oldest first.
-    fn after_step(&self, step: usize) -> impl Iterator<Item = f64> + '_ {
-        let first = (self.last_trial + 1).saturating_sub(self.window()).max(1);
-        (first..=self.last_trial)
-            .map(move |t| self.ring[((t - 1) % self.capacity) * self.steps + step])
-            .filter(|d| !d.is_nan())
-    }
-
-    /// Mean distance after every step (`None` for a step no trial in the window took).
-    pub fn all_means(&self) -> Vec<Option<f64>> {
-        (0..self.steps)
-            .map(|step| {
-                let (sum, n) = self
-                    .after_step(step)
-                    .fold((0.0, 0usize), |(sum, n), d| (sum + d, n + 1));
-                (n > 0).then(|| sum / n as f64)
-            })
-            .collect()
-    }
-
-    /// Mean distance after steps 1..5.
-    pub fn means(&self) -> [Option<f64>; MAX_RECORDED_STEPS] {
-        let all = self.all_means();
-        std::array::from_fn(|i| all[i])
-    }
-
-    /// Median distance after steps 1..5.
-    pub fn medians(&self) -> [Option<f64>; MAX_RECORDED_STEPS] {
-        std::array::from_fn(|i| median(&self.after_step(i).collect::<Vec<_>>()))
-    }
-}
-
-fn median(values: &[f64]) -> Option<f64> {
-    if values.is_empty() {
-        return None;
-    }
-    let mut sorted = values.to_vec();
-    sorted.sort_by(f64::total_cmp);
-    let mid = sorted.len() / 2;
-    Some(if sorted.len() % 2 == 0 {
-        0.5 * (sorted[mid - 1] + sorted[mid])
-    } else {
-        sorted[mid]
-    })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_window_is_the_last_tenth_up_to_1000_trials() {
-        assert_eq!(StepFigures::window_for(50_000), 1000);
-        assert_eq!(StepFigures::window_for(3_000), 300);
-        assert_eq!(StepFigures::window_for(5), 1);
-    }
-
-    #[test]
-    fn figures_count_only_the_window() {
-        let mut f = StepFigures::new(20, 10);
-        for trial in 1..=20 {
-            f.record(trial, &[trial as f64, 1.0]);
-        }
-        assert_eq!(f.window(), 2);
-        assert_eq!(f.means()[0], Some(19.5));
-        assert_eq!(f.medians()[1], Some(1.0));
-        assert_eq!(f.means()[2], None);
-        assert_eq!(f.all_means().len(), 10);
-        assert_eq!(f.all_means()[1], Some(1.0));
-    }
-
-    #[test]
-    fn a_run_stopped_early_counts_the_window_of_its_trials() {
-        let mut f = StepFigures::new(1_000_000, 5);
-        for trial in 1..=3000 {
-            f.record(trial, &[trial as f64]);
-        }
-        assert_eq!(f.window(), 300);
-        assert_eq!(
-            f.means()[0],
-            Some((2701..=3000).sum::<usize>() as f64 / 300.0)
-        );
-        assert_eq!(f.medians()[1], None);
-    }
-
-    #[test]
-    fn median_of_odd_and_even_counts() {
-        assert_eq!(median(&[3.0, 1.0, 2.0]), Some(2.0));
-        assert_eq!(median(&[4.0, 1.0, 2.0, 3.0]), Some(2.5));
     }
 }

@@ -1,6 +1,7 @@
 //! Every config entry: its name, type and meaning, in one list.
 
 use super::ConfigErrorKind;
+use crate::control::ServoMode;
 use crate::experiment::config_values::{CameraKind, ConfigValue, SimKind};
 use crate::learn::{MergeStrategy, Method};
 
@@ -147,6 +148,15 @@ config_entries! {
     camera_area_noise: f64,
     /// Sensor noise: σ of each joint encoder's reading (degrees); 0 = exact.
     joint_noise_deg: f64,
+    /// Frames per second of a free-running camera (dynamic simulator); 0 = a frame the
+    /// moment each move has settled (the study's).
+    camera_fps: f64,
+    /// A frame shows the world as it was this long before it is delivered (ms; a
+    /// multiple of `dt`, dynamic simulator); default 0.
+    camera_latency_ms: f64,
+    /// step (each move settles before the next frame; the study's) or continuous (a new
+    /// move at every frame while the arm moves; dynamic simulator, `camera_fps` > 0).
+    servo_mode: ServoMode,
     /// Known patterns trained per 100 regular patterns.
     known_pattern_perc: f64,
     /// Learning patterns each bin keeps.

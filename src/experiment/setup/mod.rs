@@ -10,7 +10,7 @@ pub use learners::{
 
 use super::{CameraKind, Config, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
-use crate::control::{SensorNoise, TrialSettings};
+use crate::control::{CameraTiming, SensorNoise, TrialSettings};
 use crate::learn::{
     FfnLearner, IkLearner, KohonenLearner, LearnError, Learner, Lin5, Lin8, Lwpr, Method, Nnw,
 };
@@ -39,7 +39,8 @@ pub fn build_camera(config: &Config) -> Box<dyn Camera> {
 }
 
 /// The trial loop's settings: `feedback_steps`, `min_feedback_steps`,
-/// `min_target_distance`, `minimal_joint_move` and the sensor noise entries.
+/// `min_target_distance`, `minimal_joint_move`, the sensor noise entries and the camera's
+/// timing (`camera_fps`, `camera_latency_ms`, `servo_mode`).
 pub fn trial_settings(config: &Config) -> TrialSettings {
     TrialSettings {
         feedback_steps: config.feedback_steps,
@@ -50,6 +51,11 @@ pub fn trial_settings(config: &Config) -> TrialSettings {
             centroid_px: config.camera_noise_px,
             area_relative: config.camera_area_noise,
             joint_deg: config.joint_noise_deg,
+        },
+        timing: CameraTiming {
+            fps: config.camera_fps,
+            latency: config.camera_latency_ms / 1000.0,
+            servo: config.servo_mode,
         },
     }
 }

@@ -3,6 +3,7 @@
 //! drawing puts the camera where the kinematic model does).
 
 use eyehand::camera::{CameraModel, NotSeen};
+use eyehand::control::ServoMode;
 use eyehand::experiment::show::{
     show_trials, write_camera_image, ArmView, Look, ShowError, TrialRange, BACKGROUND_GREY,
     CENTRE_MARK, LAST_CAMERA_CENTRE, OBJECT_GREY,
@@ -104,6 +105,16 @@ fn show_reproduces_the_logged_distances_exactly() {
     // The dynamic simulator.
     let dynamic = run_in(data.path(), 3, vec![], |c| c.sim = SimKind::Dynamic);
     assert_reproduces(&dynamic, TrialRange::single(3));
+    // Continuous servoing with latency and noisy encoders.
+    let continuous = run_in(data.path(), 3, vec![], |c| {
+        c.sim = SimKind::Dynamic;
+        c.servo_mode = ServoMode::Continuous;
+        c.camera_fps = 30.0;
+        c.camera_latency_ms = 50.0;
+        c.feedback_steps = 60;
+        c.joint_noise_deg = 0.01;
+    });
+    assert_reproduces(&continuous, TrialRange::single(3));
 }
 
 #[test]

@@ -1,11 +1,15 @@
 //! The camera's clock on the dynamic simulator: a frame with latency shows the arm as it
 //! was that long before it arrives, continuous servoing takes `ik` to ε, and the same seed
-//! gives the same figures with noise and latency.
+//! gives the same figures with noise and latency; a continuous goal past a joint limit or
+//! into the floor stops the arm there, as a step move would.
 
 use eyehand::camera::{CameraModel, ProjectionCamera};
 use eyehand::control::{CameraTiming, SensorNoise, ServoMode, TrialLoop, TrialSettings};
 use eyehand::learn::{IkLearner, Learner};
-use eyehand::robot::{ArmModel, DynamicSettings, DynamicSim, Joints};
+use eyehand::robot::{
+    ArmModel, Controlled, DynamicSettings, DynamicSim, Joints, KinematicSim, Simulator,
+    DEFAULT_FLOOR_Z,
+};
 
 const EPSILON_MM: f64 = 0.5;
 const DT: f64 = 0.005;
@@ -140,4 +144,50 @@ fn the_same_seed_gives_the_same_figures_with_noise_and_latency() {
     };
     assert_eq!(bits(&first), bits(&second));
     assert!(first.iter().all(|(outcome, _)| outcome.reached));
+}
+
+/// Servo ticks toward `goal` from `start` until the arm has had two seconds to get there.
+fn servo_to(start: &Controlled, goal: &Controlled) -> DynamicSim {
+    let mut sim = DynamicSim::new(ArmModel::oscar6(), DynamicSettings::default());
+    sim.place(start).expect("inside the limits");
+    sim.servo_toward(goal);
+    for _ in 0..400 {
+        sim.servo_tick();
+    }
+    sim
+}
+
+#[test]
+fn a_continuous_goal_past_a_joint_limit_stops_the_arm_where_a_step_move_stops() {
+    let start = Controlled::new(0.0, 20f64.to_radians(), 90f64.to_radians());
+    let upper = ArmModel::oscar6().joints()[1].upper;
+    let goal = Controlled::new(0.3, upper + 0.5, 90f64.to_radians());
+    let sim = servo_to(&start, &goal);
+    let mut step = KinematicSim::new(ArmModel::oscar6(), DynamicSettings::default().moves);
+    step.place(&start).expect("inside the limits");
+    assert_eq!(step.execute(&(goal - start)).stopped_by_limit, Some(1));
+    let (q, want) = (sim.joints(), step.joints());
+    assert!((q[1] - upper).abs() < 1e-4, "θ2 {} against {upper}", q[1]);
+    for i in 0..3 {
+        assert!(
+            (q[i] - want[i]).abs() < 1e-4,
+            "θ{} {} against {}",
+            i + 1,
+            q[i],
+            want[i]
+        );
+    }
+}
+
+#[test]
+fn a_continuous_goal_into_the_floor_stops_on_it() {
+    let start = Controlled::new(0.0, 20f64.to_radians(), 90f64.to_radians());
+    let sim = servo_to(
+        &start,
+        &Controlled::new(0.0, (-30f64).to_radians(), 20f64.to_radians()),
+    );
+    assert!(sim.work().contact_stops >= 1, "{:?}", sim.work());
+    let camera_z = sim.camera_pose().translation.z;
+    assert!(camera_z > DEFAULT_FLOOR_Z, "camera at {camera_z} m");
+    assert_eq!(sim.work().moves, 0, "no step move was made");
 }

@@ -66,8 +66,8 @@ pub struct RunSummary {
     /// Trials of the window that came within ε.
     #[serde(default)]
     pub reached_epsilon: usize,
-    /// Mean simulated seconds from the first frame to the frame within ε, over the
-    /// window's trials that came within ε (null: none did).
+    /// Mean simulated seconds from the first frame to the frame within ε that ended the
+    /// trial, over the window's trials that came within ε (null: none did).
     #[serde(default)]
     pub mean_seconds_to_epsilon: Option<f64>,
     /// The sensors: noise, the ray-cast camera's pixel noise, the camera's clock.

@@ -41,11 +41,6 @@ impl SetPointTracker {
         self.point
     }
 
-    /// The goal it heads for.
-    pub fn goal(&self) -> Controlled {
-        self.goal
-    }
-
     /// The set-point's velocity (rad/s).
     pub fn velocity(&self) -> Controlled {
         self.velocity

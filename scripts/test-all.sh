@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Every test, Rust and Python: `cargo test --locked`, then the Python package built into a
-# virtual environment (target/python-venv) and its pytest suite (python/tests).
+# Every test, Rust and Python: `cargo test --locked --features rerun` (the feature builds the
+# Rerun recording, whose test decodes a written .rrd; it adds most of the build time), then
+# the Python package built into a virtual environment (target/python-venv) and its pytest
+# suite (python/tests).
 #
 # Needs python3 (≥ 3.9, with venv); installs maturin, gymnasium, numpy, scikit-learn and
 # pytest from PyPI into the environment. The package is built in cargo's `dev` profile so
@@ -9,7 +11,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-cargo test --locked
+cargo test --locked --features rerun
 
 venv=target/python-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"

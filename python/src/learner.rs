@@ -3,11 +3,12 @@
 
 use crate::convert::{load_config, path_array, path_from, query_array, query_from, vector3};
 use eyehand::experiment::setup::build_learner;
+use eyehand::experiment::StopRequest;
 use eyehand::learn::{LearnError, Learner, LearnerStats, Observation, Query};
 use eyehand::robot::{load_urdf, ArmModel};
 use nalgebra::Vector3;
 use numpy::PyArray1;
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyKeyboardInterrupt, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::path::PathBuf;
@@ -16,14 +17,23 @@ use std::sync::{Arc, Mutex};
 /// The first error a Python learner raised, kept for the caller to raise again.
 pub type ErrorSlot = Arc<Mutex<Option<PyErr>>>;
 
+/// The signal a stop from Python is filed under: SIGINT, as Ctrl-C.
+pub const SIGINT: i32 = 2;
+
 /// A Python object with `propose(query) -> (3,)` and `learn(path)`, driven by the Rust
 /// trial loop. The first exception (or non-finite move) is kept in its slot; from then on
 /// it proposes no move and its `learn` fails, which stops the run.
+///
+/// Given a run's stop request ([`PyLearner::stopping`]), it also lets Python's signal
+/// handlers run before each call: Ctrl-C's `KeyboardInterrupt`, raised there or inside the
+/// learner's own code, asks the run to stop after the current trial (the call it broke
+/// proposes no move or learns nothing) and is kept in the interrupt slot, not as a failure.
 #[derive(Debug)]
 pub struct PyLearner {
     object: Py<PyAny>,
     name: String,
     error: ErrorSlot,
+    stop: Option<(StopRequest, ErrorSlot)>,
 }
 
 impl PyLearner {
@@ -37,7 +47,39 @@ impl PyLearner {
             object: object.clone().unbind(),
             name,
             error,
+            stop: None,
         })
+    }
+
+    /// The learner that answers a signal by asking `stop` for a stop and keeping the
+    /// exception in `interrupt`.
+    pub fn stopping(self, stop: StopRequest, interrupt: ErrorSlot) -> PyLearner {
+        PyLearner {
+            stop: Some((stop, interrupt)),
+            ..self
+        }
+    }
+
+    /// Runs `call` after Python's signal handlers; an interrupt raised by either is
+    /// answered by a stop request and `Ok(None)`.
+    fn guarded<T>(
+        &self,
+        py: Python<'_>,
+        call: impl FnOnce(Python<'_>) -> PyResult<T>,
+    ) -> PyResult<Option<T>> {
+        let Some((stop, interrupt)) = &self.stop else {
+            return call(py).map(Some);
+        };
+        match py.check_signals().and_then(|()| call(py)) {
+            Err(error) if error.is_instance_of::<PyKeyboardInterrupt>(py) => {
+                stop.request(SIGINT);
+                if let Ok(mut slot) = interrupt.lock() {
+                    slot.get_or_insert(error);
+                }
+                Ok(None)
+            }
+            other => other.map(Some),
+        }
     }
 
     fn failed(&self) -> bool {
@@ -84,23 +126,28 @@ impl Learner for PyLearner {
         if self.failed() {
             return Vector3::repeat(f64::NAN);
         }
-        Python::attach(|py| match self.call_propose(py, query) {
-            Ok(delta) => delta,
-            Err(error) => {
-                self.keep(error);
-                Vector3::repeat(f64::NAN)
-            }
-        })
+        Python::attach(
+            |py| match self.guarded(py, |py| self.call_propose(py, query)) {
+                Ok(Some(delta)) => delta,
+                Ok(None) => Vector3::repeat(f64::NAN),
+                Err(error) => {
+                    self.keep(error);
+                    Vector3::repeat(f64::NAN)
+                }
+            },
+        )
     }
 
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
         if !self.failed() {
             let called = Python::attach(|py| {
-                let path = path_array(py, path)?;
-                self.object
-                    .bind(py)
-                    .call_method1("learn", (path,))
-                    .map(drop)
+                self.guarded(py, |py| {
+                    let path = path_array(py, path)?;
+                    self.object
+                        .bind(py)
+                        .call_method1("learn", (path,))
+                        .map(drop)
+                })
             });
             if let Err(error) = called {
                 self.keep(error);

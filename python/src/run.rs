@@ -1,13 +1,21 @@
 //! `eyehand._eyehand.run`: a whole run (every trial, event and data file) of a built-in
-//! learner or a Python learner, with the GIL released while Rust works.
+//! learner or a Python learner, with the GIL released while Rust works. Ctrl-C stops the run
+//! after its current trial, as it does on the command line: the folder keeps a summary
+//! marked interrupted, and `KeyboardInterrupt` is raised once the run has written it.
 
 use crate::convert::{load_config, run_error, set_entry, value_error};
-use crate::learner::{ErrorSlot, PyLearner};
-use eyehand::experiment::{run, run_learner, Event, RunOptions, RunResult};
+use crate::learner::{ErrorSlot, PyLearner, SIGINT};
+use eyehand::experiment::{run, run_learner, Event, RunError, RunOptions, RunResult};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::path::PathBuf;
+use std::sync::mpsc::{self, RecvTimeoutError};
+use std::sync::Mutex;
+use std::time::Duration;
+
+/// How often the waiting thread lets Python run its signal handlers.
+const SIGNAL_POLL: Duration = Duration::from_millis(50);
 
 /// Runs a run and returns (its folder, summary.json's text). `learner` is a Python object
 /// with `propose` and `learn`; without it the config's (or `method`'s) built-in learner
@@ -60,26 +68,76 @@ pub fn run_py(
         ..RunOptions::new(config, data)
     };
     let result = match learner {
-        None => py.detach(|| run(&options)).map_err(run_error)?,
+        None => run_interruptible(py, &options)?.map_err(run_error)?,
         Some(object) => run_python_learner(py, object, &options)?,
     };
     let summary = serde_json::to_string(&result.summary).map_err(value_error)?;
     Ok((result.folder.display().to_string(), summary))
 }
 
-/// A run with a Python learner; its exception, if it raised one, is raised again.
+/// A run with a Python learner, on this thread (a learner may hold objects that must
+/// stay on it): its exception, if it raised one, is raised again; Ctrl-C, met by the
+/// learner's calls, stops the run after its trial and is raised once the run is written.
 fn run_python_learner(
     py: Python<'_>,
     object: &Bound<'_, PyAny>,
     options: &RunOptions,
 ) -> PyResult<RunResult> {
-    let slot = ErrorSlot::default();
-    let learner = PyLearner::new(object, slot.clone())?;
+    let (failure, interrupt) = (ErrorSlot::default(), ErrorSlot::default());
+    let learner =
+        PyLearner::new(object, failure.clone())?.stopping(options.stop.clone(), interrupt.clone());
     let outcome = py.detach(|| run_learner(options, Box::new(learner)));
-    if let Some(error) = slot.lock().ok().and_then(|mut s| s.take()) {
-        return Err(error);
+    for slot in [failure, interrupt] {
+        if let Some(error) = slot.lock().ok().and_then(|mut s| s.take()) {
+            return Err(error);
+        }
     }
     outcome.map_err(run_error)
+}
+
+/// Runs a built-in learner's run on a thread of its own while this one, without the GIL, wakes every
+/// [`SIGNAL_POLL`] to let Python's signal handlers run. When one raises (Ctrl-C's
+/// `KeyboardInterrupt`), the run is asked to stop after its current trial; once it has
+/// finished writing, that exception is returned in place of the run's result.
+fn run_interruptible(
+    py: Python<'_>,
+    options: &RunOptions,
+) -> PyResult<Result<RunResult, RunError>> {
+    let stop = options.stop.clone();
+    std::thread::scope(|scope| {
+        let (done, finished) = mpsc::channel();
+        // Behind a lock so that the wait can leave this thread's GIL behind.
+        let finished = Mutex::new(finished);
+        let worker = scope.spawn(move || {
+            let result = run(options);
+            // The waiting thread may have left already; nothing to tell then.
+            let _ = done.send(());
+            result
+        });
+        let mut raised = None;
+        let wait = || {
+            finished
+                .lock()
+                .map_or(Err(RecvTimeoutError::Disconnected), |finished| {
+                    finished.recv_timeout(SIGNAL_POLL)
+                })
+        };
+        while py.detach(wait) == Err(RecvTimeoutError::Timeout) {
+            if raised.is_none() {
+                if let Err(error) = py.check_signals() {
+                    stop.request(SIGINT);
+                    raised = Some(error);
+                }
+            }
+        }
+        let result = py
+            .detach(|| worker.join())
+            .map_err(|_| pyo3::exceptions::PyRuntimeError::new_err("the run's thread panicked"))?;
+        match raised {
+            Some(error) => Err(error),
+            None => Ok(result),
+        }
+    })
 }
 
 /// An event's text (`rotate:TRIAL:DEG`, `elongate:TRIAL:LINK:CM`) as (kind, trial, link,

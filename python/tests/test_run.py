@@ -151,3 +151,48 @@ def test_patterns_are_the_adjusted_patterns_in_the_query_order():
     assert np.allclose(inputs[0], [10.0, -20.0, 5.0, 40.0, 100.0])
     assert np.allclose(targets[0], [0.0, 5.0, -2.0])
     assert np.allclose(inputs[1], [9.0, -22.0, 2.0, 40.0, 100.0])
+
+
+CHILD_RUN = """
+import sys
+import eyehand
+
+class Slow:
+    name = "slowik"
+    def __init__(self):
+        self.ik = eyehand.Learner("ik")
+    def propose(self, query):
+        return self.ik.propose(query)
+    def learn(self, path):
+        pass
+
+learner = Slow() if sys.argv[2] == "python" else None
+method = None if learner else "lin5"
+eyehand.run(learner, method=method, trials=2_000_000, data=sys.argv[1])
+"""
+
+
+@pytest.mark.parametrize("learner", ["builtin", "python"])
+def test_ctrl_c_stops_a_run_after_its_trial_and_keeps_its_folder(tmp_path, learner):
+    import signal
+    import subprocess
+    import sys
+
+    child = subprocess.Popen(
+        [sys.executable, "-c", CHILD_RUN, str(tmp_path), learner],
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    name = "slowik" if learner == "python" else "lin5"
+    flushed = tmp_path / name / "0" / "1step"
+    deadline = time.monotonic() + 60
+    while not (flushed.exists() and flushed.stat().st_size > 0):
+        assert child.poll() is None, f"the run ended before the signal: {child.stderr.read()}"
+        assert time.monotonic() < deadline, "the run wrote no trial in 60 s"
+        time.sleep(0.05)
+    child.send_signal(signal.SIGINT)
+    _, stderr = child.communicate(timeout=60)
+    assert child.returncode != 0 and "KeyboardInterrupt" in stderr, stderr
+    summary = json.loads((tmp_path / name / "0" / "summary.json").read_text())
+    assert summary["interrupted"] is True
+    assert 0 < summary["trials"] < 2_000_000

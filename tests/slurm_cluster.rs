@@ -7,21 +7,11 @@
 #[path = "common/slurm.rs"]
 mod slurm;
 
-use slurm::{rows_but_speed, submit, text, without_minutes, Cluster};
+use slurm::{eyehand, rows_but_speed, submit, text, without_minutes, Cluster};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 use std::time::Instant;
 
-const EYEHAND: &str = env!("CARGO_BIN_EXE_eyehand");
 const PROJECT: &str = env!("CARGO_MANIFEST_DIR");
-
-fn eyehand(args: &[&str], cwd: &Path) -> Output {
-    Command::new(EYEHAND)
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .unwrap()
-}
 
 #[test]
 fn a_sweep_on_a_local_slurm_cluster_equals_the_same_sweep_run_here() {

@@ -2,12 +2,16 @@
 //! runs, a sweep expands exactly, its Slurm script runs a cell from any folder, bad study
 //! requests are refused before anything runs, and a study passes signals on to its cells.
 
+#[path = "common/slurm.rs"]
+mod slurm;
+
 use eyehand::experiment::plot::{plot_run, PANELS, PLOT_SIZE};
 use eyehand::experiment::study::{compare_plan, sweep_plan, CompareRequest, Setting, StudyError};
 use eyehand::experiment::{run, Config, RequestError, RunOptions};
 use eyehand::learn::Method;
+use slurm::{eyehand, text, without_minutes};
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Command;
 
 const EYEHAND: &str = env!("CARGO_BIN_EXE_eyehand");
 
@@ -71,28 +75,6 @@ fn plot_refuses_a_folder_that_is_not_a_run() {
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
-}
-
-/// `eyehand ARGS…` run in `cwd`.
-fn eyehand(args: &[&str], cwd: &Path) -> Output {
-    Command::new(EYEHAND)
-        .args(args)
-        .current_dir(cwd)
-        .output()
-        .unwrap()
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).to_string()
-}
-
-/// A data file's lines without their minutes column.
-fn without_minutes(path: &Path) -> Vec<String> {
-    std::fs::read_to_string(path)
-        .unwrap()
-        .lines()
-        .map(|l| l.rsplit_once(' ').unwrap().0.to_string())
-        .collect()
 }
 
 #[test]

@@ -88,6 +88,16 @@ impl Drop for Cluster {
     }
 }
 
+/// `eyehand ARGS…` run in `cwd`.
+pub fn eyehand(args: &[&str], cwd: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .unwrap()
+}
+
+/// Bytes a process wrote, as text.
 pub fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).to_string()
 }

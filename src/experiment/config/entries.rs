@@ -161,6 +161,9 @@ config_entries! {
     known_pattern_perc: f64,
     /// Learning patterns each bin keeps.
     bin_size: usize,
+    /// Stored patterns in all bins together at most; past it the least recently used bins
+    /// are dropped whole (0: no cap).
+    max_stored_patterns: usize,
     /// nnw: at most this many patterns re-trained per node after a trial.
     nnw_train_limit: usize,
     /// nnw: a node is re-trained once it got this many new patterns.

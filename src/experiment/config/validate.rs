@@ -191,6 +191,15 @@ impl Config {
             "",
         )?;
         within("bin_size", self.bin_size, 1, 10_000, "")?;
+        rule(
+            self.max_stored_patterns == 0 || self.max_stored_patterns >= self.bin_size,
+            "max_stored_patterns",
+            &self.max_stored_patterns,
+            &format!(
+                "must be 0 (no cap) or at least bin_size ({})",
+                self.bin_size
+            ),
+        )?;
         within("monitor_ave", self.monitor_ave, 1, 10_000_000, "")?;
         rule(
             self.am_error_tresh > 0.0,

@@ -104,6 +104,7 @@ fn tree_settings(config: &Config) -> TreeSettings {
     TreeSettings {
         max_depth: config.tree_depth,
         bin_size: config.bin_size,
+        max_stored_patterns: config.max_stored_patterns,
         min_pats_for_split: config.min_pats_for_split,
         split_error: config.split_error,
         am_error_tresh: config.am_error_tresh,

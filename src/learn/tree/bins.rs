@@ -3,8 +3,10 @@
 //! A bin is found by its [`BinKey`] through a hash map. Its patterns form a chain of
 //! records, oldest first, each with the pattern's sequence number; once the bin is full a
 //! new pattern overwrites the oldest record, which moves to the end of the chain. Patterns
-//! older than a change of the mapping can be dropped; their records are reused. Which node
-//! a bin hangs on is the tree's business.
+//! older than a change of the mapping can be dropped; their records are reused. Bins are
+//! also kept in the order they were last stored to, so that when the store must stay
+//! bounded the bin stored to least recently can be dropped whole ([`Bins::evict`]); its
+//! slot and records are reused. Which node a bin hangs on is the tree's business.
 
 use super::{BinKey, Records};
 use crate::learn::LearnError;
@@ -43,7 +45,14 @@ struct Bin {
     /// Newest record.
     last: u32,
     len: u32,
+    /// The bin stored to just before this one was last stored to ([`NO_BIN`] if none).
+    older: u32,
+    /// The bin stored to just after ([`NO_BIN`] if none).
+    newer: u32,
 }
+
+/// The end of the recency list.
+const NO_BIN: u32 = u32::MAX;
 
 /// Every bin and the patterns they keep.
 #[derive(Debug)]
@@ -57,6 +66,11 @@ pub(crate) struct Bins<const N: usize> {
     seqs: Vec<u64>,
     /// Records of dropped patterns, to be reused.
     free: Vec<u32>,
+    /// Slots of evicted bins, to be reused.
+    free_bins: Vec<u32>,
+    /// The bin stored to least recently, and most recently ([`NO_BIN`] when none).
+    least_recent: u32,
+    most_recent: u32,
     records: Records<N>,
 }
 
@@ -70,23 +84,91 @@ impl<const N: usize> Bins<N> {
             next: Vec::new(),
             seqs: Vec::new(),
             free: Vec::new(),
+            free_bins: Vec::new(),
+            least_recent: NO_BIN,
+            most_recent: NO_BIN,
             records,
         }
     }
 
-    /// The bin named `key`, and whether it was created just now (empty).
+    /// The bin named `key`, and whether it was created just now (empty; it counts as
+    /// stored to most recently).
     pub(crate) fn find_or_create(&mut self, key: BinKey) -> (u32, bool) {
-        let new_id = self.bins.len() as u32;
+        let new_id = self
+            .free_bins
+            .last()
+            .copied()
+            .unwrap_or(self.bins.len() as u32);
         let id = *self.index.entry(key).or_insert(new_id);
-        if id == new_id {
-            self.bins.push(Bin {
-                key,
-                first: 0,
-                last: 0,
-                len: 0,
-            });
+        if id != new_id {
+            return (id, false);
         }
-        (id, id == new_id)
+        let bin = Bin {
+            key,
+            first: 0,
+            last: 0,
+            len: 0,
+            older: NO_BIN,
+            newer: NO_BIN,
+        };
+        if self.free_bins.pop().is_some() {
+            self.bins[id as usize] = bin;
+        } else {
+            self.bins.push(bin);
+        }
+        self.link_most_recent(id);
+        (id, true)
+    }
+
+    /// Puts bin `id`, not in the recency list, at its most recent end.
+    fn link_most_recent(&mut self, id: u32) {
+        let bin = &mut self.bins[id as usize];
+        bin.older = self.most_recent;
+        bin.newer = NO_BIN;
+        match self.most_recent {
+            NO_BIN => self.least_recent = id,
+            newest => self.bins[newest as usize].newer = id,
+        }
+        self.most_recent = id;
+    }
+
+    /// Takes bin `id` out of the recency list.
+    fn unlink(&mut self, id: u32) {
+        let Bin { older, newer, .. } = self.bins[id as usize];
+        match older {
+            NO_BIN => self.least_recent = newer,
+            older => self.bins[older as usize].newer = newer,
+        }
+        match newer {
+            NO_BIN => self.most_recent = older,
+            newer => self.bins[newer as usize].older = older,
+        }
+    }
+
+    /// The bin stored to least recently, if there is any bin.
+    pub(crate) fn least_recent(&self) -> Option<u32> {
+        (self.least_recent != NO_BIN).then_some(self.least_recent)
+    }
+
+    /// Drops bin `id` and every pattern in it; returns its key and how many patterns it
+    /// kept. Its slot and records are reused by bins and patterns to come.
+    pub(crate) fn evict(&mut self, id: u32) -> (BinKey, usize) {
+        self.unlink(id);
+        let bin = self.bins[id as usize];
+        let mut record = bin.first;
+        for _ in 0..bin.len {
+            self.free.push(record);
+            record = self.next[record as usize];
+        }
+        self.index.remove(&bin.key);
+        self.bins[id as usize].len = 0;
+        self.free_bins.push(id);
+        (bin.key, bin.len as usize)
+    }
+
+    /// Patterns kept in all bins together.
+    pub(crate) fn stored(&self) -> usize {
+        self.records.len() - self.free.len()
     }
 
     /// Stores `pattern`, number `seq`, in bin `id`; true when the bin grew, false when its
@@ -129,6 +211,10 @@ impl<const N: usize> Bins<N> {
         }
         bin.last = record;
         bin.len += u32::from(grew);
+        if self.most_recent != id {
+            self.unlink(id);
+            self.link_most_recent(id);
+        }
         Ok(grew)
     }
 
@@ -180,7 +266,7 @@ impl<const N: usize> Bins<N> {
     /// Bins there are.
     #[cfg(test)]
     pub(crate) fn count(&self) -> usize {
-        self.bins.len()
+        self.bins.len() - self.free_bins.len()
     }
 
     /// Drops every bin and pattern.
@@ -190,6 +276,9 @@ impl<const N: usize> Bins<N> {
         self.next.clear();
         self.seqs.clear();
         self.free.clear();
+        self.free_bins.clear();
+        self.least_recent = NO_BIN;
+        self.most_recent = NO_BIN;
         self.records.clear()
     }
 }
@@ -242,6 +331,35 @@ mod tests {
         assert_eq!(bins.latest(a).unwrap(), pattern(5));
         assert_eq!(bins.latest(b).unwrap(), pattern(7));
         assert_eq!(bins.key(b), key(&[1, 3]));
+    }
+
+    #[test]
+    fn the_least_recently_stored_to_bin_is_evicted_and_its_room_reused() {
+        let mut bins = Bins::new(2, Records::in_memory());
+        let ids: Vec<u32> = (0..3).map(|b| bins.find_or_create(key(&[b])).0).collect();
+        for (i, &id) in ids.iter().enumerate() {
+            bins.store(id, &pattern(i), i as u64).unwrap();
+        }
+        // Bin 0 was stored to again: bin 1 is now the least recent.
+        bins.store(ids[0], &pattern(3), 3).unwrap();
+        assert_eq!(bins.least_recent(), Some(ids[1]));
+        assert_eq!(bins.evict(ids[1]), (key(&[1]), 1));
+        assert_eq!((bins.stored(), bins.count()), (3, 2));
+        assert_eq!(bins.least_recent(), Some(ids[2]));
+        let (again, created) = bins.find_or_create(key(&[1]));
+        assert!(created, "an evicted bin is gone");
+        assert_eq!(again, ids[1], "its slot is reused");
+        bins.store(again, &pattern(4), 4).unwrap();
+        assert_eq!(kept(&mut bins, again), [4]);
+        assert_eq!(bins.records.len(), 4, "its record is reused");
+        assert_eq!(bins.evict(ids[2]), (key(&[2]), 1));
+        assert_eq!(bins.evict(ids[0]), (key(&[0]), 2));
+        assert_eq!(bins.least_recent(), Some(again));
+        assert_eq!(bins.evict(again), (key(&[1]), 1));
+        assert_eq!(
+            (bins.least_recent(), bins.stored(), bins.count()),
+            (None, 0, 0)
+        );
     }
 
     #[test]

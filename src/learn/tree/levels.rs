@@ -50,6 +50,12 @@ impl Levels {
         self.0[depth].patterns += 1;
     }
 
+    /// A bin holding `patterns` patterns was dropped from a node at `depth`.
+    pub(crate) fn bin_removed(&mut self, depth: usize, patterns: usize) {
+        self.0[depth].bins -= 1;
+        self.0[depth].patterns -= patterns;
+    }
+
     /// `patterns` patterns were dropped from bins on nodes at `depth`.
     pub(crate) fn patterns_removed(&mut self, depth: usize, patterns: usize) {
         self.0[depth].patterns -= patterns;

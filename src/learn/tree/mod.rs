@@ -28,7 +28,9 @@
 //! - **Bins.** Each pattern is kept in the bin of its finest box (the last `bin_size` per
 //!   bin); a bin hangs on the deepest existing node covering it. A split moves exactly the
 //!   bins the new child covers onto it (bin sinking); a merge moves every bin of the cut
-//!   subtree back to the parent. Patterns live in memory or in the run's `pat_file`.
+//!   subtree back to the parent. Patterns live in memory or in the run's `pat_file`. With
+//!   `max_stored_patterns` set, the bins stored to least recently are dropped whole once
+//!   the store holds more; see [`eviction`].
 //! - **Known patterns.** With camera readings zero the move is zero: for n patterns a node
 //!   is trained with, it also gets n·`known_pattern_perc`/100 patterns (θ2, θ3 uniform in
 //!   its box, every other input 0) → Δθ = 0, never stored. A fractional credit per node
@@ -55,6 +57,7 @@ mod approximator;
 mod arena;
 mod bins;
 mod branch;
+mod eviction;
 mod levels;
 mod merge;
 mod monitor;

@@ -12,6 +12,11 @@ pub struct TreeSettings {
     pub max_depth: usize,
     /// Patterns a bin keeps (`bin_size`); 5 by default.
     pub bin_size: usize,
+    /// At most this many patterns are stored in all bins together
+    /// (`max_stored_patterns`); past it the bins stored to least recently are dropped
+    /// whole. 0 is no cap; 2,000,000 by default (about 200 MB in memory, reached after
+    /// about 200,000 lin5 trials). At least `bin_size` when set.
+    pub max_stored_patterns: usize,
     /// Stored patterns a sub-box needs to be split off (`min_pats_for_split`); 50 by
     /// default.
     pub min_pats_for_split: usize,
@@ -46,6 +51,7 @@ impl Default for TreeSettings {
         TreeSettings {
             max_depth: 8,
             bin_size: 5,
+            max_stored_patterns: 2_000_000,
             min_pats_for_split: 50,
             split_error: 1e-4,
             am_error_tresh: 20.0,

@@ -94,7 +94,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     }
 
     /// Keeps pattern number `seq` in its bin, which hangs on node `id`, the deepest on its
-    /// path.
+    /// path; then drops the least recently used bins if the store is over its cap.
     fn store(
         &mut self,
         id: u32,
@@ -115,6 +115,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             }
             self.levels.pattern_added(node.depth);
         }
+        self.evict_over_cap();
         Ok(())
     }
 }

@@ -23,6 +23,7 @@ fn still(max_depth: usize) -> TreeSettings {
     TreeSettings {
         max_depth,
         bin_size: 4,
+        max_stored_patterns: 0,
         min_pats_for_split: usize::MAX,
         split_error: f64::INFINITY,
         am_error_tresh: f64::INFINITY,
@@ -194,6 +195,28 @@ fn a_merge_returns_every_bin_of_the_cut_subtree_to_the_parent() {
 }
 
 #[test]
+fn a_capped_store_drops_the_least_recently_used_bins_and_keeps_splitting() {
+    let mut settings = still(4);
+    settings.min_pats_for_split = 20;
+    settings.split_error = 0.0;
+    settings.max_stored_patterns = 300;
+    let mut t = tree(settings);
+    let mut rng = ChaCha8Rng::seed_from_u64(3);
+    let events = train_random(&mut t, 3000, &mut rng);
+    assert_eq!(t.bins.stored(), 300, "full, and no fuller");
+    assert_eq!(recount(&t), counters(&t));
+    assert!(events.contains(&TreeEvent::Split));
+    // A pattern in a bin just stored to stays; the bin of the oldest pattern is gone.
+    let last = random_pattern(&mut rng);
+    t.train(&last).unwrap();
+    let key = t.rule.key(&last.input, 4);
+    let (bin, created) = t.bins.find_or_create(key);
+    assert!(!created);
+    assert_eq!(t.bins.latest(bin).unwrap(), last);
+    assert_eq!(t.stats().patterns, 300);
+}
+
+#[test]
 fn an_answer_falls_back_to_the_nearest_ancestor_when_a_fit_is_singular() {
     let mut t = tree(still(2));
     let mut rng = ChaCha8Rng::seed_from_u64(3);
@@ -259,6 +282,7 @@ proptest! {
     fn counters_equal_a_full_recount_after_any_splits_and_merges(
         ops in prop::collection::vec(op(), 1..40),
         seed in any::<u64>(),
+        cap in prop_oneof![Just(0usize), 2usize..120],
     ) {
         // Training splits, merges and resets by itself too: with these settings 1,000
         // patterns give some 50 splits, 30 relative merges and a few root merges.
@@ -269,6 +293,8 @@ proptest! {
         settings.am_error_iters = 10;
         settings.merge_error = -0.9;
         settings.bin_size = 2;
+        // (With a cap, the least recently used bins are dropped along the way too.)
+        settings.max_stored_patterns = cap;
         let mut t = tree(settings);
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         for op in ops {
@@ -291,6 +317,7 @@ proptest! {
                 }
             }
             prop_assert_eq!(recount(&t), counters(&t));
+            prop_assert!(cap == 0 || t.bins.stored() <= cap);
         }
     }
 }

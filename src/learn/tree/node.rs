@@ -7,6 +7,8 @@ use rand_chacha::ChaCha8Rng;
 
 /// The index of "no node" (no parent, no child).
 pub(crate) const NONE: u32 = u32::MAX;
+/// A sub-box with no error monitor yet.
+const NO_SLOT: u8 = u8::MAX;
 
 /// One node of the tree, stored in the tree's arena and linked by indices.
 #[derive(Debug, Clone)]
@@ -26,8 +28,13 @@ pub(crate) struct Node<A, const N: usize> {
     /// Its own running error E, for the absolute and relative merge.
     pub(super) errors: Monitor,
     /// Its running error on each sub-box: the split test where there is no child yet, its
-    /// side of the relative merge test where there is one. Made on first use.
-    box_errors: [Option<Monitor>; BRANCHES],
+    /// side of the relative merge test where there is one. Made on first use, in the order
+    /// of first use; `box_slots` says where each sub-box's is. (Most nodes see only a few
+    /// sub-boxes, and nodes at the deepest depth none: 32 monitors in place would be 2 kB
+    /// a node.)
+    box_errors: Vec<Monitor>,
+    /// Per sub-box: its monitor's place in `box_errors`, [`NO_SLOT`] until made.
+    box_slots: [u8; BRANCHES],
     /// The bins hanging on this node: those whose deepest existing node it is.
     pub(super) bins: Vec<u32>,
     /// Patterns kept in those bins.
@@ -73,7 +80,8 @@ impl<A: Approximator<N>, const N: usize> Node<A, N> {
             region,
             model,
             errors: Monitor::new(window),
-            box_errors: std::array::from_fn(|_| None),
+            box_errors: Vec::new(),
+            box_slots: [NO_SLOT; BRANCHES],
             bins: Vec::new(),
             patterns: 0,
             box_patterns: [0; BRANCHES],
@@ -156,26 +164,31 @@ impl<A: Approximator<N>, const N: usize> Node<A, N> {
 
     /// The running error on sub-box `branch`, if any was measured.
     pub(super) fn box_errors(&self, branch: u8) -> Option<&Monitor> {
-        self.box_errors[usize::from(branch)].as_ref()
+        let slot = self.box_slots[usize::from(branch)];
+        (slot != NO_SLOT).then(|| &self.box_errors[usize::from(slot)])
     }
 
     /// The running error on sub-box `branch`, made with `window` on first use.
     pub(super) fn box_errors_mut(&mut self, branch: u8, window: usize) -> &mut Monitor {
-        self.box_errors[usize::from(branch)].get_or_insert_with(|| Monitor::new(window))
+        let slot = &mut self.box_slots[usize::from(branch)];
+        if *slot == NO_SLOT {
+            // (At most BRANCHES = 32 sub-boxes: a slot always fits a u8 below NO_SLOT.)
+            *slot = self.box_errors.len() as u8;
+            self.box_errors.push(Monitor::new(window));
+        }
+        &mut self.box_errors[usize::from(*slot)]
     }
 
     /// Starts measuring every sub-box anew.
     pub(super) fn clear_all_box_errors(&mut self) {
-        self.box_errors
-            .iter_mut()
-            .flatten()
-            .for_each(Monitor::clear);
+        self.box_errors.iter_mut().for_each(Monitor::clear);
     }
 
     /// Starts measuring sub-box `branch` anew.
     pub(super) fn clear_box_errors(&mut self, branch: u8) {
-        if let Some(m) = &mut self.box_errors[usize::from(branch)] {
-            m.clear();
+        let slot = self.box_slots[usize::from(branch)];
+        if slot != NO_SLOT {
+            self.box_errors[usize::from(slot)].clear();
         }
     }
 }

@@ -135,19 +135,20 @@ impl DataFiles {
         outcome: &TrialOutcome,
         stats: &LearnerStats,
     ) -> io::Result<()> {
-        let minutes = self.minutes();
+        // (Formatted once for the eight lines that carry it.)
+        let minutes = format!("{:.6}", self.minutes());
         let mut lines = self.lines()?;
         let files = &mut lines.files;
         let step_files = &mut files[..MAX_RECORDED_STEPS];
         for (file, distance) in step_files.iter_mut().zip(&outcome.distances_mm) {
-            writeln!(file.pending, "{trial} {distance:.6} {minutes:.6}")?;
+            writeln!(file.pending, "{trial} {distance:.6} {minutes}")?;
         }
         for (index, count) in [
             (NODES, stats.nodes),
             (BINS, stats.bins),
             (PATTERNS, stats.patterns),
         ] {
-            writeln!(files[index].pending, "{trial} {count} {minutes:.6}")?;
+            writeln!(files[index].pending, "{trial} {count} {minutes}")?;
         }
         Ok(())
     }

@@ -224,3 +224,27 @@ fn verbose_output_prints_the_tree_every_depth_info_trials() {
     );
     assert!(String::from_utf8_lossy(&run("0").stderr).is_empty());
 }
+
+#[test]
+fn max_stored_patterns_bounds_what_a_run_stores() {
+    let data = tempfile::tempdir().unwrap();
+    let mut config = Config::default_config();
+    config.trials = 300;
+    config.max_stored_patterns = 1000;
+    let run = run(&RunOptions::new(config, data.path())).unwrap();
+    let column = |file: &str| -> Vec<usize> {
+        let text = std::fs::read_to_string(run.folder.join(file)).unwrap();
+        text.lines()
+            .map(|l| l.split(' ').nth(1).unwrap().parse().unwrap())
+            .collect()
+    };
+    let patterns = column("patterns");
+    assert_eq!(patterns.len(), 300);
+    assert!(patterns.iter().all(|&n| n <= 1000), "{patterns:?}");
+    assert!(
+        patterns.iter().filter(|&&n| n >= 990).count() > 100,
+        "the cap is reached early and held: {patterns:?}"
+    );
+    assert!(column("bins").iter().zip(&patterns).all(|(b, p)| b <= p));
+    assert!(run.summary.patterns <= 1000 && run.summary.patterns >= 990);
+}

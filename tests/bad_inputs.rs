@@ -5,7 +5,8 @@
 //!
 //! A case file holds `key: value` lines (`#` starts a comment):
 //! - `config: NAME VALUE` — the shipped configs/lin5.conf with entry NAME's line replaced
-//!   (repeatable), written to `{config}`; `{line}` is the first replaced line's number;
+//!   (repeatable; a repeated entry such as `obstacle` replaces its commented example line
+//!   `# NAME …`), written to `{config}`; `{line}` is the first replaced line's number;
 //!   `config_bom: yes` writes the shipped config after a UTF-8 byte-order mark;
 //! - `urdf: FROM => TO` — the shipped URDF with FROM replaced by TO, written to `{urdf}`;
 //!   `urdf_bom: yes` writes it after a byte-order mark;
@@ -95,9 +96,12 @@ fn prepare(case: &Case, dir: &Path) -> Vec<(&'static str, String)> {
         let replacement = replacement.replace("{huge}", &huge);
         let name = replacement.split_whitespace().next().unwrap();
         let lines: Vec<&str> = config.lines().collect();
-        let at = lines
-            .iter()
-            .position(|l| l.split_whitespace().next() == Some(name));
+        let first_word = |l: &str| l.split_whitespace().next() == Some(name);
+        let at = lines.iter().position(|l| first_word(l)).or_else(|| {
+            lines
+                .iter()
+                .position(|l| l.strip_prefix("# ").is_some_and(first_word))
+        });
         let at = at.unwrap_or_else(|| {
             let similar = name.get(..8).unwrap_or(name);
             lines

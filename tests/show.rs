@@ -2,7 +2,7 @@
 //! pictures say what the simulation did (the camera image's blob is the reading, the arm
 //! drawing puts the camera where the kinematic model does).
 
-use eyehand::camera::{CameraModel, NotSeen};
+use eyehand::camera::{CameraModel, EmptyScene, NotSeen};
 use eyehand::control::ServoMode;
 use eyehand::experiment::show::{
     show_trials, write_camera_image, ArmView, Look, ShowError, TrialRange, BACKGROUND_GREY,
@@ -230,7 +230,15 @@ fn the_image_is_blank_where_the_object_is_not_seen() {
         sim_time: 0.0,
     };
     let path = dir.path().join("camera_0.png");
-    write_camera_image(&path, &look, &camera, 256, &["not seen".into()]).unwrap();
+    write_camera_image(
+        &path,
+        &look,
+        &camera,
+        256,
+        &EmptyScene,
+        &["not seen".into()],
+    )
+    .unwrap();
     let (width, _, pixels) = read_png(&path);
     for y in 0..512 {
         for x in 0..512 {
@@ -248,7 +256,7 @@ fn the_image_is_blank_where_the_object_is_not_seen() {
         reading: Ok(Vector3::zeros()),
         ..look
     };
-    write_camera_image(&path, &seen, &camera, 256, &[]).unwrap();
+    write_camera_image(&path, &seen, &camera, 256, &EmptyScene, &[]).unwrap();
     assert!(blob(&path).0 > 500);
 }
 

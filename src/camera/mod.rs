@@ -1,13 +1,16 @@
 //! The camera in the end-effector: a pinhole looking down at a sphere, and the reading
-//! c = (cx, cy, cz) the learners see.
+//! c = (cx, cy, cz) the learners see, and the scene around the target that can hide it.
 
 mod model;
+mod occlusion;
 mod projection;
 mod raycast;
+mod scene;
 
 pub use model::{CameraModel, NotSeen};
 pub use projection::ProjectionCamera;
 pub use raycast::{PixelCoverage, RaycastCamera};
+pub use scene::{EmptyScene, Scene, SceneHit};
 
 use nalgebra::{Isometry3, Point3, Vector3};
 
@@ -29,4 +32,14 @@ pub trait Camera: std::fmt::Debug {
     ) -> Result<Vector3<f64>, NotSeen> {
         self.read_local(&camera_pose.inverse_transform_point(object).coords)
     }
+
+    /// The reading of the object at `object` seen from `camera_pose` with `scene` around
+    /// it, or why it is not seen: what the scene hides is not seen, by each camera's rule
+    /// (see the `scene` module).
+    fn read_in(
+        &self,
+        camera_pose: &Isometry3<f64>,
+        object: &Point3<f64>,
+        scene: &dyn Scene,
+    ) -> Result<Vector3<f64>, NotSeen>;
 }

@@ -11,6 +11,9 @@ pub enum NotSeen {
     /// The object's image is cut by the frame's border or lies outside it.
     #[error("the object's image is not wholly inside the frame")]
     OutsideFrame,
+    /// Something in the scene (an obstacle, the arm, the floor) hides the object.
+    #[error("the object is hidden behind something in the scene")]
+    Hidden,
 }
 
 /// A pinhole camera looking along its frame's +z axis at a sphere (SI units, pixels).

@@ -6,10 +6,13 @@
 //! f·sinθ·cosθ / k from the image centre (towards the sphere's direction), its semi-axes
 //! are f·sinα·cosα / k (radial) and f·sinα / √k, and its area is π times their product.
 //! The reading is the ellipse's centre (what a blob centroid gives) and cz from its area.
+//! In a scene it tests the centre ray only: the object is hidden when the ray from the
+//! camera centre to the sphere's centre meets something first (see the `scene` module).
 
 use super::model::{CameraModel, NotSeen};
+use super::scene::{centre_ray_check, Scene};
 use super::Camera;
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{Isometry3, Matrix3, Point3, Vector3};
 
 /// The sphere's exact analytic image.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -117,5 +120,16 @@ impl Camera for ProjectionCamera {
 
     fn model(&self) -> &CameraModel {
         &self.model
+    }
+
+    fn read_in(
+        &self,
+        camera_pose: &Isometry3<f64>,
+        object: &Point3<f64>,
+        scene: &dyn Scene,
+    ) -> Result<Vector3<f64>, NotSeen> {
+        let reading = self.read(camera_pose, object)?;
+        centre_ray_check(scene, camera_pose, object, self.model.object_radius)?;
+        Ok(reading)
     }
 }

@@ -21,8 +21,10 @@
 //! every read is reproducible and no generator is shared.
 
 use super::model::{CameraModel, NotSeen};
+use super::occlusion::Occlusion;
+use super::scene::{view_may_be_blocked, Scene};
 use super::Camera;
-use nalgebra::Vector3;
+use nalgebra::{Isometry3, Point3, Vector3};
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::parry::query::{Ray, RayCast};
 use rapier3d_f64::parry::shape::Ball;
@@ -122,6 +124,48 @@ impl RaycastCamera {
     /// front of the camera or misses the image; a blob cut by the border is kept (the
     /// reading refuses it).
     pub fn render(&self, p: &Vector3<f64>) -> Vec<PixelCoverage> {
+        self.render_visible(p, None)
+    }
+
+    /// The image of the sphere centred at `object` (world) seen from `camera_pose` with
+    /// `scene` around it, as [`render`](Self::render) gives it: only what the scene does not
+    /// hide.
+    pub fn render_in(
+        &self,
+        camera_pose: &Isometry3<f64>,
+        object: &Point3<f64>,
+        scene: &dyn Scene,
+    ) -> Vec<PixelCoverage> {
+        let occlusion = Occlusion {
+            scene,
+            camera_pose: *camera_pose,
+        };
+        let p = camera_pose.inverse_transform_point(object).coords;
+        self.render_visible(&p, Some(&occlusion))
+    }
+
+    /// The grey level of the scene behind every pixel, row by row (`None` where a pixel's
+    /// centre ray meets nothing), seen from `camera_pose`; the sphere is not in it.
+    pub fn render_scene(&self, camera_pose: &Isometry3<f64>, scene: &dyn Scene) -> Vec<Option<u8>> {
+        let m = &self.model;
+        let n = self.resolution;
+        let origin = Point3::from(camera_pose.translation.vector);
+        let centre = |index: usize, size: f64| ((index as f64 + 0.5) / n as f64 - 0.5) * size;
+        (0..n * n)
+            .map(|k| {
+                let (u, v) = (centre(k % n, m.width), centre(k / n, m.height));
+                let dir = camera_pose.rotation * Vector3::new(u / m.focal, v / m.focal, 1.0);
+                scene.first_hit(&origin, &dir, f64::MAX).map(|hit| hit.grey)
+            })
+            .collect()
+    }
+
+    /// The pixels of the sphere centred at `p` (camera frame) that `occlusion` leaves.
+    fn render_visible(
+        &self,
+        p: &Vector3<f64>,
+        occlusion: Option<&Occlusion>,
+    ) -> Vec<PixelCoverage> {
         let m = &self.model;
         let mut pixels = Vec::new();
         if !(p.iter().all(|v| v.is_finite()) && p.z > m.object_radius) {
@@ -137,7 +181,7 @@ impl RaycastCamera {
             &noiseless,
             p,
             (columns, rows),
-            0,
+            (0, occlusion),
             |column, row, coverage, _, _| {
                 pixels.push(PixelCoverage {
                     column,
@@ -163,6 +207,39 @@ pub struct PixelCoverage {
 
 impl Camera for RaycastCamera {
     fn read_local(&self, p: &Vector3<f64>) -> Result<Vector3<f64>, NotSeen> {
+        self.measure(p, None)
+    }
+
+    fn model(&self) -> &CameraModel {
+        &self.model
+    }
+
+    fn read_in(
+        &self,
+        camera_pose: &Isometry3<f64>,
+        object: &Point3<f64>,
+        scene: &dyn Scene,
+    ) -> Result<Vector3<f64>, NotSeen> {
+        if !view_may_be_blocked(scene, camera_pose, object, self.model.object_radius) {
+            return self.read(camera_pose, object);
+        }
+        let occlusion = Occlusion {
+            scene,
+            camera_pose: *camera_pose,
+        };
+        let p = camera_pose.inverse_transform_point(object).coords;
+        self.measure(&p, Some(&occlusion))
+    }
+}
+
+impl RaycastCamera {
+    /// The reading of the sphere centred at `p` (camera frame) from the part of its blob
+    /// that `occlusion` (if any) leaves visible.
+    fn measure(
+        &self,
+        p: &Vector3<f64>,
+        occlusion: Option<&Occlusion>,
+    ) -> Result<Vector3<f64>, NotSeen> {
         let m = &self.model;
         if !(p.iter().all(|v| v.is_finite()) && p.z >= m.min_depth) {
             return Err(NotSeen::TooClose);
@@ -174,7 +251,10 @@ impl Camera for RaycastCamera {
         };
         let frame = self.frames.get();
         self.frames.set(frame + 1);
-        let blob = Coverage::measure(self, p, (columns, rows), frame);
+        let blob = Coverage::measure(self, p, (columns, rows), (frame, occlusion));
+        if blob.area <= 0.0 && occlusion.is_some() {
+            return Err(NotSeen::Hidden);
+        }
         if blob.area <= 0.0 || blob.on_border {
             return Err(NotSeen::OutsideFrame);
         }
@@ -183,10 +263,6 @@ impl Camera for RaycastCamera {
             blob.sum_v / blob.area,
             m.cz_from_area(blob.area),
         ))
-    }
-
-    fn model(&self) -> &CameraModel {
-        &self.model
     }
 }
 
@@ -203,18 +279,19 @@ struct Coverage {
 
 impl Coverage {
     /// Measures the blob of the sphere centred at `p` (camera frame) over the pixels in
-    /// `columns` × `rows`, in frame number `frame` (for the pixel noise).
+    /// `columns` × `rows`, in frame number `frame` (for the pixel noise), what `occlusion`
+    /// hides left out.
     fn measure(
         camera: &RaycastCamera,
         p: &Vector3<f64>,
         spans: (RangeInclusive<usize>, RangeInclusive<usize>),
-        frame: u64,
+        seen: (u64, Option<&Occlusion>),
     ) -> Coverage {
         let m = &camera.model;
         let n = camera.resolution;
         let pixel_area = (m.width / n as f64) * (m.height / n as f64);
         let mut blob = Coverage::default();
-        Coverage::each_pixel(camera, p, spans, frame, |column, row, covered, u, v| {
+        Coverage::each_pixel(camera, p, spans, seen, |column, row, covered, u, v| {
             let area = covered * pixel_area;
             blob.area += area;
             blob.sum_u += area * u;
@@ -225,13 +302,14 @@ impl Coverage {
     }
 
     /// Calls `each(column, row, coverage, u, v)` for every pixel in `columns` × `rows` that
-    /// the sphere centred at `p` covers (after the pixel noise of frame `frame`): its
-    /// covered fraction and the centroid (px) of its covered part.
+    /// the sphere centred at `p` covers where `occlusion` (if any) does not hide it (after
+    /// the pixel noise of frame `frame`): its covered fraction and the centroid (px) of its
+    /// covered part.
     fn each_pixel(
         camera: &RaycastCamera,
         p: &Vector3<f64>,
         (columns, rows): (RangeInclusive<usize>, RangeInclusive<usize>),
-        frame: u64,
+        (frame, occlusion): (u64, Option<&Occlusion>),
         mut each: impl FnMut(usize, usize, f64, f64, f64),
     ) {
         let m = &camera.model;
@@ -271,15 +349,25 @@ impl Coverage {
             for s in 0..strips {
                 let v = top + (s as f64 + 0.5) * dv;
                 last = scan.segment(v, last);
-                let Some((from, to)) = last else { continue };
-                let first = (((from - left) / cell_u).floor().max(0.0) as usize).min(w - 1);
-                let end = (((to - left) / cell_u).floor().max(0.0) as usize).min(w - 1);
-                for i in first..=end {
-                    let lo = from.max(left + i as f64 * cell_u);
-                    let hi = to.min(left + (i + 1) as f64 * cell_u);
-                    if hi > lo {
-                        pixels[j * w + i].add(lo, hi, v, dv);
+                let Some(silhouette) = last else { continue };
+                let row = &mut pixels[j * w..(j + 1) * w];
+                let spread = |from: f64, to: f64| {
+                    let first = (((from - left) / cell_u).floor().max(0.0) as usize).min(w - 1);
+                    let end = (((to - left) / cell_u).floor().max(0.0) as usize).min(w - 1);
+                    for (i, pixel) in row.iter_mut().enumerate().take(end + 1).skip(first) {
+                        let lo = from.max(left + i as f64 * cell_u);
+                        let hi = to.min(left + (i + 1) as f64 * cell_u);
+                        if hi > lo {
+                            pixel.add(lo, hi, v, dv);
+                        }
                     }
+                };
+                match occlusion {
+                    None => {
+                        let mut spread = spread;
+                        spread(silhouette.0, silhouette.1)
+                    }
+                    Some(hidden) => hidden.visible_parts(&scan, v, silhouette, spread),
                 }
             }
         }
@@ -342,24 +430,36 @@ impl Moments {
 
 /// Rays along one image row: where the sphere's silhouette starts and ends on it.
 #[derive(Debug)]
-struct Scanline {
+pub(super) struct Scanline {
     ball: Ball,
     origin: Vector,
-    focal: f64,
+    pub(super) focal: f64,
     /// The image coordinates (px) the rows are searched between.
     left: f64,
     right: f64,
     /// The spacing (px) of the rays that look for the silhouette.
-    step: f64,
+    pub(super) step: f64,
 }
 
 impl Scanline {
-    fn hits(&self, u: f64, v: f64) -> bool {
-        let ray = Ray::new(
+    fn ray(&self, u: f64, v: f64) -> Ray {
+        Ray::new(
             self.origin,
             Vector::new(u / self.focal, v / self.focal, 1.0),
-        );
-        self.ball.intersects_local_ray(&ray, f64::MAX)
+        )
+    }
+
+    fn hits(&self, u: f64, v: f64) -> bool {
+        self.ball.intersects_local_ray(&self.ray(u, v), f64::MAX)
+    }
+
+    /// Where the ray through image point (`u`, `v`) meets the sphere, in lengths of its
+    /// direction (u/f, v/f, 1); where it misses, its nearest approach to the centre.
+    pub(super) fn distance(&self, u: f64, v: f64) -> f64 {
+        let ray = self.ray(u, v);
+        self.ball
+            .cast_local_ray(&ray, f64::MAX, true)
+            .unwrap_or_else(|| -ray.origin.dot(ray.dir) / ray.dir.length_squared())
     }
 
     /// The silhouette's extent (u from, u to) on the row at `v`, `None` if the row misses

@@ -291,7 +291,9 @@ impl TrialLoop {
     /// What the sensors and camera report at the current pose (with their noise), or why
     /// the object is not seen.
     pub fn observe(&mut self, object: &Point3<f64>) -> Result<Observation, NotSeen> {
-        let c = self.camera.read(&self.sim.camera_pose(), object)?;
+        let c = self
+            .camera
+            .read_in(&self.sim.camera_pose(), object, &self.sim.world())?;
         let q = self.sim.joints();
         let exact = Observation {
             theta_deg: Vector3::new(q[0], q[1], q[2]).map(f64::to_degrees),
@@ -312,14 +314,18 @@ impl TrialLoop {
         })
     }
 
-    /// The object's centre for a target drawn uniformly in the reach space and reachable by
-    /// the robot as it is now.
+    /// The object's centre for a target drawn uniformly in the reach space, reachable by
+    /// the robot as it is now and not inside an obstacle.
     fn draw_target(&mut self) -> Result<Point3<f64>, Failure> {
-        let standoff = self.camera.model().standoff;
+        let model = *self.camera.model();
         for _ in 0..MAX_DRAWS {
             let goal = self.reach.sample(&mut self.rng);
-            if self.sim.model().solve_camera_position(&goal).is_ok() {
-                return Ok(goal - Vector3::z() * standoff);
+            let object = goal - Vector3::z() * model.standoff;
+            let inside = |o: &crate::robot::Obstacle| o.overlaps_ball(&object, model.object_radius);
+            if self.sim.model().solve_camera_position(&goal).is_ok()
+                && !self.sim.world().obstacles.iter().any(inside)
+            {
+                return Ok(object);
             }
         }
         Err(Failure::UnreachableTarget)

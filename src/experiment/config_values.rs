@@ -89,6 +89,62 @@ pub enum CameraKind {
     Raycast,
 }
 
+/// An `obstacle` line: a box standing in the world, sides along the axes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ObstacleBox {
+    /// The box's centre (cm, world frame).
+    pub centre_cm: [f64; 3],
+    /// Its side lengths along x, y and z (cm), each above zero.
+    pub size_cm: [f64; 3],
+}
+
+impl ObstacleBox {
+    /// The box in the simulators' units (m).
+    pub fn obstacle(&self) -> crate::robot::Obstacle {
+        let m = |v: [f64; 3]| nalgebra::Vector3::from(v) * crate::units::M_PER_CM;
+        crate::robot::Obstacle {
+            centre: m(self.centre_cm).into(),
+            size: m(self.size_cm),
+        }
+    }
+}
+
+impl ConfigValue for ObstacleBox {
+    fn parse_value(raw: &str) -> Result<Self, ValueError> {
+        let bad = |reason: &str| ValueError::NotObstacle {
+            text: raw.to_string(),
+            reason: reason.to_string(),
+        };
+        let parts: Vec<&str> = raw.split(',').collect();
+        if parts.len() != 6 {
+            return Err(bad(&format!("{} numbers, not 6", parts.len())));
+        }
+        let mut values = [0.0; 6];
+        for (value, part) in values.iter_mut().zip(&parts) {
+            *value = f64::parse_value(part.trim())
+                .map_err(|_| bad(&format!("`{part}` is not a finite number")))?;
+        }
+        let (centre, size) = values.split_at(3);
+        if size.iter().any(|&side| side <= 0.0) {
+            return Err(bad("every side must be above 0"));
+        }
+        Ok(ObstacleBox {
+            centre_cm: [centre[0], centre[1], centre[2]],
+            size_cm: [size[0], size[1], size[2]],
+        })
+    }
+
+    fn render(&self) -> String {
+        let all: Vec<String> = self
+            .centre_cm
+            .iter()
+            .chain(&self.size_cm)
+            .map(f64::render)
+            .collect();
+        all.join(",")
+    }
+}
+
 macro_rules! choice_names {
     ($t:ty, $what:literal, $($variant:ident => $name:literal),*) => {
         impl fmt::Display for $t {
@@ -149,6 +205,28 @@ mod tests {
         }
         assert!(f64::parse_value("nan").is_err());
         assert!(f64::parse_value("inf").is_err());
+    }
+
+    #[test]
+    fn obstacles_round_trip_and_need_six_numbers_and_positive_sides() {
+        let box_ = ObstacleBox::parse_value("60,-10.5,0,20,20,40").unwrap();
+        assert_eq!(box_.size_cm, [20.0, 20.0, 40.0]);
+        assert_eq!(ObstacleBox::parse_value(&box_.render()), Ok(box_));
+        for bad in [
+            "1,2,3,4,5",
+            "1,2,3,4,5,0",
+            "1,2,3,4,-5,6",
+            "1,2,x,4,5,6",
+            "1,2,3,4,5,nan",
+        ] {
+            assert!(
+                matches!(
+                    ObstacleBox::parse_value(bad),
+                    Err(ValueError::NotObstacle { .. })
+                ),
+                "{bad}"
+            );
+        }
     }
 
     #[test]

@@ -16,6 +16,8 @@ pub struct FailureTally {
     pub left_the_image: usize,
     /// The object came behind or too close to the camera.
     pub too_close: usize,
+    /// Something in the scene (an obstacle, the arm) hid the object.
+    pub hidden: usize,
     /// The learner proposed a non-finite move.
     pub non_finite_move: usize,
 }
@@ -28,6 +30,7 @@ impl FailureTally {
             Failure::NoStartSeen => &mut self.no_start_seen,
             Failure::LostObject(NotSeen::OutsideFrame) => &mut self.left_the_image,
             Failure::LostObject(NotSeen::TooClose) => &mut self.too_close,
+            Failure::LostObject(NotSeen::Hidden) => &mut self.hidden,
             Failure::NonFiniteMove => &mut self.non_finite_move,
         };
         *counter += 1;
@@ -39,6 +42,7 @@ impl FailureTally {
             + self.no_start_seen
             + self.left_the_image
             + self.too_close
+            + self.hidden
             + self.non_finite_move
     }
 }
@@ -53,6 +57,7 @@ impl fmt::Display for FailureTally {
             ),
             (self.left_the_image, "lost the object out of the image"),
             (self.too_close, "came too close to the object"),
+            (self.hidden, "lost the object behind something"),
             (
                 self.non_finite_move,
                 "got a non-finite move from the learner",

@@ -235,6 +235,15 @@ fn drive(
         settle_timeouts: work.settle_timeouts,
         stopped_by_contact: work.contact_stops,
         events: events.iter().map(Event::to_string).collect(),
+        obstacles: config
+            .obstacle
+            .iter()
+            .map(|o| {
+                let [x, y, z] = o.centre_cm;
+                let [sx, sy, sz] = o.size_cm;
+                [x, y, z, sx, sy, sz]
+            })
+            .collect(),
         window: figures.window(),
         mean_distance_mm: figures.means(),
         median_distance_mm: figures.medians(),

@@ -40,10 +40,14 @@ pub struct RunSummary {
     pub simulated_seconds_per_trial: f64,
     /// Moves, placings and link changes after which the dynamic arm had not settled in time.
     pub settle_timeouts: u64,
-    /// Moves stopped by a contact: the floor (both simulators) or another link (dynamic).
+    /// Moves stopped by a contact: the floor, an obstacle or another link.
     pub stopped_by_contact: u64,
     /// The run's events (`rotate:TRIAL:DEG`, `elongate:TRIAL:LINK:CM`), in trial order.
     pub events: Vec<String>,
+    /// The obstacle boxes, each `[x, y, z, sx, sy, sz]`: centre and side lengths (cm,
+    /// world frame) as the config's `obstacle` lines give them (absent in older summaries).
+    #[serde(default)]
+    pub obstacles: Vec<[f64; 6]>,
     /// The number of last trials the distance figures are taken over.
     pub window: usize,
     /// Mean distance (mm) after feedback steps 1..5 over the window (null: no such step).

@@ -2,11 +2,14 @@
 //! is instant in wall time; its simulated duration follows the trapezoidal profile.
 
 use super::collision::{body_elements, floor_stop, reach, Elements};
+use super::dynamic::compound;
 use super::model::{ArmModel, Controlled, Joints};
 use super::motion::{limit_stop_fraction, TrapezoidProfile};
 use super::simulator::{MoveReport, MoveSettings, SimWork, Simulator};
+use super::world::{Obstacle, WorldView, SEEN_BODIES};
 use super::RobotError;
 use nalgebra::{Isometry3, Vector3};
+use rapier3d_f64::parry::shape::SharedShape;
 
 /// Bisection steps that find where the wrist angle meets its limit (1e-12 of a move).
 const WRIST_LIMIT_BISECTIONS: usize = 40;
@@ -21,6 +24,10 @@ pub struct KinematicSim {
     /// Each link's collision elements (link 1 first) and how far they reach, for the floor.
     collision: [Elements; 6],
     reach: f64,
+    /// The bodies a camera sees (base, links 1–5) as parry shapes, for [`WorldView`].
+    seen_shapes: [Option<SharedShape>; SEEN_BODIES],
+    /// The obstacle boxes in the world.
+    obstacles: Vec<Obstacle>,
     work: SimWork,
     /// The camera's pose at `joints`, kept with them.
     camera: Isometry3<f64>,
@@ -41,16 +48,35 @@ impl KinematicSim {
             camera: pose.camera,
             collision: Default::default(),
             reach: 0.0,
+            seen_shapes: Default::default(),
+            obstacles: Vec::new(),
             work: SimWork::default(),
         };
         sim.refresh_collision();
         sim
     }
 
+    /// This simulator with `obstacles` standing in its world.
+    pub fn with_obstacles(mut self, obstacles: Vec<Obstacle>) -> KinematicSim {
+        self.obstacles = obstacles;
+        self
+    }
+
     /// Takes the collision elements from the model as it is now.
     fn refresh_collision(&mut self) {
         self.collision = std::array::from_fn(|k| body_elements(&self.model, k + 1));
         self.reach = reach(&self.model, &self.collision);
+        self.seen_shapes = std::array::from_fn(|k| {
+            let base;
+            let elements = match k {
+                0 => {
+                    base = body_elements(&self.model, 0);
+                    &base
+                }
+                _ => &self.collision[k - 1],
+            };
+            (!elements.is_empty()).then(|| compound(elements))
+        });
     }
 
     /// Puts the arm at `theta` (inside the limits).
@@ -188,5 +214,25 @@ impl Simulator for KinematicSim {
 
     fn work(&self) -> SimWork {
         self.work
+    }
+
+    fn world(&self) -> WorldView<'_> {
+        self.world_at(&self.joints)
+    }
+}
+
+impl KinematicSim {
+    /// The world as the camera sees it (see [`Simulator::world`]) with the arm at pose `q`.
+    pub fn world_at(&self, q: &Joints) -> WorldView<'_> {
+        let frames = self.model.link_frames(q);
+        let poses = std::array::from_fn(|k| match k {
+            0 => Isometry3::identity(),
+            _ => frames[k - 1],
+        });
+        WorldView {
+            floor_z: self.settings.floor_z,
+            obstacles: &self.obstacles,
+            bodies: WorldView::place_bodies(&self.seen_shapes, &poses),
+        }
     }
 }

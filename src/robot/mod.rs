@@ -14,6 +14,7 @@ mod reach;
 mod simulator;
 mod tracking;
 mod urdf;
+mod world;
 
 pub use collision::DEFAULT_FLOOR_Z;
 pub use description::{Chain, DescriptionError, DescriptionOptions, RobotDescription};
@@ -27,3 +28,4 @@ pub use reach::ReachSpace;
 pub use simulator::{MoveReport, MoveSettings, SimWork, Simulator};
 pub use tracking::SetPointTracker;
 pub use urdf::{load_urdf, parse_urdf, DEFAULT_URDF, DEFAULT_URDF_NAME};
+pub use world::{Obstacle, RayHit, Surface, WorldView, SEEN_BODIES};

@@ -2,7 +2,7 @@
 //! or dynamic.
 
 use super::model::{ArmModel, Controlled, Joints};
-use super::{RobotError, DEFAULT_FLOOR_Z};
+use super::{RobotError, WorldView, DEFAULT_FLOOR_Z};
 use nalgebra::Isometry3;
 
 /// How commanded moves are executed.
@@ -95,6 +95,7 @@ pub trait Simulator: std::fmt::Debug {
 
     /// What the simulator has done so far.
     fn work(&self) -> SimWork;
+
     /// The simulator's clock tick (s): the physics step of a simulator that moves in
     /// ticks (the dynamic one), in which continuous servoing and a camera's frame times
     /// are counted; `None` for one without a clock (the kinematic one: its moves take no
@@ -116,6 +117,10 @@ pub trait Simulator: std::fmt::Debug {
     fn servo_tick(&mut self) -> bool {
         false
     }
+
+    /// The world around the arm as it is now, as the camera sees it: the floor, the
+    /// obstacles and the arm's bodies (but link 6 and the camera) where they are.
+    fn world(&self) -> WorldView<'_>;
 
     /// Starts (`true`) or stops keeping the joint angles of every physics tick, for a
     /// recording of the run; a simulator without physics ticks keeps none.

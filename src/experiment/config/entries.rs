@@ -2,7 +2,7 @@
 
 use super::ConfigErrorKind;
 use crate::control::ServoMode;
-use crate::experiment::config_values::{CameraKind, ConfigValue, SimKind};
+use crate::experiment::config_values::{CameraKind, ConfigValue, ObstacleBox, SimKind};
 use crate::learn::{MergeStrategy, Method};
 
 config_entries! {
@@ -210,4 +210,11 @@ config_entries! {
     add_threshold: f64,
     /// lwpr: outputs Δθ are learned divided by this (degrees).
     norm_out: f64,
+    ;
+    repeated {
+        /// A box standing in the world, `x,y,z,sx,sy,sz`: its centre and side lengths (cm,
+        /// world frame); zero or more lines. The ray-cast camera sees it, it can hide the
+        /// target, targets are never drawn inside it, and moves stop at it.
+        obstacle: ObstacleBox,
+    }
 }

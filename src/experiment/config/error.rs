@@ -139,6 +139,14 @@ pub enum ValueError {
     /// Not one of the entry's names (method, simulator, …); the message lists them.
     #[error("{0}")]
     UnknownChoice(String),
+    /// Not an obstacle box `x,y,z,sx,sy,sz` (cm) with sides above zero.
+    #[error("`{}` is not a box x,y,z,sx,sy,sz (cm): {reason}", shown(.text))]
+    NotObstacle {
+        /// The text given.
+        text: String,
+        /// What is wrong with it.
+        reason: String,
+    },
 }
 
 /// `text`, cut to its first characters when it is long, saying how long it was.

@@ -1,5 +1,6 @@
 //! The config file (the study's appendix A.2 format): `name value` lines, `#` comments and
-//! blank lines, in any order. Every entry must be given exactly once; an unknown name, a
+//! blank lines, in any order. Every entry must be given exactly once, but for the repeated
+//! ones (`obstacle`), given any number of times; an unknown name, a
 //! name given twice, a missing name, a value of the wrong kind (a real number for an
 //! integer), a value out of its sane range or against another entry, or one that would
 //! need more memory than the machine has stops with `file:line: reason`.
@@ -20,7 +21,7 @@ mod memory;
 mod validate;
 
 use entries::Entries;
-pub use entries::{Config, ENTRY_NAMES};
+pub use entries::{Config, ENTRY_NAMES, REPEATED_ENTRY_NAMES};
 pub(crate) use error::shown;
 pub use error::{ConfigError, ConfigErrorKind, ValueError};
 

@@ -8,22 +8,34 @@ pub use learners::{
     nnw_settings,
 };
 
-use super::{CameraKind, Config, SimKind};
+use super::{CameraKind, Config, ObstacleBox, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
 use crate::control::{CameraTiming, SensorNoise, TrialSettings};
 use crate::learn::{
     FfnLearner, IkLearner, KohonenLearner, LearnError, Learner, Lin5, Lin8, Lwpr, Method, Nnw,
 };
-use crate::robot::{ArmModel, DynamicSettings, DynamicSim, KinematicSim, MoveSettings, Simulator};
+use crate::robot::{
+    ArmModel, DynamicSettings, DynamicSim, KinematicSim, MoveSettings, Obstacle, Simulator,
+};
 use crate::units::M_PER_CM;
 use std::path::Path;
 
-/// The simulator the config names, moving `model`.
+/// The simulator the config names, moving `model` among the config's obstacles.
 pub fn build_simulator(config: &Config, model: ArmModel) -> Box<dyn Simulator> {
+    let obstacles = obstacles(config);
     match config.sim {
-        SimKind::Kinematic => Box::new(KinematicSim::new(model, move_settings(config))),
-        SimKind::Dynamic => Box::new(DynamicSim::new(model, dynamic_settings(config))),
+        SimKind::Kinematic => {
+            Box::new(KinematicSim::new(model, move_settings(config)).with_obstacles(obstacles))
+        }
+        SimKind::Dynamic => {
+            Box::new(DynamicSim::new(model, dynamic_settings(config)).with_obstacles(obstacles))
+        }
     }
+}
+
+/// The `obstacle` boxes (m).
+pub fn obstacles(config: &Config) -> Vec<Obstacle> {
+    config.obstacle.iter().map(ObstacleBox::obstacle).collect()
 }
 
 /// The camera the config names.

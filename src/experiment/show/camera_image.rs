@@ -1,21 +1,23 @@
 //! `camera_K.png`: the image the ray-cast camera sees from one pose of a trial. Each pixel
-//! of the camera's N×N grid records how much of it the target sphere covers
-//! (`RaycastCamera::render`), and that coverage is its grey level: a white sphere on a dark
-//! background (nothing else is in the scene yet), its rim in the grey of partly covered
-//! pixels. Under the image a caption strip gives the pose and its reading; the image
-//! centre is marked by a cyan cross drawn only over the background, so the blob's pixels
-//! stay exactly what the camera saw. Where the camera does not see the object (its reading
-//! fails), the image is left blank.
+//! of the camera's N×N grid shows the scene its centre ray meets (`RaycastCamera::
+//! render_scene`: the floor in dark tiles, obstacles light grey, the arm mid grey, empty
+//! space the background grey) and over it the part of the target sphere nothing hides
+//! (`RaycastCamera::render_in`): white in proportion to the pixel's coverage, its rim in
+//! the grey of partly covered pixels. Under the image a caption strip gives the pose and its
+//! reading; the image centre is marked by a cyan cross drawn only where the sphere is not,
+//! so the blob's pixels stay exactly what the camera saw. Where the camera does not see the
+//! object (its reading fails), the image shows the scene alone.
 
 use super::watch::Look;
-use crate::camera::{CameraModel, RaycastCamera};
+use crate::camera::{CameraModel, PixelCoverage, RaycastCamera, Scene};
 use crate::experiment::plot::{register_font, FAMILY};
 use plotters::prelude::*;
 use std::path::Path;
 
 /// Height of the caption strip under the image (px).
 pub const CAPTION_HEIGHT: u32 = 44;
-/// Grey level of the empty background.
+/// Grey level of the empty background (where a ray meets nothing); the floor's tiles are
+/// darker.
 pub const BACKGROUND_GREY: u8 = 40;
 /// Grey level of a pixel the sphere covers wholly; a partly covered pixel lies between
 /// this and the background in proportion to its coverage.
@@ -25,32 +27,45 @@ pub const CENTRE_MARK: RGBColor = RGBColor(0, 200, 255);
 /// Half-length of the centre cross's arms (px).
 const CROSS_ARM: i64 = 40;
 
-/// Writes the image seen at `look` to `path`, with `resolution` rays per image side (the
-/// ray-cast camera's own, or one ray per pixel) and `caption` under it.
+/// Writes the image seen at `look` in `scene` to `path`, with `resolution` rays per image
+/// side (the ray-cast camera's own, or one ray per pixel) and `caption` under it.
 pub fn write_camera_image(
     path: &Path,
     look: &Look,
     camera: &CameraModel,
     resolution: usize,
+    scene: &dyn Scene,
     caption: &[String],
 ) -> Result<(), String> {
     let (width, height) = (camera.width.round() as u32, camera.height.round() as u32);
-    let object = look.reading.is_ok().then(|| {
-        let local = look
-            .camera_pose
-            .inverse_transform_point(&look.object)
-            .coords;
-        blob_mask(camera, resolution, &local, width, height)
-    });
+    let rays = RaycastCamera::new(*camera, resolution);
+    let n = rays.resolution();
+    let mut background = vec![BACKGROUND_GREY; (width * height) as usize];
+    for (k, grey) in rays
+        .render_scene(&look.camera_pose, scene)
+        .iter()
+        .enumerate()
+    {
+        if let Some(grey) = *grey {
+            paint(&mut background, n, (k % n, k / n), (width, height), |_| {
+                grey
+            });
+        }
+    }
+    let mut image = background.clone();
+    if look.reading.is_ok() {
+        let blob = rays.render_in(&look.camera_pose, &look.object, scene);
+        paint_blob(&mut image, n, &blob, (width, height));
+    }
     register_font()?;
     let root = BitMapBackend::new(path, (width, height + CAPTION_HEIGHT)).into_drawing_area();
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     root.fill(&RGBColor(BACKGROUND_GREY, BACKGROUND_GREY, BACKGROUND_GREY))
         .map_err(e)?;
-    let grey_at = |x: u32, y: u32| {
-        object
-            .as_ref()
-            .map_or(BACKGROUND_GREY, |m| m[(y * width + x) as usize])
+    let grey_at = |x: u32, y: u32| image[(y * width + x) as usize];
+    let sphere_at = |x: u32, y: u32| {
+        let k = (y * width + x) as usize;
+        image[k] != background[k]
     };
     for y in 0..height {
         for x in 0..width {
@@ -69,7 +84,7 @@ pub fn write_camera_image(
             (cx - 1, cy + d),
             (cx, cy + d),
         ] {
-            if grey_at(x as u32, y as u32) == BACKGROUND_GREY {
+            if !sphere_at(x as u32, y as u32) {
                 root.draw_pixel((x as i32, y as i32), &CENTRE_MARK)
                     .map_err(e)?;
             }
@@ -97,9 +112,10 @@ pub fn write_camera_image(
 }
 
 /// The grey level of every pixel of a `width`×`height` image in which the camera with a
-/// `resolution` grid sees the object centred at `local` (camera frame), row by row: each
-/// camera pixel paints the image pixels whose centres fall in it, in the grey of its
-/// coverage.
+/// `resolution` grid sees the object centred at `local` (camera frame) and nothing else,
+/// row by row: each camera pixel paints the image pixels whose centres fall in it, in the
+/// grey of its coverage (the Rerun recording's camera image).
+#[cfg(feature = "rerun")]
 pub(crate) fn blob_mask(
     camera: &CameraModel,
     resolution: usize,
@@ -108,22 +124,46 @@ pub(crate) fn blob_mask(
     height: u32,
 ) -> Vec<u8> {
     let rays = RaycastCamera::new(*camera, resolution);
-    let n = rays.resolution() as f64;
     let mut mask = vec![BACKGROUND_GREY; (width * height) as usize];
+    paint_blob(
+        &mut mask,
+        rays.resolution(),
+        &rays.render(local),
+        (width, height),
+    );
+    mask
+}
+
+/// Paints the sphere's `pixels` (an `n`×`n` grid) over `image`: each lightens what is under
+/// it towards white in proportion to its coverage.
+fn paint_blob(image: &mut [u8], n: usize, pixels: &[PixelCoverage], size: (u32, u32)) {
+    for pixel in pixels {
+        paint(image, n, (pixel.column, pixel.row), size, |under| {
+            let span = f64::from(OBJECT_GREY - under);
+            under + (span * pixel.coverage).round() as u8
+        });
+    }
+}
+
+/// Sets the image pixels whose centres fall in camera pixel (`column`, `row`) of an `n`×`n`
+/// grid to `grey` of what they were.
+fn paint(
+    image: &mut [u8],
+    n: usize,
+    (column, row): (usize, usize),
+    (width, height): (u32, u32),
+    grey: impl Fn(u8) -> u8,
+) {
     let cells = |index: usize, size: u32| {
-        let cell = f64::from(size) / n;
+        let cell = f64::from(size) / n as f64;
         let first = (index as f64 * cell - 0.5).ceil().max(0.0) as u32;
         let end = (((index + 1) as f64 * cell - 0.5).ceil().max(0.0) as u32).min(size);
         first..end
     };
-    let span = f64::from(OBJECT_GREY - BACKGROUND_GREY);
-    for pixel in rays.render(local) {
-        let grey = BACKGROUND_GREY + (span * pixel.coverage).round() as u8;
-        for y in cells(pixel.row, height) {
-            for x in cells(pixel.column, width) {
-                mask[(y * width + x) as usize] = grey;
-            }
+    for y in cells(row, height) {
+        for x in cells(column, width) {
+            let at = (y * width + x) as usize;
+            image[at] = grey(image[at]);
         }
     }
-    mask
 }

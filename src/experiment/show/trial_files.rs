@@ -8,7 +8,9 @@ use super::replay::{replay, TrialTrace};
 use super::watch::Look;
 use super::{RecordedRun, ShowError, TrialRange};
 use crate::camera::CameraModel;
+use crate::experiment::setup::{move_settings, obstacles};
 use crate::experiment::CameraKind;
+use crate::robot::KinematicSim;
 use crate::units::MM_PER_M;
 use nalgebra::{Point3, Vector3};
 use serde_json::json;
@@ -44,7 +46,14 @@ pub fn show_trials(run_dir: &Path, range: TrialRange) -> Result<ShowReport, Show
         |trace| {
             let folder = scratch.join(trace.trial.to_string());
             create(&folder)?;
-            report.camera_images += write_trial(&folder, &trace, &camera, resolution, run_dir)?;
+            let scene = KinematicSim::new(trace.model.clone(), move_settings(&run.config))
+                .with_obstacles(obstacles(&run.config));
+            let view = View {
+                camera: &camera,
+                resolution,
+                scene: &scene,
+            };
+            report.camera_images += write_trial(&folder, &trace, &view, run_dir)?;
             report.folders.push(folder);
             Ok(())
         },
@@ -72,19 +81,29 @@ fn create(folder: &Path) -> Result<(), ShowError> {
     })
 }
 
+/// How a trial's camera images are drawn: the camera, its rays per image side, and the
+/// world of the trial (the arm as it was, the floor and the obstacles), placed at each look.
+struct View<'a> {
+    camera: &'a CameraModel,
+    resolution: usize,
+    scene: &'a KinematicSim,
+}
+
 /// Writes one trial's files; returns the camera images written.
 fn write_trial(
     folder: &Path,
     trace: &TrialTrace,
-    camera: &CameraModel,
-    resolution: usize,
+    view: &View,
     run_dir: &Path,
 ) -> Result<usize, ShowError> {
     let failed = |path: PathBuf| move |reason: String| ShowError::Write { path, reason };
+    let camera = view.camera;
     for (k, look) in trace.looks.iter().enumerate() {
         let path = folder.join(format!("camera_{k}.png"));
         let caption = caption(trace.trial, k, look, camera);
-        write_camera_image(&path, look, camera, resolution, &caption).map_err(failed(path))?;
+        let world = view.scene.world_at(&look.joints);
+        write_camera_image(&path, look, camera, view.resolution, &world, &caption)
+            .map_err(failed(path))?;
     }
     let path = folder.join("arm.png");
     write_arm_image(&path, trace, &arm_title(run_dir, trace)).map_err(failed(path))?;

@@ -3,8 +3,10 @@
 //! on the dynamic simulator, its physics ticks) is written down. The wrappers pass every
 //! call through unchanged, so the replay does exactly what the run did.
 
-use crate::camera::{Camera, CameraModel, NotSeen};
-use crate::robot::{ArmModel, Controlled, Joints, MoveReport, RobotError, SimWork, Simulator};
+use crate::camera::{Camera, CameraModel, NotSeen, Scene};
+use crate::robot::{
+    ArmModel, Controlled, Joints, MoveReport, RobotError, SimWork, Simulator, WorldView,
+};
 use nalgebra::{Isometry3, Point3, Vector3};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -127,6 +129,10 @@ impl Simulator for WatchedSim {
         self.inner.work()
     }
 
+    fn world(&self) -> WorldView<'_> {
+        self.inner.world()
+    }
+
     fn keep_ticks(&mut self, keep: bool) {
         self.inner.keep_ticks(keep);
     }
@@ -179,12 +185,13 @@ impl Camera for WatchedCamera {
         self.inner.model()
     }
 
-    fn read(
+    fn read_in(
         &self,
         camera_pose: &Isometry3<f64>,
         object: &Point3<f64>,
+        scene: &dyn Scene,
     ) -> Result<Vector3<f64>, NotSeen> {
-        let reading = self.inner.read(camera_pose, object);
+        let reading = self.inner.read_in(camera_pose, object, scene);
         let mut log = self.log.borrow_mut();
         let (joints, sim_time) = (log.joints, log.sim_time);
         log.looks.push(Look {

@@ -16,7 +16,7 @@ pub(super) fn collider(elements: &[(Isometry3<f64>, Shape)]) -> ColliderBuilder 
 }
 
 /// The collision elements as one shape.
-pub(super) fn compound(elements: &[(Isometry3<f64>, Shape)]) -> SharedShape {
+pub(in crate::robot) fn compound(elements: &[(Isometry3<f64>, Shape)]) -> SharedShape {
     SharedShape::compound(
         elements
             .iter()

@@ -5,7 +5,7 @@
 
 use super::builder::Arm;
 use super::convert::to_pose;
-use crate::robot::ArmModel;
+use crate::robot::{ArmModel, Obstacle};
 use nalgebra::Isometry3;
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::parry::query::intersection_test;
@@ -63,6 +63,25 @@ impl Arm {
             .get_multibody_mut(self.multibody)
         {
             mb.set_self_contacts_enabled(true);
+        }
+    }
+
+    /// Adds `obstacles` as fixed boxes the links (not the base) collide with, as with the
+    /// floor.
+    pub(super) fn add_obstacles(&mut self, obstacles: &[Obstacle]) {
+        let ground = self.world.insert_body(RigidBodyBuilder::fixed());
+        let mut filter = Group::ALL;
+        filter.remove(Group::from_bits_retain(1));
+        for obstacle in obstacles {
+            let (pose, cuboid) = obstacle.parts();
+            let collider = ColliderBuilder::cuboid(
+                cuboid.half_extents.x,
+                cuboid.half_extents.y,
+                cuboid.half_extents.z,
+            )
+            .position(pose)
+            .collision_groups(groups(FLOOR, filter));
+            self.world.insert_collider(collider, Some(ground));
         }
     }
 

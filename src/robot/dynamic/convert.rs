@@ -4,7 +4,7 @@ use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use rapier3d_f64::math::{Pose, Rotation, Vector};
 
 /// A nalgebra isometry as a Rapier pose.
-pub(super) fn to_pose(iso: &Isometry3<f64>) -> Pose {
+pub(in crate::robot) fn to_pose(iso: &Isometry3<f64>) -> Pose {
     let q = iso.rotation.quaternion();
     Pose::from_parts(
         to_vector(&iso.translation.vector),
@@ -13,7 +13,7 @@ pub(super) fn to_pose(iso: &Isometry3<f64>) -> Pose {
 }
 
 /// A Rapier pose as a nalgebra isometry.
-pub(super) fn to_isometry(pose: &Pose) -> Isometry3<f64> {
+pub(in crate::robot) fn to_isometry(pose: &Pose) -> Isometry3<f64> {
     let r = pose.rotation;
     Isometry3::from_parts(
         Translation3::from(from_vector(pose.translation)),
@@ -22,7 +22,7 @@ pub(super) fn to_isometry(pose: &Pose) -> Isometry3<f64> {
 }
 
 /// A nalgebra vector as a glam vector.
-pub(super) fn to_vector(v: &Vector3<f64>) -> Vector {
+pub(in crate::robot) fn to_vector(v: &Vector3<f64>) -> Vector {
     Vector::new(v.x, v.y, v.z)
 }
 

@@ -15,6 +15,8 @@ mod settings;
 mod settle;
 mod sim;
 
+pub(super) use colliders::compound;
+pub(super) use convert::{to_pose, to_vector};
 pub use free::{Drive, FreeArm};
 pub use settings::DynamicSettings;
 pub use sim::{DynamicSim, SimCounters};

@@ -45,8 +45,8 @@ use super::convert::{to_isometry, to_pose};
 use super::inertia::Inertial;
 use super::settings::DynamicSettings;
 use crate::robot::{
-    ArmModel, Controlled, Joints, KinematicSim, MoveReport, RobotError, SetPointTracker, SimWork,
-    Simulator,
+    ArmModel, Controlled, Joints, KinematicSim, MoveReport, Obstacle, RobotError, SetPointTracker,
+    SimWork, Simulator, WorldView,
 };
 use nalgebra::Isometry3;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -127,6 +127,14 @@ impl DynamicSim {
         sim.arm.teleport(&start);
         sim.settle();
         sim
+    }
+
+    /// This simulator with `obstacles` standing in its world: solid for the arm (a move
+    /// into one stops at contact) and seen by the camera.
+    pub fn with_obstacles(mut self, obstacles: Vec<Obstacle>) -> DynamicSim {
+        self.arm.add_obstacles(&obstacles);
+        self.plan = self.plan.with_obstacles(obstacles);
+        self
     }
 
     /// The simulator's work so far.
@@ -255,6 +263,18 @@ impl Simulator for DynamicSim {
 
     fn servo_tick(&mut self) -> bool {
         self.servo_step()
+    }
+
+    fn world(&self) -> WorldView<'_> {
+        let plan = self.plan.world();
+        let colliders = &self.arm.world.colliders;
+        WorldView {
+            bodies: std::array::from_fn(|k: usize| {
+                let collider = colliders.get(self.arm.colliders[k]?)?;
+                Some((*collider.position(), collider.shared_shape()))
+            }),
+            ..plan
+        }
     }
 
     fn keep_ticks(&mut self, keep: bool) {

@@ -1,6 +1,7 @@
 //! The kinematic simulator: forward kinematics straight from the URDF, no dynamics. A move
 //! is instant in wall time; its simulated duration follows the trapezoidal profile.
 
+use super::clearance::ArmGeometry;
 use super::collision::{body_elements, floor_stop, reach, Elements};
 use super::dynamic::compound;
 use super::model::{ArmModel, Controlled, Joints};
@@ -28,6 +29,8 @@ pub struct KinematicSim {
     seen_shapes: [Option<SharedShape>; SEEN_BODIES],
     /// The obstacle boxes in the world.
     obstacles: Vec<Obstacle>,
+    /// The bodies for the self-collision and obstacle rule.
+    geometry: ArmGeometry,
     work: SimWork,
     /// The camera's pose at `joints`, kept with them.
     camera: Isometry3<f64>,
@@ -50,6 +53,7 @@ impl KinematicSim {
             reach: 0.0,
             seen_shapes: Default::default(),
             obstacles: Vec::new(),
+            geometry: ArmGeometry::default(),
             work: SimWork::default(),
         };
         sim.refresh_collision();
@@ -66,6 +70,7 @@ impl KinematicSim {
     fn refresh_collision(&mut self) {
         self.collision = std::array::from_fn(|k| body_elements(&self.model, k + 1));
         self.reach = reach(&self.model, &self.collision);
+        self.geometry = ArmGeometry::new(&self.model);
         self.seen_shapes = std::array::from_fn(|k| {
             let base;
             let elements = match k {
@@ -160,8 +165,16 @@ impl Simulator for KinematicSim {
             fraction,
             self.settings.floor_z,
         );
-        if floor < fraction {
-            fraction = floor;
+        let touch = self.geometry.contact_stop(
+            &self.model,
+            self.reach,
+            &self.theta,
+            delta,
+            floor.min(fraction),
+            &self.obstacles,
+        );
+        if touch < fraction {
+            fraction = touch;
             report.stopped_by_limit = None;
             report.stopped_by_contact = true;
             self.work.contact_stops += 1;

@@ -1,6 +1,7 @@
 //! The OSCAR-6 arm: its URDF model and forward kinematics, inverse kinematics for the
 //! camera position, the reach space, moves, and the simulators behind one trait.
 
+mod clearance;
 mod collision;
 pub mod description;
 mod dynamic;

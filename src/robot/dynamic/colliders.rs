@@ -27,7 +27,7 @@ pub(in crate::robot) fn compound(elements: &[(Isometry3<f64>, Shape)]) -> Shared
 
 /// The Rapier pose and shape of a URDF collision element. URDF cylinders run along z,
 /// parry's along y: they are turned by 90° about x.
-pub(super) fn parts(
+pub(in crate::robot) fn parts(
     pose: &Isometry3<f64>,
     shape: &Shape,
 ) -> (rapier3d_f64::math::Pose, SharedShape) {

@@ -1,14 +1,14 @@
-//! The world around the arm: a floor, and contacts between links that are not neighbours
-//! in the chain and do not already touch at the zero pose (the wrist's three links share
-//! its centre). A link that digs into the floor or another link stops a move, as a joint
-//! limit does.
+//! The world around the arm: a floor, obstacle boxes, and contacts between the links the
+//! shared rule lets touch (not neighbours in the chain, apart at the zero pose:
+//! robot/clearance.rs). The plan already stops a move where the kinematic rule finds
+//! contact; a link that still digs into the floor, an obstacle or another link stops a
+//! move, as a joint limit does.
 
 use super::builder::Arm;
-use super::convert::to_pose;
+use crate::robot::clearance::contact_pairs;
+use crate::robot::collision::body_elements;
 use crate::robot::{ArmModel, Obstacle};
-use nalgebra::Isometry3;
 use rapier3d_f64::math::Vector;
-use rapier3d_f64::parry::query::intersection_test;
 use rapier3d_f64::prelude::nalgebra::Unit;
 use rapier3d_f64::prelude::{
     ColliderBuilder, Group, InteractionGroups, InteractionTestMode, RigidBodyBuilder,
@@ -24,25 +24,17 @@ impl Arm {
     /// Adds the floor at height `floor_z` (m; none when not finite) and turns on contacts
     /// between the links that may meet.
     pub(super) fn add_world(&mut self, model: &ArmModel, floor_z: f64) {
-        let mut filters = [Group::ALL; 8];
-        let poses = model.link_frames(&crate::robot::Joints::zeros());
-        let pose_of = |k: usize| {
-            if k == 0 {
-                Isometry3::identity()
-            } else {
-                poses[k - 1]
-            }
-        };
-        for i in 0..7 {
-            for j in i + 1..7 {
-                if j == i + 1 || self.touch(i, j, &pose_of(i), &pose_of(j)) {
-                    filters[i].remove(Group::from_bits_retain(1 << j));
-                    filters[j].remove(Group::from_bits_retain(1 << i));
-                }
-            }
+        // Links meet the floor and obstacles (group 7), and the bodies the shared rule lets
+        // touch (robot/clearance.rs).
+        let mut filters = [Group::from_bits_retain(1 << FLOOR); 8];
+        filters[FLOOR as usize] = Group::ALL;
+        filters[0] = Group::empty();
+        let elements = std::array::from_fn(|k| body_elements(model, k));
+        for (i, j) in contact_pairs(model, &elements) {
+            filters[i].insert(Group::from_bits_retain(1 << j));
+            filters[j].insert(Group::from_bits_retain(1 << i));
         }
         // The base stands on its pedestal above the floor.
-        filters[0].remove(Group::from_bits_retain(1 << FLOOR));
         filters[FLOOR as usize].remove(Group::from_bits_retain(1));
         for (k, handle) in self.colliders.iter().enumerate() {
             if let Some(collider) = handle.and_then(|h| self.world.colliders.get_mut(h)) {
@@ -98,22 +90,6 @@ impl Arm {
             .get_multibody_mut(self.multibody)
         {
             mb.set_self_contacts_enabled(false);
-        }
-    }
-
-    /// True when bodies `i` and `j`, at these world poses, overlap.
-    fn touch(&self, i: usize, j: usize, at_i: &Isometry3<f64>, at_j: &Isometry3<f64>) -> bool {
-        let shape = |k: usize| {
-            self.colliders[k]
-                .and_then(|h| self.world.colliders.get(h))
-                .map(|c| c.shared_shape().clone())
-        };
-        match (shape(i), shape(j)) {
-            (Some(a), Some(b)) => {
-                intersection_test(&to_pose(at_i), a.as_ref(), &to_pose(at_j), b.as_ref())
-                    .map_or(true, |hit| hit.intersecting)
-            }
-            _ => false,
         }
     }
 

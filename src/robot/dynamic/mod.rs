@@ -15,7 +15,7 @@ mod settings;
 mod settle;
 mod sim;
 
-pub(super) use colliders::compound;
+pub(super) use colliders::{compound, parts};
 pub(super) use convert::{to_pose, to_vector};
 pub use free::{Drive, FreeArm};
 pub use settings::DynamicSettings;

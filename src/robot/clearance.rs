@@ -1,0 +1,339 @@
+//! How far the arm is from touching itself or an obstacle, and where a move first would:
+//! the self-collision and obstacle rule both simulators share (the dynamic one plans its
+//! moves with it, then its own contacts are the backstop).
+//!
+//! Which links may touch: those that are not neighbours in the chain and do not already
+//! touch at the zero pose (the wrist's three links share its centre). Every link but the
+//! base may touch an obstacle.
+//!
+//! Cheap first: each collision element is held by a capsule (a cylinder or capsule by its
+//! own segment, a box by its longest axis, a ball by its centre), and the distance between
+//! capsules, or between a link's and an obstacle's bounding boxes, bounds the true distance
+//! from below. Only a pair whose bound is under [`NEAR`] is measured exactly (parry).
+
+use super::collision::{body_elements, Elements};
+use super::dynamic::{parts, to_pose};
+use super::world::Obstacle;
+use super::{ArmModel, Controlled, Joints, Shape};
+use nalgebra::{Isometry3, Point3, Vector3};
+use rapier3d_f64::math::Pose;
+use rapier3d_f64::parry::query::{distance, intersection_test};
+use rapier3d_f64::parry::shape::SharedShape;
+
+/// A pair whose distance bound is under this (m) is measured exactly.
+const NEAR: f64 = 0.01;
+/// The shortest step of the march (a fraction of the move).
+const MIN_MARCH: f64 = 1e-3;
+/// Bisection steps that find where a move meets contact (1e-12 of a move).
+const BISECTIONS: usize = 40;
+/// Bodies: the base and links 1–6 (the camera on link 6).
+const BODIES: usize = 7;
+
+/// A collision element: its parry shape at its pose in the body frame, and the capsule that
+/// holds it (segment ends in the body frame, radius).
+#[derive(Debug, Clone)]
+struct Part {
+    pose: Pose,
+    shape: SharedShape,
+    ends: [Point3<f64>; 2],
+    radius: f64,
+}
+
+/// The arm's bodies as parts, and the pairs of bodies that may touch.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct ArmGeometry {
+    bodies: [Vec<Part>; BODIES],
+    pairs: Vec<(usize, usize)>,
+}
+
+impl ArmGeometry {
+    /// The geometry of `model` as it is now.
+    pub(crate) fn new(model: &ArmModel) -> ArmGeometry {
+        let bodies = std::array::from_fn(|k| body_elements(model, k).iter().map(part).collect());
+        let pairs = contact_pairs(model, &std::array::from_fn(|k| body_elements(model, k)));
+        ArmGeometry { bodies, pairs }
+    }
+
+    /// The smallest distance (m) between two bodies that may touch, or a link and an
+    /// obstacle, with the arm at `q`: exact under [`NEAR`], a lower bound above it; 0 when
+    /// something touches.
+    pub(crate) fn gap(&self, model: &ArmModel, q: &Joints, obstacles: &[Obstacle]) -> f64 {
+        let links = model.link_frames(q);
+        let frames: [Isometry3<f64>; BODIES] = std::array::from_fn(|k| match k {
+            0 => Isometry3::identity(),
+            _ => links[k - 1],
+        });
+        let mut gap = f64::INFINITY;
+        for &(i, j) in &self.pairs {
+            for a in &self.bodies[i] {
+                for b in &self.bodies[j] {
+                    gap = gap.min(part_gap(a, &frames[i], b, &frames[j]));
+                }
+            }
+        }
+        for obstacle in obstacles {
+            let (pose, cuboid) = obstacle.parts();
+            for (k, frame) in frames.iter().enumerate().skip(1) {
+                for a in &self.bodies[k] {
+                    gap = gap.min(obstacle_gap(a, frame, obstacle, &pose, &cuboid));
+                }
+            }
+        }
+        gap
+    }
+
+    /// How far along the controlled move from `theta` by `delta` (fractions up to `up_to`)
+    /// the arm gets before two of its bodies or a link and an obstacle touch: `up_to` when
+    /// none do, or when they already touch at the start. Marches in steps no pair can close
+    /// in (each no longer than the gap over twice `reach` allows), then bisects the contact.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn contact_stop(
+        &self,
+        model: &ArmModel,
+        reach: f64,
+        theta: &Controlled,
+        delta: &Controlled,
+        up_to: f64,
+        obstacles: &[Obstacle],
+    ) -> f64 {
+        let gap = |s: f64| self.gap(model, &model.full_pose(&(theta + delta * s)), obstacles);
+        // Two bodies close in at most twice as fast as one moves; θ5 turns by at most
+        // the sum of θ2's and θ3's turns.
+        let speed = 2.0 * reach * (delta.abs().sum() + (delta.y.abs() + delta.z.abs()));
+        let (mut s, mut now) = (0.0, gap(0.0));
+        if now.is_nan() || now <= 0.0 || speed == 0.0 {
+            return up_to;
+        }
+        while s < up_to {
+            if now >= speed * (up_to - s) {
+                return up_to; // the rest of the move cannot close the gap
+            }
+            let next = (s + (now / speed).max(MIN_MARCH)).min(up_to);
+            let then = gap(next);
+            if then <= 0.0 {
+                let (mut apart, mut touching) = (s, next);
+                for _ in 0..BISECTIONS {
+                    let middle = 0.5 * (apart + touching);
+                    if gap(middle) <= 0.0 {
+                        touching = middle;
+                    } else {
+                        apart = middle;
+                    }
+                }
+                return apart;
+            }
+            (s, now) = (next, then);
+        }
+        up_to
+    }
+}
+
+/// The pairs of bodies (0 the base, 1–6 the links) that may touch: not neighbours in the
+/// chain, and apart at the zero pose.
+pub(crate) fn contact_pairs(model: &ArmModel, bodies: &[Elements; BODIES]) -> Vec<(usize, usize)> {
+    let links = model.link_frames(&Joints::zeros());
+    let frame = |k: usize| match k {
+        0 => Isometry3::identity(),
+        _ => links[k - 1],
+    };
+    let touch = |i: usize, j: usize| {
+        bodies[i].iter().any(|(p, s)| {
+            bodies[j].iter().any(|(q, t)| {
+                let (a, shape_a) = parts(&(frame(i) * p), s);
+                let (b, shape_b) = parts(&(frame(j) * q), t);
+                intersection_test(&a, shape_a.as_ref(), &b, shape_b.as_ref())
+                    .map_or(true, |hit| hit.intersecting)
+            })
+        })
+    };
+    let mut pairs = Vec::new();
+    for i in 0..BODIES {
+        for j in i + 2..BODIES {
+            if !bodies[i].is_empty() && !bodies[j].is_empty() && !touch(i, j) {
+                pairs.push((i, j));
+            }
+        }
+    }
+    pairs
+}
+
+/// An element as a part: its parry shape and the capsule that holds it.
+fn part((pose, shape): &(Isometry3<f64>, Shape)) -> Part {
+    let along = |half: f64, axis: Vector3<f64>| {
+        [
+            pose * Point3::from(axis * -half),
+            pose * Point3::from(axis * half),
+        ]
+    };
+    let (ends, radius) = match *shape {
+        Shape::Sphere { radius } => (along(0.0, Vector3::z()), radius),
+        Shape::Cylinder { radius, length } | Shape::Capsule { radius, length } => {
+            (along(0.5 * length, Vector3::z()), radius)
+        }
+        Shape::Cuboid(size) => {
+            let long = size.imax();
+            let across = (size.norm_squared() - size[long] * size[long]).sqrt();
+            (
+                along(0.5 * size[long], Vector3::ith(long, 1.0)),
+                0.5 * across,
+            )
+        }
+    };
+    let (pose, shape) = parts(pose, shape);
+    Part {
+        pose,
+        shape,
+        ends,
+        radius,
+    }
+}
+
+/// The distance between parts `a` and `b` of bodies at `at_a` and `at_b`: the capsules'
+/// when that is at least [`NEAR`], else the shapes' own.
+fn part_gap(a: &Part, at_a: &Isometry3<f64>, b: &Part, at_b: &Isometry3<f64>) -> f64 {
+    let [p, q] = a.ends.map(|e| at_a * e);
+    let [r, s] = b.ends.map(|e| at_b * e);
+    let bound = segment_distance(&p, &q, &r, &s) - a.radius - b.radius;
+    if bound >= NEAR {
+        return bound;
+    }
+    exact(
+        &(to_pose(at_a) * a.pose),
+        a.shape.as_ref(),
+        &(to_pose(at_b) * b.pose),
+        b.shape.as_ref(),
+    )
+}
+
+/// The distance between part `a` of a body at `at` and `obstacle` (its pose and box): the
+/// gap between their bounding boxes when that is at least [`NEAR`], else the exact one.
+fn obstacle_gap(
+    a: &Part,
+    at: &Isometry3<f64>,
+    obstacle: &Obstacle,
+    pose: &Pose,
+    cuboid: &rapier3d_f64::parry::shape::Cuboid,
+) -> f64 {
+    let [p, q] = a.ends.map(|e| at * e);
+    let reach = Vector3::repeat(a.radius);
+    let (low, high) = (p.inf(&q) - reach, p.sup(&q) + reach);
+    let half = obstacle.size * 0.5;
+    let outside = ((obstacle.centre - half) - high)
+        .sup(&(low - (obstacle.centre + half)))
+        .sup(&Vector3::zeros());
+    let bound = outside.norm();
+    if bound >= NEAR {
+        return bound;
+    }
+    exact(&(to_pose(at) * a.pose), a.shape.as_ref(), pose, cuboid)
+}
+
+/// The exact distance between two shapes (0 when they touch; the bound 0 when parry cannot
+/// measure the pair).
+fn exact(
+    a: &Pose,
+    shape_a: &dyn rapier3d_f64::parry::shape::Shape,
+    b: &Pose,
+    shape_b: &dyn rapier3d_f64::parry::shape::Shape,
+) -> f64 {
+    distance(a, shape_a, b, shape_b).map_or(0.0, |d| d.distance)
+}
+
+/// The distance between segments `p`–`q` and `r`–`s`: the closest points' parameters are
+/// found on the segments' lines, clamped to the segments, and the other re-found.
+fn segment_distance(p: &Point3<f64>, q: &Point3<f64>, r: &Point3<f64>, s: &Point3<f64>) -> f64 {
+    let (d1, d2, w) = (q - p, s - r, p - r);
+    let (a, e, f) = (d1.norm_squared(), d2.norm_squared(), d2.dot(&w));
+    let tiny = 1e-18;
+    let (t1, t2) = if a <= tiny && e <= tiny {
+        (0.0, 0.0)
+    } else if a <= tiny {
+        (0.0, (f / e).clamp(0.0, 1.0))
+    } else {
+        let c = d1.dot(&w);
+        if e <= tiny {
+            ((-c / a).clamp(0.0, 1.0), 0.0)
+        } else {
+            let b = d1.dot(&d2);
+            let denominator = a * e - b * b;
+            let mut t1 = if denominator > tiny {
+                ((b * f - c * e) / denominator).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let mut t2 = (b * t1 + f) / e;
+            if t2 < 0.0 {
+                t2 = 0.0;
+                t1 = (-c / a).clamp(0.0, 1.0);
+            } else if t2 > 1.0 {
+                t2 = 1.0;
+                t1 = ((b - c) / a).clamp(0.0, 1.0);
+            }
+            (t1, t2)
+        }
+    };
+    ((p + d1 * t1) - (r + d2 * t2)).norm()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn segment_distances() {
+        let o = Point3::origin();
+        let x = Point3::new(1.0, 0.0, 0.0);
+        let across = |z: f64| (Point3::new(0.5, -1.0, z), Point3::new(0.5, 1.0, z));
+        let (r, s) = across(0.3);
+        assert!((segment_distance(&o, &x, &r, &s) - 0.3).abs() < 1e-15);
+        // Parallel, overlapping along x, 0.2 apart.
+        let (r, s) = (Point3::new(0.5, 0.2, 0.0), Point3::new(2.0, 0.2, 0.0));
+        assert!((segment_distance(&o, &x, &r, &s) - 0.2).abs() < 1e-15);
+        // End to end.
+        let (r, s) = (Point3::new(2.0, 0.0, 0.0), Point3::new(3.0, 0.0, 0.0));
+        assert!((segment_distance(&o, &x, &r, &s) - 1.0).abs() < 1e-15);
+        // A point against a segment.
+        assert!((segment_distance(&o, &o, &r, &s) - 2.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn capsules_hold_their_shapes_and_bound_the_distance_from_below() {
+        let model = ArmModel::oscar6();
+        let geometry = ArmGeometry::new(&model);
+        // The upper arm and the wrist, the column and the forearm may meet; neighbours and
+        // the wrist's links, which share its centre, may not.
+        for pair in [(2, 4), (1, 3), (2, 6)] {
+            assert!(
+                geometry.pairs.contains(&pair),
+                "{pair:?}: {:?}",
+                geometry.pairs
+            );
+        }
+        for pair in [(1, 2), (4, 6), (4, 5)] {
+            assert!(!geometry.pairs.contains(&pair), "{pair:?}");
+        }
+        let q = model.full_pose(&Controlled::new(0.2, 0.4, 1.9));
+        let bound = geometry.gap(&model, &q, &[]);
+        assert!(bound > 0.0);
+        let at = |k: usize| model.link_frames(&q)[k - 1];
+        for &(i, j) in geometry.pairs.iter().filter(|(i, _)| *i > 0) {
+            for a in &geometry.bodies[i] {
+                for b in &geometry.bodies[j] {
+                    let [p, q] = a.ends.map(|e| at(i) * e);
+                    let [r, s] = b.ends.map(|e| at(j) * e);
+                    let capsules = segment_distance(&p, &q, &r, &s) - a.radius - b.radius;
+                    let true_gap = exact(
+                        &(to_pose(&at(i)) * a.pose),
+                        a.shape.as_ref(),
+                        &(to_pose(&at(j)) * b.pose),
+                        b.shape.as_ref(),
+                    );
+                    assert!(
+                        capsules <= true_gap + 1e-12,
+                        "{i}-{j}: {capsules} > {true_gap}"
+                    );
+                }
+            }
+        }
+    }
+}

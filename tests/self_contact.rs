@@ -9,11 +9,12 @@ use eyehand::robot::{
 };
 use nalgebra::{Point3, Vector3};
 
-/// From θ2 = 20°, θ3 = 90° the elbow folds to 170° (inside its limit): the wrist and
-/// camera come down onto the upper arm on the way.
+/// With the upper arm raised to θ2 = 76° the elbow folds from 90° to 170° (inside its
+/// limit): the wrist comes down onto the upper arm at about 166° (lower, it would meet the
+/// column first; the shared rule stops either).
 fn folding() -> (Controlled, Controlled) {
-    let start = Controlled::new(0.0, 20f64.to_radians(), 90f64.to_radians());
-    let end = Controlled::new(0.0, 20f64.to_radians(), 170f64.to_radians());
+    let start = Controlled::new(0.0, 76f64.to_radians(), 90f64.to_radians());
+    let end = Controlled::new(0.0, 76f64.to_radians(), 170f64.to_radians());
     (start, end - start)
 }
 
@@ -34,7 +35,7 @@ fn both_stop(start: Controlled, delta: Controlled, obstacles: Vec<Obstacle>) -> 
             "{name}: {report:?}"
         );
         assert!(
-            report.executed.norm() < 0.95 * delta.norm(),
+            report.executed.norm() < 0.97 * delta.norm(),
             "{name}: {report:?}"
         );
     }
@@ -55,9 +56,9 @@ fn both_stop(start: Controlled, delta: Controlled, obstacles: Vec<Obstacle>) -> 
 fn folding_the_wrist_onto_the_upper_arm_stops_at_contact_in_both_simulators() {
     let (start, delta) = folding();
     let [kinematic, _] = both_stop(start, delta, vec![]);
-    // The elbow stopped well short of 170°, past 150°.
+    // The elbow stopped short of 170°, where the wrist sphere meets the upper arm.
     let elbow = (start.z + kinematic.executed.z).to_degrees();
-    assert!(elbow > 150.0 && elbow < 168.0, "elbow at {elbow}°");
+    assert!(elbow > 165.0 && elbow < 167.0, "elbow at {elbow}°");
 }
 
 #[test]

@@ -13,7 +13,8 @@
 use eyehand::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
 use eyehand::experiment::{run, CameraKind, Config, RunOptions, RunSummary};
 use eyehand::learn::Method;
-use nalgebra::Vector3;
+use eyehand::robot::{ArmModel, KinematicSim, MoveSettings, Obstacle, Simulator};
+use nalgebra::{Point3, Vector3};
 use std::time::Instant;
 
 const TRIALS: usize = 20_000;
@@ -102,6 +103,61 @@ fn micros_per_read(camera: &dyn Camera) -> f64 {
     started.elapsed().as_secs_f64() * 1e6 / reads as f64
 }
 
+/// Microseconds per read of `camera` in the world of `sim` (the world lent anew for each
+/// read, as the trial loop does), looking from the arm's camera at `objects` in turn.
+fn micros_per_read_in(camera: &dyn Camera, sim: &KinematicSim, objects: &[Point3<f64>]) -> f64 {
+    let pose = sim.camera_pose();
+    let reads = 3_000;
+    let started = Instant::now();
+    let mut sink = 0.0;
+    for k in 0..reads {
+        let object = &objects[k % objects.len()];
+        sink += camera
+            .read_in(&pose, object, &sim.world())
+            .map_or(0.0, |c| c.x);
+    }
+    std::hint::black_box(sink);
+    started.elapsed().as_secs_f64() * 1e6 / reads as f64
+}
+
+/// The read costs in the world: the arm, the floor and, for the last rows, a box that hides
+/// the left part of the target.
+fn world_read_rows(model: CameraModel) {
+    let arm = ArmModel::oscar6();
+    let centre = Point3::new(0.7, 0.1, 0.25);
+    let theta = arm.solve_camera_position(&centre).expect("in reach");
+    let mut sim = KinematicSim::new(arm, MoveSettings::from_degrees(90.0, 180.0));
+    sim.place(&theta).expect("inside the limits");
+    let at = sim.camera_pose().translation.vector;
+    let below = |dx: f64, dy: f64, depth: f64| Point3::new(at.x + dx, at.y + dy, at.z - depth);
+    let objects = [
+        below(0.0, 0.0, 0.2),
+        below(0.02, -0.01, 0.25),
+        below(-0.05, 0.04, 0.4),
+    ];
+    let projection = ProjectionCamera::new(model);
+    let rays = RaycastCamera::new(model, 256);
+    println!(
+        "| projection, in the world (arm, floor) | {:.2} |",
+        micros_per_read_in(&projection, &sim, &objects)
+    );
+    println!(
+        "| raycast 256, in the world (arm, floor) | {:.1} |",
+        micros_per_read_in(&rays, &sim, &objects)
+    );
+    // A box 5 cm under the camera whose face passes just beside the optical axis.
+    let half_hidden = [below(0.0, 0.0, 0.2)];
+    let block = Obstacle {
+        centre: Point3::new(at.x - 0.049, at.y, at.z - 0.1),
+        size: Vector3::new(0.1, 0.1, 0.1),
+    };
+    let sim = sim.with_obstacles(vec![block]);
+    println!(
+        "| raycast 256, target partly hidden by a box | {:.1} |",
+        micros_per_read_in(&rays, &sim, &half_hidden)
+    );
+}
+
 fn read_cost_table() {
     let model = CameraModel::default();
     println!("| camera | µs per read |");
@@ -120,6 +176,7 @@ fn read_cost_table() {
             micros_per_read(&RaycastCamera::new(model, resolution).with_pixel_noise(0.05, 1))
         );
     }
+    world_read_rows(model);
 }
 
 fn main() {

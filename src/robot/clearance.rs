@@ -9,7 +9,10 @@
 //! Cheap first: each collision element is held by a capsule (a cylinder or capsule by its
 //! own segment, a box by its longest axis, a ball by its centre), and the distance between
 //! capsules, or between a link's and an obstacle's bounding boxes, bounds the true distance
-//! from below. Only a pair whose bound is under [`NEAR`] is measured exactly (parry).
+//! from below. Only a pair whose bound is under [`NEAR`] is measured exactly (parry). A
+//! move is marched in steps no pair can close its gap in, from the turns of the joints
+//! between the two and how far the nearer end reaches: small moves far from contact cost
+//! one look.
 
 use super::collision::{body_elements, Elements};
 use super::dynamic::{parts, to_pose};
@@ -35,86 +38,156 @@ const BODIES: usize = 7;
 struct Part {
     pose: Pose,
     shape: SharedShape,
-    ends: [Point3<f64>; 2],
-    radius: f64,
+    capsule: Capsule,
 }
 
-/// The arm's bodies as parts, and the pairs of bodies that may touch.
+/// The arm's bodies as parts, the pairs of bodies that may touch, and how far each body
+/// reaches from each joint's axis.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct ArmGeometry {
     bodies: [Vec<Part>; BODIES],
+    /// Each body's capsule holding all its parts (none for a body without any).
+    hulls: [Option<Capsule>; BODIES],
     pairs: Vec<(usize, usize)>,
+    /// `reach[k][j]` (j ≥ k ≥ 1): the farthest a point of body j can be from the axis of
+    /// joint k (m): the joint origins from body k to body j, and body j's own extent.
+    reach: [[f64; BODIES]; BODIES],
 }
 
 impl ArmGeometry {
     /// The geometry of `model` as it is now.
     pub(crate) fn new(model: &ArmModel) -> ArmGeometry {
-        let bodies = std::array::from_fn(|k| body_elements(model, k).iter().map(part).collect());
-        let pairs = contact_pairs(model, &std::array::from_fn(|k| body_elements(model, k)));
-        ArmGeometry { bodies, pairs }
+        let elements: [Elements; BODIES] = std::array::from_fn(|k| body_elements(model, k));
+        let bodies: [Vec<Part>; BODIES] =
+            std::array::from_fn(|k| elements[k].iter().map(part).collect());
+        let extent = |parts: &[Part]| {
+            parts
+                .iter()
+                .map(|p| {
+                    let [a, b] = p.capsule.ends;
+                    a.coords.norm().max(b.coords.norm()) + p.capsule.radius
+                })
+                .fold(0.0, f64::max)
+        };
+        let origins: Vec<f64> = model
+            .joints()
+            .iter()
+            .map(|j| j.origin.translation.vector.norm())
+            .collect();
+        let mut reach = [[0.0; BODIES]; BODIES];
+        for k in 1..BODIES {
+            for j in k..BODIES {
+                reach[k][j] = origins[k..j].iter().sum::<f64>() + extent(&bodies[j]);
+            }
+        }
+        ArmGeometry {
+            pairs: contact_pairs(model, &elements),
+            hulls: std::array::from_fn(|k| hull(&bodies[k])),
+            bodies,
+            reach,
+        }
     }
 
-    /// The smallest distance (m) between two bodies that may touch, or a link and an
-    /// obstacle, with the arm at `q`: exact under [`NEAR`], a lower bound above it; 0 when
-    /// something touches.
-    pub(crate) fn gap(&self, model: &ArmModel, q: &Joints, obstacles: &[Obstacle]) -> f64 {
+    /// The fraction of a move, turning the joints at `rates` (rad per move), that surely
+    /// passes before anything touches, from the arm at `q`: each pair's distance over how
+    /// fast the joints between them can close it (distances exact under [`NEAR`], lower
+    /// bounds above it); 0 when something touches.
+    fn allowance(
+        &self,
+        model: &ArmModel,
+        q: &Joints,
+        rates: &[f64; BODIES],
+        obstacles: &[Obstacle],
+    ) -> f64 {
         let links = model.link_frames(q);
-        let frames: [Isometry3<f64>; BODIES] = std::array::from_fn(|k| match k {
+        let frame = |k: usize| match k {
             0 => Isometry3::identity(),
             _ => links[k - 1],
-        });
-        let mut gap = f64::INFINITY;
-        for &(i, j) in &self.pairs {
-            for a in &self.bodies[i] {
-                for b in &self.bodies[j] {
-                    gap = gap.min(part_gap(a, &frames[i], b, &frames[j]));
-                }
+        };
+        let speed =
+            |i: usize, j: usize| -> f64 { (i + 1..=j).map(|k| rates[k] * self.reach[k][j]).sum() };
+        let placed: [Option<Capsule>; BODIES] =
+            std::array::from_fn(|k| self.hulls[k].map(|h| h.placed(&frame(k))));
+        let mut allow = f64::INFINITY;
+        let mut take = |gap: f64, speed: f64| {
+            if gap.is_nan() || gap <= 0.0 {
+                allow = 0.0;
+            } else if speed > 0.0 {
+                allow = allow.min(gap / speed);
             }
+        };
+        for &(i, j) in &self.pairs {
+            let (Some(hull_i), Some(hull_j)) = (placed[i], placed[j]) else {
+                continue;
+            };
+            let bound = hull_i.distance(&hull_j);
+            let gap = if bound >= NEAR {
+                bound
+            } else {
+                let (at_i, at_j) = (frame(i), frame(j));
+                let parts = self.bodies[i].iter().flat_map(|a| {
+                    self.bodies[j]
+                        .iter()
+                        .map(move |b| parts_distance(a, &at_i, b, &at_j))
+                });
+                parts.fold(f64::INFINITY, f64::min)
+            };
+            take(gap, speed(i, j));
         }
         for obstacle in obstacles {
             let (pose, cuboid) = obstacle.parts();
-            for (k, frame) in frames.iter().enumerate().skip(1) {
-                for a in &self.bodies[k] {
-                    gap = gap.min(obstacle_gap(a, frame, obstacle, &pose, &cuboid));
-                }
+            for (k, at) in links.iter().enumerate() {
+                let Some(hull) = placed[k + 1] else { continue };
+                let bound = hull.box_gap(obstacle);
+                let gap = if bound >= NEAR {
+                    bound
+                } else {
+                    let shapes = self.bodies[k + 1]
+                        .iter()
+                        .map(|a| exact(&(to_pose(at) * a.pose), a.shape.as_ref(), &pose, &cuboid));
+                    shapes.fold(f64::INFINITY, f64::min)
+                };
+                take(gap, speed(0, k + 1));
             }
         }
-        gap
+        allow
     }
 
     /// How far along the controlled move from `theta` by `delta` (fractions up to `up_to`)
     /// the arm gets before two of its bodies or a link and an obstacle touch: `up_to` when
     /// none do, or when they already touch at the start. Marches in steps no pair can close
-    /// in (each no longer than the gap over twice `reach` allows), then bisects the contact.
-    #[allow(clippy::too_many_arguments)]
+    /// in, then bisects the contact. A point of body j moves, relative to body i, no faster
+    /// than the turns of the joints between them times its reach from their axes; θ4 = θ6 =
+    /// 0 stay, θ5 turns by at most θ2's and θ3's turns together.
     pub(crate) fn contact_stop(
         &self,
         model: &ArmModel,
-        reach: f64,
         theta: &Controlled,
         delta: &Controlled,
         up_to: f64,
         obstacles: &[Obstacle],
     ) -> f64 {
-        let gap = |s: f64| self.gap(model, &model.full_pose(&(theta + delta * s)), obstacles);
-        // Two bodies close in at most twice as fast as one moves; θ5 turns by at most
-        // the sum of θ2's and θ3's turns.
-        let speed = 2.0 * reach * (delta.abs().sum() + (delta.y.abs() + delta.z.abs()));
-        let (mut s, mut now) = (0.0, gap(0.0));
-        if now.is_nan() || now <= 0.0 || speed == 0.0 {
+        let (d1, d2, d3) = (delta.x.abs(), delta.y.abs(), delta.z.abs());
+        let rates = [0.0, d1, d2, d3, 0.0, d2 + d3, 0.0];
+        let allowance = |s: f64| {
+            let q = model.full_pose(&(theta + delta * s));
+            self.allowance(model, &q, &rates, obstacles)
+        };
+        let (mut s, mut now) = (0.0, allowance(0.0));
+        if now <= 0.0 {
             return up_to;
         }
         while s < up_to {
-            if now >= speed * (up_to - s) {
-                return up_to; // the rest of the move cannot close the gap
+            if now >= up_to - s {
+                return up_to; // the rest of the move cannot close any gap
             }
-            let next = (s + (now / speed).max(MIN_MARCH)).min(up_to);
-            let then = gap(next);
+            let next = (s + now.max(MIN_MARCH)).min(up_to);
+            let then = allowance(next);
             if then <= 0.0 {
                 let (mut apart, mut touching) = (s, next);
                 for _ in 0..BISECTIONS {
                     let middle = 0.5 * (apart + touching);
-                    if gap(middle) <= 0.0 {
+                    if allowance(middle) <= 0.0 {
                         touching = middle;
                     } else {
                         apart = middle;
@@ -183,20 +256,12 @@ fn part((pose, shape): &(Isometry3<f64>, Shape)) -> Part {
     Part {
         pose,
         shape,
-        ends,
-        radius,
+        capsule: Capsule { ends, radius },
     }
 }
 
-/// The distance between parts `a` and `b` of bodies at `at_a` and `at_b`: the capsules'
-/// when that is at least [`NEAR`], else the shapes' own.
-fn part_gap(a: &Part, at_a: &Isometry3<f64>, b: &Part, at_b: &Isometry3<f64>) -> f64 {
-    let [p, q] = a.ends.map(|e| at_a * e);
-    let [r, s] = b.ends.map(|e| at_b * e);
-    let bound = segment_distance(&p, &q, &r, &s) - a.radius - b.radius;
-    if bound >= NEAR {
-        return bound;
-    }
+/// The exact distance between parts `a` and `b` of bodies at `at_a` and `at_b`.
+fn parts_distance(a: &Part, at_a: &Isometry3<f64>, b: &Part, at_b: &Isometry3<f64>) -> f64 {
     exact(
         &(to_pose(at_a) * a.pose),
         a.shape.as_ref(),
@@ -205,27 +270,63 @@ fn part_gap(a: &Part, at_a: &Isometry3<f64>, b: &Part, at_b: &Isometry3<f64>) ->
     )
 }
 
-/// The distance between part `a` of a body at `at` and `obstacle` (its pose and box): the
-/// gap between their bounding boxes when that is at least [`NEAR`], else the exact one.
-fn obstacle_gap(
-    a: &Part,
-    at: &Isometry3<f64>,
-    obstacle: &Obstacle,
-    pose: &Pose,
-    cuboid: &rapier3d_f64::parry::shape::Cuboid,
-) -> f64 {
-    let [p, q] = a.ends.map(|e| at * e);
-    let reach = Vector3::repeat(a.radius);
-    let (low, high) = (p.inf(&q) - reach, p.sup(&q) + reach);
-    let half = obstacle.size * 0.5;
-    let outside = ((obstacle.centre - half) - high)
-        .sup(&(low - (obstacle.centre + half)))
-        .sup(&Vector3::zeros());
-    let bound = outside.norm();
-    if bound >= NEAR {
-        return bound;
+/// A capsule: the points within `radius` of the segment between `ends`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Capsule {
+    ends: [Point3<f64>; 2],
+    radius: f64,
+}
+
+impl Capsule {
+    /// This capsule moved by `at`.
+    fn placed(&self, at: &Isometry3<f64>) -> Capsule {
+        Capsule {
+            ends: self.ends.map(|e| at * e),
+            radius: self.radius,
+        }
     }
-    exact(&(to_pose(at) * a.pose), a.shape.as_ref(), pose, cuboid)
+
+    /// The distance between the two capsules (negative when they overlap).
+    fn distance(&self, other: &Capsule) -> f64 {
+        let ([p, q], [r, s]) = (&self.ends, &other.ends);
+        segment_distance(p, q, r, s) - self.radius - other.radius
+    }
+
+    /// The distance between this capsule's bounding box and `obstacle`'s.
+    fn box_gap(&self, obstacle: &Obstacle) -> f64 {
+        let [p, q] = &self.ends;
+        let reach = Vector3::repeat(self.radius);
+        let (low, high) = (p.inf(q) - reach, p.sup(q) + reach);
+        let half = obstacle.size * 0.5;
+        ((obstacle.centre - half) - high)
+            .sup(&(low - (obstacle.centre + half)))
+            .sup(&Vector3::zeros())
+            .norm()
+    }
+}
+
+/// The capsule that holds all of a body's parts: the longest part's segment, wide enough
+/// to reach every part's farthest point (distance to a segment is convex, so a part's
+/// farthest point lies at one of its own segment's ends, plus its radius).
+fn hull(parts: &[Part]) -> Option<Capsule> {
+    let longest = parts.iter().max_by(|a, b| {
+        let length = |p: &Part| (p.capsule.ends[1] - p.capsule.ends[0]).norm();
+        length(a).total_cmp(&length(b))
+    })?;
+    let [p, q] = &longest.capsule.ends;
+    let radius = parts
+        .iter()
+        .flat_map(|part| {
+            part.capsule
+                .ends
+                .iter()
+                .map(move |e| segment_distance(p, q, e, e) + part.capsule.radius)
+        })
+        .fold(0.0, f64::max);
+    Some(Capsule {
+        ends: [*p, *q],
+        radius,
+    })
 }
 
 /// The exact distance between two shapes (0 when they touch; the bound 0 when parry cannot
@@ -297,6 +398,27 @@ mod tests {
     }
 
     #[test]
+    fn a_bodys_hull_holds_its_parts() {
+        let model = ArmModel::oscar6();
+        let geometry = ArmGeometry::new(&model);
+        // Link 6: the flange cylinder and the camera box; the hull reaches both.
+        let hull = geometry.hulls[6].unwrap();
+        for part in &geometry.bodies[6] {
+            let reach = Capsule {
+                ends: hull.ends,
+                radius: hull.radius + 1e-12,
+            };
+            for end in part.capsule.ends {
+                let point = Capsule {
+                    ends: [end, end],
+                    radius: part.capsule.radius,
+                };
+                assert!(reach.distance(&point) <= -2.0 * part.capsule.radius + 1e-9);
+            }
+        }
+    }
+
+    #[test]
     fn capsules_hold_their_shapes_and_bound_the_distance_from_below() {
         let model = ArmModel::oscar6();
         let geometry = ArmGeometry::new(&model);
@@ -313,15 +435,13 @@ mod tests {
             assert!(!geometry.pairs.contains(&pair), "{pair:?}");
         }
         let q = model.full_pose(&Controlled::new(0.2, 0.4, 1.9));
-        let bound = geometry.gap(&model, &q, &[]);
-        assert!(bound > 0.0);
+        let rates = [1.0; BODIES];
+        assert!(geometry.allowance(&model, &q, &rates, &[]) > 0.0);
         let at = |k: usize| model.link_frames(&q)[k - 1];
         for &(i, j) in geometry.pairs.iter().filter(|(i, _)| *i > 0) {
             for a in &geometry.bodies[i] {
                 for b in &geometry.bodies[j] {
-                    let [p, q] = a.ends.map(|e| at(i) * e);
-                    let [r, s] = b.ends.map(|e| at(j) * e);
-                    let capsules = segment_distance(&p, &q, &r, &s) - a.radius - b.radius;
+                    let capsules = a.capsule.placed(&at(i)).distance(&b.capsule.placed(&at(j)));
                     let true_gap = exact(
                         &(to_pose(&at(i)) * a.pose),
                         a.shape.as_ref(),

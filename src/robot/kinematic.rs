@@ -167,7 +167,6 @@ impl Simulator for KinematicSim {
         );
         let touch = self.geometry.contact_stop(
             &self.model,
-            self.reach,
             &self.theta,
             delta,
             floor.min(fraction),

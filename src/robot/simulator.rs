@@ -43,8 +43,8 @@ pub struct MoveReport {
     pub executed: Controlled,
     /// The 0-based joint whose limit stopped the move early, if one did.
     pub stopped_by_limit: Option<usize>,
-    /// True when the move stopped early because a link or the camera touched the floor
-    /// (either simulator) or another link (the dynamic one).
+    /// True when the move stopped early because a link or the camera touched the floor,
+    /// an obstacle or another link.
     pub stopped_by_contact: bool,
     /// Simulated duration of the move (s), settling included.
     pub duration: f64,
@@ -63,7 +63,7 @@ pub struct SimWork {
     pub simulated_seconds: f64,
     /// Moves, placings and link changes after which the arm had not settled in time.
     pub settle_timeouts: u64,
-    /// Moves stopped by a contact (floor or another link).
+    /// Moves stopped by a contact (the floor, an obstacle or another link).
     pub contact_stops: u64,
 }
 
@@ -107,7 +107,7 @@ pub trait Simulator: std::fmt::Debug {
     /// Continuous servoing: from now on the servos' set-point heads for θ1..θ3 = `goal`
     /// (rad) from where it is, keeping its velocity, under the moves' speed and
     /// acceleration limits and without settling first; the goal is cut where a straight
-    /// move from the set-point would meet a joint limit or the floor. A simulator without
+    /// move from the set-point would meet a joint limit or a contact. A simulator without
     /// a clock ignores it.
     fn servo_toward(&mut self, _goal: &Controlled) {}
 

@@ -5,7 +5,7 @@
 
 use eyehand::robot::{
     ArmModel, Controlled, DynamicSettings, DynamicSim, KinematicSim, MoveReport, Obstacle,
-    Simulator,
+    RobotError, Simulator,
 };
 use nalgebra::{Point3, Vector3};
 
@@ -77,4 +77,17 @@ fn a_move_into_an_obstacle_stops_on_it_in_both_simulators() {
         size: Vector3::new(0.2, 0.2, 0.3),
     };
     both_stop(above, below - above, vec![block]);
+    // Nor can the arm be put inside the box: a start there is refused (and redrawn).
+    let settings = DynamicSettings::default();
+    let mut kinematic =
+        KinematicSim::new(model.clone(), settings.moves).with_obstacles(vec![block]);
+    let mut dynamic = DynamicSim::new(model, settings).with_obstacles(vec![block]);
+    for sim in [&mut kinematic as &mut dyn Simulator, &mut dynamic] {
+        let refused = sim.place(&below);
+        assert!(
+            matches!(refused, Err(RobotError::InsideObstacle { obstacle: 1, .. })),
+            "{refused:?}"
+        );
+        assert!(sim.place(&above).is_ok());
+    }
 }

@@ -134,23 +134,68 @@ impl ArmGeometry {
             };
             take(gap, speed(i, j));
         }
+        for (k, at) in links.iter().enumerate() {
+            take(self.allowance_of(k + 1, at, obstacles, rates), 1.0);
+        }
+        allow
+    }
+
+    /// What [`allowance`](Self::allowance) gives for body `k` placed at `at` against
+    /// `obstacles` alone.
+    fn allowance_of(
+        &self,
+        k: usize,
+        at: &Isometry3<f64>,
+        obstacles: &[Obstacle],
+        rates: &[f64; BODIES],
+    ) -> f64 {
+        let Some(hull) = self.hulls[k].map(|h| h.placed(at)) else {
+            return f64::INFINITY;
+        };
+        let closing: f64 = (1..=k).map(|j| rates[j] * self.reach[j][k]).sum();
+        let mut allow = f64::INFINITY;
         for obstacle in obstacles {
-            let (pose, cuboid) = obstacle.parts();
-            for (k, at) in links.iter().enumerate() {
-                let Some(hull) = placed[k + 1] else { continue };
-                let bound = hull.box_gap(obstacle);
-                let gap = if bound >= NEAR {
-                    bound
-                } else {
-                    let shapes = self.bodies[k + 1]
-                        .iter()
-                        .map(|a| exact(&(to_pose(at) * a.pose), a.shape.as_ref(), &pose, &cuboid));
-                    shapes.fold(f64::INFINITY, f64::min)
-                };
-                take(gap, speed(0, k + 1));
+            let bound = hull.box_gap(obstacle);
+            let gap = if bound >= NEAR {
+                bound
+            } else {
+                let (pose, cuboid) = obstacle.parts();
+                let shapes = self.bodies[k]
+                    .iter()
+                    .map(|a| exact(&(to_pose(at) * a.pose), a.shape.as_ref(), &pose, &cuboid));
+                shapes.fold(f64::INFINITY, f64::min)
+            };
+            if gap.is_nan() || gap <= 0.0 {
+                return 0.0;
+            }
+            if closing > 0.0 {
+                allow = allow.min(gap / closing);
             }
         }
         allow
+    }
+
+    /// The first link (1–6) and obstacle (1-based) that touch with the arm at `q`, if any.
+    pub(crate) fn inside_obstacle(
+        &self,
+        model: &ArmModel,
+        q: &Joints,
+        obstacles: &[Obstacle],
+    ) -> Option<(usize, usize)> {
+        if obstacles.is_empty() {
+            return None;
+        }
+        let links = model.link_frames(q);
+        let rates = [0.0; BODIES];
+        for (i, obstacle) in obstacles.iter().enumerate() {
+            let one = std::slice::from_ref(obstacle);
+            for (k, at) in links.iter().enumerate() {
+                if self.allowance_of(k + 1, at, one, &rates) <= 0.0 {
+                    return Some((k + 1, i + 1));
+                }
+            }
+        }
+        None
     }
 
     /// How far along the controlled move from `theta` by `delta` (fractions up to `up_to`)

@@ -238,4 +238,12 @@ pub enum RobotError {
         /// The joint's URDF effort (N·m).
         effort_nm: f64,
     },
+    /// A pose that puts a link inside an obstacle box.
+    #[error("link {link} would stand inside obstacle {obstacle}")]
+    InsideObstacle {
+        /// The link (1–6; 6 carries the camera).
+        link: usize,
+        /// The obstacle (1-based, in the config's order).
+        obstacle: usize,
+    },
 }

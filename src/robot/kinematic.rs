@@ -124,7 +124,14 @@ impl Simulator for KinematicSim {
 
     fn place(&mut self, theta: &Controlled) -> Result<(), RobotError> {
         let pose = self.model.pose_of(theta);
-        self.joints = self.model.check_joint_limits(&pose.joints)?;
+        let joints = self.model.check_joint_limits(&pose.joints)?;
+        if let Some((link, obstacle)) =
+            self.geometry
+                .inside_obstacle(&self.model, &joints, &self.obstacles)
+        {
+            return Err(RobotError::InsideObstacle { link, obstacle });
+        }
+        self.joints = joints;
         self.theta = *theta;
         self.camera = pose.camera;
         Ok(())

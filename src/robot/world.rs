@@ -114,10 +114,11 @@ impl WorldView<'_> {
     }
 
     /// False when nothing of the world reaches into the box from `lower` to `upper`
-    /// (world, m); true may be said of a box that nothing enters (bounds are loose).
+    /// (world, m; a box resting on the floor is not entered by it); true may be said of a
+    /// box that nothing enters (bounds are loose).
     pub fn may_enter(&self, lower: &Point3<f64>, upper: &Point3<f64>) -> bool {
         let region = Aabb::new(to_vector(&lower.coords), to_vector(&upper.coords));
-        lower.z <= self.floor_z
+        lower.z < self.floor_z
             || self.obstacles.iter().any(|o| {
                 let (pose, cuboid) = o.parts();
                 cuboid.aabb(&pose).intersects(&region)

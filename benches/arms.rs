@@ -77,7 +77,7 @@ fn main() {
         if file.starts_with("urdf/") {
             let model = ArmModel::oscar6();
             let ns = per_call(&poses(&chain), n, |q| {
-                model.camera_pose(&Joints::from_column_slice(q))
+                model.camera_pose(&Joints::from_slice(q))
             });
             println!("| oscar6 (`ArmModel`) | `camera_link` | 6 | - | - | {ns:.0} |");
         }

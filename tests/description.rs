@@ -280,7 +280,7 @@ fn the_oscar6_through_the_description_puts_the_camera_where_arm_model_does() {
     for _ in 0..100 {
         let (q, _) = random_pose(&chain, &mut rng);
         let ours = chain.camera_pose(&q, &Isometry3::identity()).unwrap();
-        let theirs = model.camera_pose(&Joints::from_column_slice(&q));
+        let theirs = model.camera_pose(&Joints::from_slice(&q));
         assert_same(&ours, &theirs.to_homogeneous(), "camera");
     }
 }

@@ -70,7 +70,7 @@ fn a_falling_arm_lands_on_the_floor() {
         dt: 1e-3,
         ..DynamicSettings::default()
     };
-    let start = Joints::zeros();
+    let start = Joints::zeros(6);
     for contacts in [true, false] {
         let mut arm = FreeArm::new(
             model.clone(),

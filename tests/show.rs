@@ -223,7 +223,7 @@ fn the_image_is_blank_where_the_object_is_not_seen() {
     // the frame's border, so the camera does not see it.
     let down = UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI);
     let look = Look {
-        joints: Joints::zeros(),
+        joints: Joints::zeros(6),
         camera_pose: Isometry3::from_parts(Translation3::new(0.7, 0.0, 0.2), down),
         object: Point3::new(0.88, 0.0, 0.0),
         reading: Err(NotSeen::OutsideFrame),
@@ -289,7 +289,7 @@ fn the_arm_drawing_puts_the_camera_where_the_kinematic_model_does() {
             .iter()
             .map(|v| v.as_f64().unwrap().to_radians())
             .collect();
-        let centre = ArmModel::oscar6().camera_position(&Joints::from_column_slice(&joints));
+        let centre = ArmModel::oscar6().camera_position(&Joints::from_slice(&joints));
         let (width, _, pixels) = read_png(&folder.join("show/2/arm.png"));
         let magenta = [
             LAST_CAMERA_CENTRE.0,

@@ -59,7 +59,7 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
         Some(path) => load_urdf(path).map_err(bad_input)?,
         None => ArmModel::oscar6(),
     };
-    let start = Joints::from_column_slice(&args.from).map(f64::to_radians);
+    let start = Joints::from_slice(&args.from).map(f64::to_radians);
     let drive = if args.hold {
         Drive::Hold
     } else {

@@ -202,8 +202,9 @@ impl ArmGeometry {
     /// the arm gets before two of its bodies or a link and an obstacle touch: `up_to` when
     /// none do, or when they already touch at the start. Marches in steps no pair can close
     /// in, then bisects the contact. A point of body j moves, relative to body i, no faster
-    /// than the turns of the joints between them times its reach from their axes; θ4 = θ6 =
-    /// 0 stay, θ5 turns by at most θ2's and θ3's turns together.
+    /// than the turns of the joints between them times its reach from their axes; the
+    /// learned joints turn by their share of the move, a wrist joint by at most θ2's and
+    /// θ3's turns together (θ5 on the OSCAR-6), the other joints stay.
     pub(crate) fn contact_stop(
         &self,
         model: &ArmModel,
@@ -212,8 +213,16 @@ impl ArmGeometry {
         up_to: f64,
         obstacles: &[Obstacle],
     ) -> f64 {
-        let (d1, d2, d3) = (delta.x.abs(), delta.y.abs(), delta.z.abs());
-        let rates = [0.0, d1, d2, d3, 0.0, d2 + d3, 0.0];
+        let turns = delta.abs();
+        let rates: [f64; BODIES] = std::array::from_fn(|body| {
+            // Body k hangs from joint k - 1.
+            let joint = body.wrapping_sub(1);
+            match model.learned().iter().position(|&j| j == joint) {
+                Some(i) => turns[i],
+                None if model.wrist().sets(joint) => turns.y + turns.z,
+                None => 0.0,
+            }
+        });
         let allowance = |s: f64| {
             let q = model.full_pose(&(theta + delta * s));
             self.allowance(model, &q, &rates, obstacles)
@@ -249,7 +258,7 @@ impl ArmGeometry {
 /// The pairs of bodies (0 the base, 1–6 the links) that may touch: not neighbours in the
 /// chain, and apart at the zero pose.
 pub(crate) fn contact_pairs(model: &ArmModel, bodies: &[Elements; BODIES]) -> Vec<(usize, usize)> {
-    let links = model.link_frames(&Joints::zeros());
+    let links = model.link_frames(&Joints::zeros(model.dof()));
     let frame = |k: usize| match k {
         0 => Isometry3::identity(),
         _ => links[k - 1],

@@ -21,13 +21,13 @@ const FLOOR_BISECTIONS: usize = 40;
 /// Collision elements of a body: shapes and their poses in the body's frame.
 pub(crate) type Elements = Vec<(Isometry3<f64>, Shape)>;
 
-/// The collision elements of body `k` (0 the base, 1–6 the links; the camera link rides
-/// on link 6) of `model` as it is now.
+/// The collision elements of body `k` (0 the base, then one link per joint; the camera
+/// link rides on the last) of `model` as it is now.
 pub(crate) fn body_elements(model: &ArmModel, k: usize) -> Elements {
     let links = model.links();
     let mut parts = vec![(Isometry3::identity(), &links[k])];
-    if k == 6 {
-        parts.push((model.camera_mount(), &links[7]));
+    if k == model.dof() {
+        parts.push((model.camera_mount(), &links[k + 1]));
     }
     let elements = parts
         .iter()
@@ -52,7 +52,7 @@ pub(crate) fn stretch_of(model: &ArmModel, k: usize) -> Option<(Unit<Vector3<f64
 
 /// The lowest world height (m) any moving link or the camera reaches at pose `q`, with
 /// each body's collision elements (`bodies[k - 1]` for link k).
-pub(crate) fn lowest_point(model: &ArmModel, bodies: &[Elements; 6], q: &Joints) -> f64 {
+pub(crate) fn lowest_point(model: &ArmModel, bodies: &[Elements], q: &Joints) -> f64 {
     let frames = model.link_frames(q);
     frames
         .iter()
@@ -64,7 +64,7 @@ pub(crate) fn lowest_point(model: &ArmModel, bodies: &[Elements; 6], q: &Joints)
 /// How far any point of the arm can be from a joint axis (m): the joint origins, the
 /// camera mount and each collision element's reach added up. A joint turn of δ rad moves
 /// no point of the arm by more than this times δ.
-pub(crate) fn reach(model: &ArmModel, bodies: &[Elements; 6]) -> f64 {
+pub(crate) fn reach(model: &ArmModel, bodies: &[Elements]) -> f64 {
     let chain: f64 = model
         .joints()
         .iter()
@@ -90,17 +90,25 @@ pub(crate) fn reach(model: &ArmModel, bodies: &[Elements; 6]) -> f64 {
 /// (each no longer than the clearance over `reach` allows), then bisects the crossing.
 pub(crate) fn floor_stop(
     model: &ArmModel,
-    bodies: &[Elements; 6],
+    bodies: &[Elements],
     reach: f64,
     theta: &Controlled,
     delta: &Controlled,
     up_to: f64,
     floor: f64,
 ) -> f64 {
-    let clearance =
-        |s: f64| lowest_point(model, bodies, &model.full_pose(&(theta + delta * s))) - floor;
-    // θ5 follows θ2 and θ3: it turns by at most their sum.
-    let speed = reach * (delta.abs().sum() + (delta.y.abs() + delta.z.abs()));
+    let clearance = |s: f64| {
+        let pose = model.pose_of(&(theta + delta * s));
+        if pose.wrist_found {
+            lowest_point(model, bodies, &pose.joints) - floor
+        } else {
+            f64::NAN
+        }
+    };
+    // The wrist follows θ2 and θ3: it turns by at most their sum (for each of up to three
+    // wrist joints solved).
+    let wrist_turn = (delta.y.abs() + delta.z.abs()) * wrist_joints(model);
+    let speed = reach * (delta.abs().sum() + wrist_turn);
     let mut s = 0.0;
     let mut gap = clearance(0.0);
     if gap.is_nan() || gap < 0.0 || speed == 0.0 {
@@ -128,6 +136,15 @@ pub(crate) fn floor_stop(
         (s, gap) = (next, next_gap);
     }
     up_to
+}
+
+/// How many joints the wrist turns: 1 for a one-joint wrist, up to 3 for a numerical one.
+fn wrist_joints(model: &ArmModel) -> f64 {
+    match *model.wrist() {
+        super::Wrist::OneJoint(_) => 1.0,
+        super::Wrist::Numerical { count, .. } => count as f64,
+        super::Wrist::None => 0.0,
+    }
 }
 
 /// The lowest world height (m) of `shape` at world pose `pose`.
@@ -256,7 +273,7 @@ mod tests {
     #[test]
     fn the_camera_of_the_zero_pose_hangs_above_the_default_floor() {
         let model = ArmModel::oscar6();
-        let bodies = std::array::from_fn(|k| body_elements(&model, k + 1));
+        let bodies: Vec<_> = (1..=6).map(|k| body_elements(&model, k)).collect();
         let low = lowest_point(&model, &bodies, &model.full_pose(&Vector3::zeros()));
         // The camera looks down from 0.1 m beyond the wrist, its 6 cm box below the lens
         // centre... the lowest point is the camera box's bottom edge.

@@ -215,6 +215,20 @@ pub enum RobotError {
         /// Upper limit (degrees).
         upper_deg: f64,
     },
+    /// No wrist angles keep the camera looking straight down with its image x axis radial.
+    #[error("no wrist pose keeps the camera looking down at learned angles ({:.3}°, {:.3}°, {:.3}°)", .theta_deg[0], .theta_deg[1], .theta_deg[2])]
+    NoWristSolution {
+        /// The learned angles (degrees).
+        theta_deg: [f64; 3],
+    },
+    /// A chain with more joints than an arm model holds, or a learned joint not in it.
+    #[error("a chain of {joints} joints with three learned ones among them: an arm may have at most {max}")]
+    ChainTooLong {
+        /// Joints in the chain.
+        joints: usize,
+        /// The most an arm model holds.
+        max: usize,
+    },
     /// Only links 1, 2 and 3 can be stretched.
     #[error("link {0} cannot be stretched: only links 1, 2 and 3 can")]
     NoSuchLink(usize),

@@ -5,14 +5,17 @@
 //! guess needs are worked out once per change of the model ([`GuessGeometry`]), and each
 //! Newton step walks the chain once per pose it evaluates.
 
-use super::model::{ArmModel, ArmPose, Controlled, Joints};
+use super::model::{ArmModel, ArmPose, Controlled, Frames, Wrist};
 use super::RobotError;
-use nalgebra::{Isometry3, Matrix3, Point3, Vector3};
+use nalgebra::{Matrix3, Point3, Vector3};
+use std::f64::consts::{PI, TAU};
 
 /// Position error (m) at which a solution is accepted.
 const TOLERANCE_M: f64 = 1e-11;
 const MAX_NEWTON_STEPS: usize = 30;
 const JACOBIAN_STEP: f64 = 1e-7;
+/// Where in each learned joint's range the starting poses of a general arm lie.
+const SEED_FRACTIONS: [f64; 3] = [0.5, 0.25, 0.75];
 
 /// What the closed-form guess needs of the arm, from its zero pose: the shoulder's
 /// position, the upper arm's and forearm's lengths and the camera's offset from the wrist
@@ -28,13 +31,15 @@ pub(super) struct GuessGeometry {
 impl GuessGeometry {
     /// The guess's geometry of `model` as it is now.
     pub(super) fn of(model: &ArmModel) -> GuessGeometry {
-        let frames = model.link_frames(&Joints::zeros());
-        let shoulder = frames[1].translation.vector;
-        let upper = (frames[2].translation.vector - shoulder).norm();
-        let fore = (frames[4].translation.vector - frames[2].translation.vector).norm();
-        let posed = model.full_pose(&Controlled::new(0.0, 0.0, 0.0));
+        let [_, s, e] = model.learned();
+        let w = wrist_joint(model);
+        let frames = model.link_frames(&model.rest());
+        let shoulder = frames[s].translation.vector;
+        let upper = (frames[e].translation.vector - shoulder).norm();
+        let fore = (frames[w].translation.vector - frames[e].translation.vector).norm();
+        let posed = model.full_pose(&model.controlled_of(&model.rest()));
         let camera_offset =
-            model.camera_position(&posed).coords - model.link_frames(&posed)[4].translation.vector;
+            model.camera_position(&posed).coords - model.link_frames(&posed)[w].translation.vector;
         GuessGeometry {
             shoulder,
             upper,
@@ -57,39 +62,109 @@ impl ArmModel {
         if !target.coords.iter().all(|v| v.is_finite()) {
             return Err(unreachable("the target is not a finite point"));
         }
-        let mut theta = self
-            .closed_form_guess(target)
-            .ok_or_else(|| unreachable("out of the arm's reach"))?;
+        let mut failure: Option<String> = None;
+        let starts = self.closed_form_guess(target).into_iter().chain(
+            (!self.is_oscar6_form())
+                .then(|| self.seeds(target))
+                .into_iter()
+                .flatten(),
+        );
+        for start in starts {
+            match self.newton_from(start, target) {
+                Ok(theta) => return Ok(theta),
+                Err(why) => {
+                    if failure
+                        .as_ref()
+                        .is_none_or(|f| failure_rank(&why) > failure_rank(f))
+                    {
+                        failure = Some(why);
+                    }
+                }
+            }
+        }
+        Err(unreachable(
+            failure.as_deref().unwrap_or("out of the arm's reach"),
+        ))
+    }
+
+    /// Newton steps on the camera centre from `theta`: the pose that reaches `target`
+    /// elbow up inside the limits, or why there is none from this start.
+    fn newton_from(
+        &self,
+        mut theta: Controlled,
+        target: &Point3<f64>,
+    ) -> Result<Controlled, String> {
+        let mut near = self.rest();
         for _ in 0..MAX_NEWTON_STEPS {
-            let pose = self.pose_of(&theta);
+            let pose = self.pose_near(&theta, &near);
+            if !pose.wrist_found {
+                return Err("no wrist pose keeps the camera looking down on the way".into());
+            }
+            near = pose.joints;
             let here = camera_centre(&pose);
             let residual = here - target;
             if residual.norm() < TOLERANCE_M {
-                if !elbow_up(&pose.level_frames, theta.x) {
-                    return Err(unreachable("only an elbow-down pose reaches it"));
+                if !self.elbow_up_in(&pose.level_frames, theta.x) {
+                    return Err("only an elbow-down pose reaches it".into());
                 }
                 self.check_joint_limits(&pose.joints)
-                    .map_err(|e| unreachable(&e.to_string()))?;
+                    .map_err(|e| e.to_string())?;
                 return Ok(theta);
             }
             let step = self
-                .position_jacobian(&theta, &here.coords)
+                .position_jacobian(&theta, &here.coords, &near)
                 .lu()
                 .solve(&residual)
-                .ok_or_else(|| unreachable("the arm is singular there"))?;
+                .ok_or("the arm is singular there")?;
             theta -= step;
+            if !theta.iter().all(|v| v.is_finite()) {
+                return Err("inverse kinematics did not converge".into());
+            }
         }
-        Err(unreachable("inverse kinematics did not converge"))
+        Err("inverse kinematics did not converge".into())
+    }
+
+    /// Starting poses for an arm that is not of the OSCAR-6 form: the learned joints at a
+    /// grid of points inside their limits, the base turned towards the target.
+    fn seeds(&self, target: &Point3<f64>) -> impl Iterator<Item = Controlled> + '_ {
+        let [yaw_joint, s, e] = self.learned().map(|j| &self.joints()[j]);
+        let within = |joint: &super::RevoluteJoint, f: f64| {
+            let (lower, upper) = (joint.lower.max(-PI), joint.upper.min(PI));
+            lower + (upper - lower) * f
+        };
+        let bearing = target.y.atan2(target.x);
+        let yaw_limits = (yaw_joint.lower, yaw_joint.upper);
+        SEED_FRACTIONS.iter().flat_map(move |&fs| {
+            SEED_FRACTIONS.iter().filter_map(move |&fe| {
+                let theta = Controlled::new(0.0, within(s, fs), within(e, fe));
+                let pose = self.pose_of(&theta);
+                let p = camera_centre(&pose);
+                let mut yaw = bearing - p.y.atan2(p.x);
+                for turn in [0.0, TAU, -TAU] {
+                    if (yaw_limits.0..=yaw_limits.1).contains(&(yaw + turn)) {
+                        yaw += turn;
+                        break;
+                    }
+                }
+                pose.wrist_found
+                    .then_some(Controlled::new(yaw, theta.y, theta.z))
+            })
+        })
     }
 
     /// ∂(camera centre)/∂(θ1, θ2, θ3), the wrist following the vertical constraint, by
-    /// forward differences from `base`, the camera centre at `theta`.
-    fn position_jacobian(&self, theta: &Controlled, base: &Vector3<f64>) -> Matrix3<f64> {
+    /// forward differences from `base`, the camera centre at `theta` (wrist at `near`).
+    fn position_jacobian(
+        &self,
+        theta: &Controlled,
+        base: &Vector3<f64>,
+        near: &super::Joints,
+    ) -> Matrix3<f64> {
         let mut jacobian = Matrix3::zeros();
         for i in 0..3 {
             let mut shifted = *theta;
             shifted[i] += JACOBIAN_STEP;
-            let moved = camera_centre(&self.pose_of(&shifted)).coords;
+            let moved = camera_centre(&self.pose_near(&shifted, near)).coords;
             jacobian.set_column(i, &((moved - base) / JACOBIAN_STEP));
         }
         jacobian
@@ -97,8 +172,20 @@ impl ArmModel {
 
     /// True when the elbow lies above the shoulder–wrist line.
     pub fn is_elbow_up(&self, theta: &Controlled) -> bool {
-        let frames = self.link_frames(&Joints::new(theta.x, theta.y, theta.z, 0.0, 0.0, 0.0));
-        elbow_up(&frames, theta.x)
+        let frames = self.link_frames(&self.with_learned(theta));
+        self.elbow_up_in(&frames, theta.x)
+    }
+
+    /// True when the elbow lies above the shoulder–wrist line, from the joint frames with
+    /// the wrist at rest.
+    fn elbow_up_in(&self, frames: &Frames, yaw: f64) -> bool {
+        let [_, s, e] = self.learned();
+        elbow_up(
+            frames[s].translation.vector,
+            frames[e].translation.vector,
+            frames[wrist_joint(self)].translation.vector,
+            yaw,
+        )
     }
 
     /// A closed-form guess for a Puma-like arm: yaw towards the target, then the
@@ -134,14 +221,24 @@ fn camera_centre(pose: &ArmPose) -> Point3<f64> {
     pose.camera * Point3::origin()
 }
 
-/// True when the elbow lies above the shoulder–wrist line, from the joint frames of
-/// (θ1, θ2, θ3, 0, 0, 0).
-fn elbow_up(frames: &[Isometry3<f64>; 6], yaw: f64) -> bool {
-    let (shoulder, elbow, wrist) = (
-        frames[1].translation.vector,
-        frames[2].translation.vector,
-        frames[4].translation.vector,
-    );
+/// The joint whose origin is the wrist centre: the one-joint wrist's joint, else the first
+/// solved wrist joint, else the last joint.
+fn wrist_joint(model: &ArmModel) -> usize {
+    match *model.wrist() {
+        Wrist::OneJoint(j) => j,
+        Wrist::Numerical { joints, .. } => joints[0],
+        Wrist::None => model.dof() - 1,
+    }
+}
+
+/// How telling a reason for failing is: a pose found but refused beats none found.
+fn failure_rank(why: &str) -> u8 {
+    u8::from(why.contains("elbow-down") || why.contains("limits"))
+}
+
+/// True when the elbow lies above the shoulder–wrist line (world points, the arm's plane
+/// turned by `yaw`).
+fn elbow_up(shoulder: Vector3<f64>, elbow: Vector3<f64>, wrist: Vector3<f64>, yaw: f64) -> bool {
     let heading = Vector3::new(yaw.cos(), yaw.sin(), 0.0);
     let planar = |v: Vector3<f64>| (v.dot(&heading), v.z);
     let (wr, wz) = planar(wrist - shoulder);

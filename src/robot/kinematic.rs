@@ -4,10 +4,11 @@
 use super::clearance::ArmGeometry;
 use super::collision::{body_elements, floor_stop, reach, Elements};
 use super::dynamic::compound;
-use super::model::{ArmModel, Controlled, Joints};
+use super::model::{ArmModel, Controlled};
 use super::motion::{limit_stop_fraction, TrapezoidProfile};
 use super::simulator::{MoveReport, MoveSettings, SimWork, Simulator};
 use super::world::{Obstacle, WorldView, SEEN_BODIES};
+use super::Joints;
 use super::RobotError;
 use nalgebra::{Isometry3, Vector3};
 use rapier3d_f64::parry::shape::SharedShape;
@@ -23,7 +24,7 @@ pub struct KinematicSim {
     theta: Controlled,
     joints: Joints,
     /// Each link's collision elements (link 1 first) and how far they reach, for the floor.
-    collision: [Elements; 6],
+    collision: Vec<Elements>,
     reach: f64,
     /// The bodies a camera sees (base, links 1–5) as parry shapes, for [`WorldView`].
     seen_shapes: [Option<SharedShape>; SEEN_BODIES],
@@ -39,9 +40,7 @@ pub struct KinematicSim {
 impl KinematicSim {
     /// A simulator of `model`, resting at the pose closest to zero inside the limits.
     pub fn new(model: ArmModel, settings: MoveSettings) -> KinematicSim {
-        let lower = Vector3::from_fn(|i, _| model.joints()[i].lower);
-        let upper = Vector3::from_fn(|i, _| model.joints()[i].upper);
-        let theta = Controlled::zeros().sup(&lower).inf(&upper);
+        let theta = model.controlled_of(&model.rest());
         let pose = model.pose_of(&theta);
         let mut sim = KinematicSim {
             model,
@@ -68,7 +67,9 @@ impl KinematicSim {
 
     /// Takes the collision elements from the model as it is now.
     fn refresh_collision(&mut self) {
-        self.collision = std::array::from_fn(|k| body_elements(&self.model, k + 1));
+        self.collision = (1..=self.model.dof())
+            .map(|k| body_elements(&self.model, k))
+            .collect();
         self.reach = reach(&self.model, &self.collision);
         self.geometry = ArmGeometry::new(&self.model);
         self.seen_shapes = std::array::from_fn(|k| {
@@ -86,7 +87,7 @@ impl KinematicSim {
 
     /// Puts the arm at `theta` (inside the limits).
     fn set_pose(&mut self, theta: Controlled) {
-        let pose = self.model.pose_of(&theta);
+        let pose = self.model.pose_near(&theta, &self.joints);
         self.theta = theta;
         self.joints = pose.joints;
         self.camera = pose.camera;
@@ -94,20 +95,23 @@ impl KinematicSim {
 
     fn limits(&self) -> (Vector3<f64>, Vector3<f64>) {
         let joints = self.model.joints();
+        let learned = self.model.learned();
         (
-            Vector3::from_fn(|i, _| joints[i].lower),
-            Vector3::from_fn(|i, _| joints[i].upper),
+            Vector3::from_fn(|i, _| joints[learned[i]].lower),
+            Vector3::from_fn(|i, _| joints[learned[i]].upper),
         )
     }
 
-    /// The last fraction of the way along `delta` at which the wrist angle is still inside
-    /// its limits, assuming it is at `0` and not at `limit`.
+    /// The last fraction of the way along `delta` at which the wrist still has a solution
+    /// inside its limits, assuming it has at `0` and not at `limit`.
     fn wrist_stop(&self, delta: &Controlled, limit: f64) -> f64 {
         let (mut inside, mut outside) = (0.0, limit);
         for _ in 0..WRIST_LIMIT_BISECTIONS {
             let middle = 0.5 * (inside + outside);
-            let q = self.model.full_pose(&(self.theta + delta * middle));
-            if self.model.joints()[4].admits(q[4]) {
+            let pose = self
+                .model
+                .pose_near(&(self.theta + delta * middle), &self.joints);
+            if self.model.wrist_fits(&pose) {
                 inside = middle;
             } else {
                 outside = middle;
@@ -123,8 +127,9 @@ impl Simulator for KinematicSim {
     }
 
     fn place(&mut self, theta: &Controlled) -> Result<(), RobotError> {
+        // From rest, as the inverse kinematics solves it (moves follow on from here).
         let pose = self.model.pose_of(theta);
-        let joints = self.model.check_joint_limits(&pose.joints)?;
+        let joints = self.model.check_pose(&pose)?;
         if let Some((link, obstacle)) =
             self.geometry
                 .inside_obstacle(&self.model, &joints, &self.obstacles)
@@ -152,16 +157,18 @@ impl Simulator for KinematicSim {
         let (lower, upper) = self.limits();
         let mut fraction = limit_stop_fraction(&self.theta, delta, &lower, &upper);
         if fraction < 1.0 {
-            report.stopped_by_limit = (0..3).find(|&i| {
-                let end = self.theta[i] + delta[i] * fraction;
-                (end - lower[i]).abs() < 1e-12 || (end - upper[i]).abs() < 1e-12
-            });
+            report.stopped_by_limit = (0..3)
+                .find(|&i| {
+                    let end = self.theta[i] + delta[i] * fraction;
+                    (end - lower[i]).abs() < 1e-12 || (end - upper[i]).abs() < 1e-12
+                })
+                .map(|i| self.model.learned()[i]);
         }
         let end = self.theta + delta * fraction;
-        let mut end_pose = self.model.pose_of(&end);
-        if !self.model.joints()[4].admits(end_pose.joints[4]) {
+        let mut end_pose = self.model.pose_near(&end, &self.joints);
+        if !self.model.wrist_fits(&end_pose) {
+            report.stopped_by_limit = Some(self.model.wrist_joint_at_fault(&end_pose));
             fraction = self.wrist_stop(delta, fraction);
-            report.stopped_by_limit = Some(4);
         }
         let floor = floor_stop(
             &self.model,
@@ -193,7 +200,7 @@ impl Simulator for KinematicSim {
             .zip(end.iter())
             .any(|(a, b)| a.to_bits() != b.to_bits())
         {
-            end_pose = self.model.pose_of(&after);
+            end_pose = self.model.pose_near(&after, &self.joints);
         }
         self.theta = after;
         self.joints = end_pose.joints;

@@ -8,6 +8,7 @@ mod dynamic;
 mod error;
 mod ik;
 mod joint;
+mod joint_vector;
 mod kinematic;
 mod model;
 mod motion;
@@ -22,8 +23,9 @@ pub use description::{Chain, DescriptionError, DescriptionOptions, RobotDescript
 pub use dynamic::{Drive, DynamicSettings, DynamicSim, FreeArm, SimCounters};
 pub use error::{RobotError, UrdfError, UrdfErrorKind};
 pub use joint::{LinkBody, RevoluteJoint, Shape};
+pub use joint_vector::{Joints, MAX_JOINTS};
 pub use kinematic::KinematicSim;
-pub use model::{ArmModel, ArmPose, Controlled, Joints};
+pub use model::{ArmModel, ArmPose, ArmSettings, Controlled, Frames, Wrist};
 pub use motion::{limit_stop_fraction, TrapezoidProfile};
 pub use reach::ReachSpace;
 pub use simulator::{MoveReport, MoveSettings, SimWork, Simulator};

@@ -1,8 +1,8 @@
 //! The simulator interface: what the trial loop asks of any simulated OSCAR-6, kinematic
 //! or dynamic.
 
-use super::model::{ArmModel, Controlled, Joints};
-use super::{RobotError, WorldView, DEFAULT_FLOOR_Z};
+use super::model::{ArmModel, Controlled};
+use super::{Joints, RobotError, WorldView, DEFAULT_FLOOR_Z};
 use nalgebra::Isometry3;
 
 /// How commanded moves are executed.

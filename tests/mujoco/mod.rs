@@ -20,12 +20,12 @@ pub fn rows(name: &str) -> Vec<Vec<f64>> {
 
 /// Six values from the start of `values`.
 pub fn joints(values: &[f64]) -> Joints {
-    Joints::from_column_slice(&values[..6])
+    Joints::from_slice(&values[..6])
 }
 
 /// The largest difference relative to the largest reference value.
 pub fn relative(ours: &Joints, reference: &Joints) -> f64 {
-    (ours - reference).amax() / reference.amax()
+    (*ours - reference).amax() / reference.amax()
 }
 
 /// Settings with time step `dt` (s).

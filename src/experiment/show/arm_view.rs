@@ -187,7 +187,7 @@ fn draw_pose<DB: DrawingBackend>(
     let colour = RGBColor(grey, grey, grey);
     let camera = look.camera_pose * Point3::origin();
     let mut chain = vec![at(&Point3::origin())];
-    for frame in trace.model.link_frames(&look.joints) {
+    for frame in trace.model.link_frames(&look.joints).iter() {
         chain.push(at(&(frame * Point3::origin())));
     }
     chain.push(at(&camera));

@@ -208,6 +208,20 @@ pub enum DescriptionErrorKind {
         /// The joint.
         joint: String,
     },
+    /// A chain with more moving joints than an arm model holds.
+    #[error("the chain has {found} moving joints; an arm may have at most {max}")]
+    TooManyJoints {
+        /// Moving joints on the chain.
+        found: usize,
+        /// The most an arm model holds.
+        max: usize,
+    },
+    /// A prismatic joint between the root and the camera link (arms turn their joints).
+    #[error("joint `{joint}` on the chain to the camera is prismatic; an arm's joints must turn")]
+    PrismaticOnChain {
+        /// The joint.
+        joint: String,
+    },
     /// A joint vector or frame buffer of the wrong length for the chain.
     #[error("the chain has {expected} moving joints; {found} values were given")]
     JointCount {

@@ -52,7 +52,7 @@ impl Arm {
         world.gravity = Vector::new(0.0, 0.0, -GRAVITY);
         world.integration_parameters.dt = settings.dt;
         world.integration_parameters.num_solver_iterations = settings.solver_iterations;
-        let frames = model.link_frames(&Joints::zeros());
+        let frames = model.link_frames(&Joints::zeros(model.dof()));
         let mut bodies = Vec::with_capacity(7);
         let mut colliders = Vec::with_capacity(7);
         let mut inertials = Vec::with_capacity(6);

@@ -76,8 +76,12 @@ impl FreeArm {
     pub fn step(&mut self) {
         if self.drive == Drive::Hold {
             let efforts = self.arm.hold_weight(&self.model, &self.hold);
-            self.arm
-                .drive(&self.hold, &Joints::zeros(), &efforts, &self.settings);
+            self.arm.drive(
+                &self.hold,
+                &Joints::zeros(self.hold.len()),
+                &efforts,
+                &self.settings,
+            );
         }
         self.arm.world.step();
         self.steps += 1;

@@ -28,7 +28,7 @@ impl Arm {
     /// The joint sensors: all six angles (rad).
     pub(super) fn joints(&self) -> Joints {
         let mb = self.multibody();
-        Joints::from_fn(|i, _| {
+        Joints::from_fn(self.link_ids.len(), |i| {
             mb.link(self.link_ids[i])
                 .map_or(0.0, |link| link.joint().coords()[ANGLE])
         })
@@ -37,7 +37,7 @@ impl Arm {
     /// The joints' speeds (rad/s).
     pub(super) fn speeds(&self) -> Joints {
         let mb = self.multibody();
-        Joints::from_fn(|i, _| {
+        Joints::from_fn(self.link_ids.len(), |i| {
             mb.link(self.link_ids[i])
                 .map_or(0.0, |link| mb.joint_velocity(link)[0])
         })

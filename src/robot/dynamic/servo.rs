@@ -23,7 +23,7 @@ impl DynamicSim {
 
     /// θ1..θ3 of the plan's pose.
     fn plan_theta(&self) -> Controlled {
-        self.plan.joints().fixed_rows::<3>(0).into_owned()
+        self.model().controlled_of(&self.plan.joints())
     }
 
     /// The joint limits of θ1..θ3 (rad): lower and upper.
@@ -91,7 +91,7 @@ impl DynamicSim {
         }
         let moving = !self.tracker().is_at_rest();
         let moves = self.settings.moves;
-        let here = self.joints().fixed_rows::<3>(0).into_owned();
+        let here = self.model().controlled_of(&self.joints());
         self.tracker = Some(SetPointTracker::at_rest(here, moves.speed, moves.accel));
         if moving {
             SimCounters::count(&self.counters.contact_stops);

@@ -45,7 +45,7 @@ impl DynamicSim {
         let dt = self.settings.dt;
         let lead = self.acceleration_lead();
         let ticks = (profile.duration() / dt).ceil() as usize;
-        let from = start.fixed_rows::<3>(0).into_owned();
+        let from = self.model().controlled_of(start);
         let at = |k: usize| profile.fraction_at(k as f64 * dt);
         let (mut now, mut next) = (
             self.set_point(&from, delta, 0.0),
@@ -74,7 +74,7 @@ impl DynamicSim {
     /// it settled (a time-out is counted), and the steps taken (at least one).
     pub(super) fn settle(&mut self) -> (bool, usize) {
         let target = self.plan.joints();
-        let still = Joints::zeros();
+        let still = Joints::zeros(target.len());
         let limit = self.settings.settle_steps().max(1);
         for step in 1..=limit {
             self.tick(&target, &still);

@@ -192,7 +192,7 @@ impl Simulator for DynamicSim {
         let (steps, touched) = self.follow(&start, &report.executed);
         if touched {
             // Stopped where the contact found the arm: the plan follows.
-            let reached = self.arm.joints().fixed_rows::<3>(0).into_owned();
+            let reached = self.model().controlled_of(&self.arm.joints());
             if self.plan.place(&reached).is_ok() {
                 report.stopped_by_contact = true;
                 report.stopped_by_limit = None;
@@ -204,7 +204,7 @@ impl Simulator for DynamicSim {
         let (settled, settle_steps) = self.settle();
         report.settled = settled;
         report.duration = (steps + settle_steps) as f64 * self.settings.dt;
-        report.executed = (self.arm.joints() - before).fixed_rows::<3>(0).into_owned();
+        report.executed = self.model().controlled_of(&(self.arm.joints() - before));
         report
     }
 

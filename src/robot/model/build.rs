@@ -1,0 +1,160 @@
+//! An [`ArmModel`] from any robot description: the chain to the camera link, the camera
+//! mounted where the settings say, the three learned joints named by the settings.
+
+use super::ArmModel;
+use crate::robot::description::{
+    Chain, DescriptionError, DescriptionErrorKind as Kind, Geometry, GeometryElement, JointKind,
+    RobotDescription,
+};
+use crate::robot::joint::{LinkBody, RevoluteJoint, Shape};
+use crate::robot::MAX_JOINTS;
+use nalgebra::{Isometry3, Point3, Translation3, Vector3};
+
+/// Which part of a robot description is the arm, and where its camera sits.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ArmSettings {
+    /// The link the camera is fixed to; the chain from the root to it is the arm.
+    /// Default `camera_link` (the OSCAR-6's).
+    pub camera_link: String,
+    /// The camera centre in the camera link's frame (m), its axes the link's (z the
+    /// optical axis). Default 0, 0, 0.
+    pub camera_offset: Vector3<f64>,
+    /// The three learned joints by name: the study's base yaw, shoulder and elbow.
+    /// Default `joint_1`, `joint_2`, `joint_3` (the OSCAR-6's).
+    pub learned_joints: [String; 3],
+}
+
+impl Default for ArmSettings {
+    fn default() -> ArmSettings {
+        ArmSettings {
+            camera_link: "camera_link".to_string(),
+            camera_offset: Vector3::zeros(),
+            learned_joints: ["joint_1", "joint_2", "joint_3"].map(String::from),
+        }
+    }
+}
+
+impl ArmModel {
+    /// The arm `settings` pick out of `description`: every moving joint on the chain to the
+    /// camera link (revolute or continuous, at most [`MAX_JOINTS`]), each body's links
+    /// merged, meshes seen by the floor rule as their bounding boxes.
+    pub fn from_description(
+        description: &RobotDescription,
+        settings: &ArmSettings,
+    ) -> Result<ArmModel, DescriptionError> {
+        let chain = Chain::new(description, &settings.camera_link)?;
+        let names = settings.learned_joints.each_ref().map(String::as_str);
+        let learned = chain.learned_joints(description, &names)?;
+        let fail = |kind| DescriptionError {
+            file: description.file.clone(),
+            kind,
+        };
+        if chain.joints.len() > MAX_JOINTS {
+            return Err(fail(Kind::TooManyJoints {
+                found: chain.joints.len(),
+                max: MAX_JOINTS,
+            }));
+        }
+        let mut joints = Vec::with_capacity(chain.joints.len());
+        for joint in &chain.joints {
+            if joint.kind == JointKind::Prismatic {
+                return Err(fail(Kind::PrismaticOnChain {
+                    joint: joint.name.clone(),
+                }));
+            }
+            joints.push(RevoluteJoint {
+                name: joint.name.clone(),
+                origin: joint.origin,
+                axis: joint.axis,
+                lower: joint.limits.lower,
+                upper: joint.limits.upper,
+                effort: joint.limits.effort.unwrap_or(f64::INFINITY),
+                velocity: joint.limits.velocity.unwrap_or(f64::INFINITY),
+                damping: joint.dynamics.damping,
+                friction: joint.dynamics.friction,
+            });
+        }
+        let mut links: Vec<LinkBody> = chain
+            .bodies
+            .iter()
+            .map(|body| {
+                let (first, _) = body.links[0];
+                LinkBody {
+                    name: description.links[first].name.clone(),
+                    mass: body.inertial.mass,
+                    inertial_origin: Isometry3::from(Translation3::from(body.inertial.com.coords)),
+                    inertia: body.inertial.inertia,
+                    collisions: body
+                        .links
+                        .iter()
+                        .flat_map(|(link, pose)| {
+                            description.links[*link]
+                                .collisions
+                                .iter()
+                                .map(move |element| floor_shape(pose, element))
+                        })
+                        .collect(),
+                }
+            })
+            .collect();
+        links.push(LinkBody {
+            name: description.links[chain.camera_link].name.clone(),
+            mass: 0.0,
+            inertial_origin: Isometry3::identity(),
+            inertia: Default::default(),
+            collisions: Vec::new(),
+        });
+        let mount = if settings.camera_offset == Vector3::zeros() {
+            chain.camera_in_body
+        } else {
+            chain.camera_in_body * Translation3::from(settings.camera_offset)
+        };
+        ArmModel::from_parts(description.name.clone(), joints, learned, mount, links).map_err(
+            |_| {
+                fail(Kind::TooManyJoints {
+                    found: chain.joints.len(),
+                    max: MAX_JOINTS,
+                })
+            },
+        )
+    }
+}
+
+/// A collision element as the floor rule sees it, posed in its body: primitives as they
+/// are, a mesh as the bounding box of its convex hull.
+fn floor_shape(pose: &Isometry3<f64>, element: &GeometryElement) -> (Isometry3<f64>, Shape) {
+    let at = pose * element.origin;
+    match &element.geometry {
+        Geometry::Box { size } => (at, Shape::Cuboid(*size)),
+        Geometry::Cylinder { radius, length } => (
+            at,
+            Shape::Cylinder {
+                radius: *radius,
+                length: *length,
+            },
+        ),
+        Geometry::Capsule { radius, length } => (
+            at,
+            Shape::Capsule {
+                radius: *radius,
+                length: *length,
+            },
+        ),
+        Geometry::Sphere { radius } => (at, Shape::Sphere { radius: *radius }),
+        Geometry::Mesh(mesh) => {
+            let points = &mesh.hull.as_ref().unwrap_or(&mesh.mesh).vertices;
+            let (low, high) = points.iter().fold(
+                (
+                    Point3::from([f64::INFINITY; 3]),
+                    Point3::from([f64::NEG_INFINITY; 3]),
+                ),
+                |(low, high), p| (low.inf(p), high.sup(p)),
+            );
+            let centre = nalgebra::center(&low, &high);
+            (
+                at * Translation3::from(centre.coords),
+                Shape::Cuboid(high - low),
+            )
+        }
+    }
+}

@@ -1,10 +1,11 @@
 //! The command line: `eyehand run`, `plot`, `compare`, `sweep`, `check-config`, `fk`,
-//! `simulate` and `show`.
+//! `reach`, `simulate` and `show`.
 //! Flags are parsed here (validation only); each command hands resolved values to the
 //! library and turns the outcome into an exit code: 2 for bad input, 1 for a failed run,
 //! 130/143 for a run stopped by SIGINT/SIGTERM. Output goes through [`say`], so a closed
 //! pipe or a full disk behind stdout ends the program with a code, never a panic.
 
+mod reach;
 mod run;
 mod show;
 mod simulate;
@@ -35,8 +36,10 @@ enum Command {
     Sweep(study::SweepArgs),
     /// Checks a config file and reports the first error as file:line: reason.
     CheckConfig(tools::CheckConfigArgs),
-    /// Prints the camera centre (cm, world frame) and all six joint angles (°) of a pose.
+    /// Prints the camera centre (cm, world frame) and every joint angle (°) of a pose.
     Fk(tools::FkArgs),
+    /// Prints an arm's reach space, how much of it the arm covers and the pre-learning pose.
+    Reach(reach::ReachArgs),
     /// Runs the dynamic arm free from a pose (servos off or holding) and prints every tick.
     Simulate(simulate::SimulateArgs),
     /// Re-simulates trials of a run and draws them into RUN_DIR/show/N/.
@@ -92,6 +95,7 @@ pub fn execute(cli: Cli) -> ExitCode {
         Command::Sweep(args) => study::sweep(args),
         Command::CheckConfig(args) => tools::check_config(args),
         Command::Fk(args) => tools::fk(args),
+        Command::Reach(args) => reach::reach(args),
         Command::Simulate(args) => simulate::simulate(args),
         Command::Show(args) => show::show(args),
     };

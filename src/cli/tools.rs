@@ -2,8 +2,9 @@
 
 use super::{bad_input, failed, say, Failure};
 use crate::experiment::plot::plot_run;
+use crate::experiment::setup::load_arm;
 use crate::experiment::{preflight, Config, Event};
-use crate::robot::{load_urdf, ArmModel, Controlled};
+use crate::robot::{ArmModel, Controlled};
 use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
@@ -23,7 +24,7 @@ pub(super) struct CheckConfigArgs {
 
 #[derive(Debug, clap::Args)]
 pub(super) struct FkArgs {
-    /// θ1,θ2,θ3 in degrees (θ4 = θ6 = 0, θ5 keeps the camera vertical).
+    /// θ1,θ2,θ3 (the learned joints) in degrees; the wrist keeps the camera vertical.
     #[arg(
         long,
         value_delimiter = ',',
@@ -31,12 +32,15 @@ pub(super) struct FkArgs {
         required = true
     )]
     joints: Vec<f64>,
-    /// Prints JSON: {"camera_cm": [x, y, z], "joints_deg": [6 values]}.
+    /// Prints JSON: {"camera_cm": [x, y, z], "joints_deg": [every joint], "joint_names": [..]}.
     #[arg(long)]
     json: bool,
     /// The URDF (default: the shipped urdf/oscar6.urdf).
     #[arg(long)]
     urdf: Option<PathBuf>,
+    /// The config whose arm entries apply (default: configs/lin5.conf).
+    #[arg(long)]
+    config: Option<PathBuf>,
 }
 
 pub(super) fn plot(args: PlotArgs) -> Result<(), Failure> {
@@ -61,31 +65,38 @@ pub(super) fn check_config(args: CheckConfigArgs) -> Result<(), Failure> {
 }
 
 pub(super) fn fk(args: FkArgs) -> Result<(), Failure> {
-    let model = match &args.urdf {
-        Some(path) => load_urdf(path).map_err(bad_input)?,
-        None => ArmModel::oscar6(),
+    let config = match &args.config {
+        Some(path) => Config::from_file(path).map_err(bad_input)?,
+        None => Config::default_config(),
     };
+    let model = load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?;
     let [t1, t2, t3] = args.joints[..] else {
         return Err(bad_input("--joints takes three angles: t1,t2,t3"));
     };
     if let Some(bad) = args.joints.iter().find(|v| !v.is_finite()) {
         return Err(bad_input(format!("--joints: {bad} is not a finite angle")));
     }
-    let q = model.full_pose(&Controlled::new(t1, t2, t3).map(f64::to_radians));
+    let pose = model.pose_of(&Controlled::new(t1, t2, t3).map(f64::to_radians));
+    let q = pose.joints;
     let camera = model.camera_position(&q).coords * 100.0;
     let joints_deg: Vec<f64> = q.iter().map(|v| v.to_degrees()).collect();
+    let names: Vec<&str> = model.joints().iter().map(|j| j.name.as_str()).collect();
     if args.json {
-        let value = serde_json::json!({ "camera_cm": [camera.x, camera.y, camera.z], "joints_deg": joints_deg });
+        let value = serde_json::json!({ "camera_cm": [camera.x, camera.y, camera.z], "joints_deg": joints_deg, "joint_names": names });
         return say(&format!("{value}\n"));
     }
     let text: Vec<String> = joints_deg.iter().map(|v| format!("{v:.4}")).collect();
     let mut report = format!(
-        "camera_cm  {:.4} {:.4} {:.4}\njoints_deg {}\n",
+        "camera_cm  {:.4} {:.4} {:.4}\njoints_deg {}\njoint_names {}\n",
         camera.x,
         camera.y,
         camera.z,
-        text.join(" ")
+        text.join(" "),
+        names.join(" ")
     );
+    if !pose.wrist_found {
+        report += "warning: no wrist pose keeps the camera looking down there\n";
+    }
     if let Some(joint) = model.violated_limit(&q) {
         report += &format!("warning: joint {} is outside its limits\n", joint + 1);
     }

@@ -8,11 +8,9 @@
 //! three joints.
 
 use crate::camera::CameraModel;
-use crate::robot::{ArmModel, Controlled};
+use crate::robot::{ArmModel, Controlled, ReachSpace};
 use nalgebra::{Point3, Vector3};
 
-/// Where the camera is at the end of every pre-learning move (m): mid-radius, mid-height.
-const BASE_GOAL: [f64; 3] = [0.695, 0.0, 0.26];
 /// The offsets (degrees) of the start poses from the base pose.
 const OFFSETS_DEG: [f64; 3] = [8.0, 5.0, 6.0];
 
@@ -26,12 +24,13 @@ pub struct PrelearnMove {
 }
 
 /// The object's centre and the 8 pre-learning moves, or `None` when the model cannot
-/// reach the base pose.
+/// reach the base pose, whose camera is at the middle of `reach`.
 pub fn prelearning_moves(
     model: &ArmModel,
     camera: &CameraModel,
+    reach: &ReachSpace,
 ) -> Option<(Point3<f64>, Vec<PrelearnMove>)> {
-    let goal = Point3::from(BASE_GOAL);
+    let goal = reach.prelearning_goal();
     let base = model.solve_camera_position(&goal).ok()?;
     let object = goal - Vector3::z() * camera.standoff;
     let moves = (0..8)
@@ -56,7 +55,8 @@ mod tests {
     fn every_move_sees_the_object_and_ends_at_the_target() {
         let model = ArmModel::oscar6();
         let camera = ProjectionCamera::default();
-        let (object, moves) = prelearning_moves(&model, camera.model()).unwrap();
+        let (object, moves) =
+            prelearning_moves(&model, camera.model(), &ReachSpace::OSCAR6).unwrap();
         assert_eq!(moves.len(), 8);
         for m in &moves {
             let start = model.check_limits(&m.start).unwrap();

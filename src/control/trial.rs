@@ -110,6 +110,17 @@ impl TrialLoop {
         }
     }
 
+    /// This loop with targets drawn from `reach` (the study's space by default).
+    pub fn with_reach(mut self, reach: ReachSpace) -> TrialLoop {
+        self.reach = reach;
+        self
+    }
+
+    /// The reach space targets are drawn from.
+    pub fn reach(&self) -> &ReachSpace {
+        &self.reach
+    }
+
     /// Restarts the random generator from `seed`, as a new loop would start it.
     pub fn reseed(&mut self, seed: u64) {
         self.rng = ChaCha8Rng::seed_from_u64(seed);
@@ -296,7 +307,7 @@ impl TrialLoop {
             .read_in(&self.sim.camera_pose(), object, &self.sim.world())?;
         let q = self.sim.joints();
         let exact = Observation {
-            theta_deg: Vector3::new(q[0], q[1], q[2]).map(f64::to_degrees),
+            theta_deg: self.sim.model().controlled_of(&q).map(f64::to_degrees),
             c,
         };
         Ok(self.sensors.report(exact, self.camera.model()))
@@ -307,10 +318,8 @@ impl TrialLoop {
     pub(super) fn look(&mut self, object: &Point3<f64>) -> Sight {
         self.observe(object).map_err(|not_seen| {
             let q = self.sim.joints();
-            (
-                not_seen,
-                Vector3::new(q[0], q[1], q[2]).map(f64::to_degrees),
-            )
+            let exact = self.sim.model().controlled_of(&q).map(f64::to_degrees);
+            (not_seen, exact)
         })
     }
 
@@ -357,7 +366,8 @@ impl TrialLoop {
     /// Drops any trial going on unlearned.
     pub fn prelearn(&mut self, learner: &mut dyn Learner) -> Result<(), LearnError> {
         self.active = None;
-        let Some((object, moves)) = super::prelearning_moves(self.sim.model(), self.camera.model())
+        let Some((object, moves)) =
+            super::prelearning_moves(self.sim.model(), self.camera.model(), &self.reach)
         else {
             return Ok(());
         };

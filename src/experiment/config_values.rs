@@ -71,6 +71,90 @@ macro_rules! named_value {
 }
 named_value!(Method, SimKind, CameraKind, MergeStrategy, ServoMode);
 
+/// `parts` comma-separated items of `raw`, each parsed by `item`; `expected` names the form.
+fn list<T, const N: usize>(
+    raw: &str,
+    expected: &'static str,
+    item: impl Fn(&str) -> Option<T>,
+) -> Result<[T; N], ValueError> {
+    let bad = || ValueError::BadList {
+        text: raw.to_string(),
+        expected,
+    };
+    let items: Vec<T> = raw
+        .split(',')
+        .map(|part| item(part.trim()).ok_or_else(bad))
+        .collect::<Result<_, _>>()?;
+    items.try_into().map_err(|_| bad())
+}
+
+fn finite(part: &str) -> Option<f64> {
+    part.parse::<f64>().ok().filter(|v| v.is_finite())
+}
+
+fn name(part: &str) -> Option<String> {
+    (!part.is_empty()).then(|| part.to_string())
+}
+
+/// A URDF link or joint name (one word).
+impl ConfigValue for String {
+    fn parse_value(raw: &str) -> Result<Self, ValueError> {
+        Ok(raw.to_string())
+    }
+    fn render(&self) -> String {
+        self.clone()
+    }
+}
+
+/// Three reals `x,y,z`.
+impl ConfigValue for [f64; 3] {
+    fn parse_value(raw: &str) -> Result<Self, ValueError> {
+        list(raw, "three real numbers x,y,z", finite)
+    }
+    fn render(&self) -> String {
+        self.map(|v| format!("{v:?}")).join(",")
+    }
+}
+
+/// Three names `a,b,c`.
+impl ConfigValue for [String; 3] {
+    fn parse_value(raw: &str) -> Result<Self, ValueError> {
+        list(raw, "three joint names a,b,c", name)
+    }
+    fn render(&self) -> String {
+        self.join(",")
+    }
+}
+
+/// The reach space: fitted to the arm, or given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ReachSetting {
+    /// The study's shape scaled to what the arm reaches with the camera looking down.
+    Auto,
+    /// r_min, r_max, z_min, z_max (cm).
+    Given([f64; 4]),
+}
+
+impl ConfigValue for ReachSetting {
+    fn parse_value(raw: &str) -> Result<Self, ValueError> {
+        if raw == "auto" {
+            return Ok(ReachSetting::Auto);
+        }
+        list(
+            raw,
+            "`auto` or four real numbers r_min,r_max,z_min,z_max (cm)",
+            finite,
+        )
+        .map(ReachSetting::Given)
+    }
+    fn render(&self) -> String {
+        match self {
+            ReachSetting::Auto => "auto".to_string(),
+            ReachSetting::Given(values) => values.map(|v| format!("{v:?}")).join(","),
+        }
+    }
+}
+
 /// Which simulator moves the arm.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum SimKind {
@@ -227,6 +311,22 @@ mod tests {
                 "{bad}"
             );
         }
+    }
+
+    #[test]
+    fn lists_parse_their_items_and_say_what_they_take() {
+        assert_eq!(<[f64; 3]>::parse_value("1,-2.5, 3"), Ok([1.0, -2.5, 3.0]));
+        assert!(matches!(
+            <[f64; 3]>::parse_value("1,2"),
+            Err(ValueError::BadList { .. })
+        ));
+        let names = <[String; 3]>::parse_value("a,b,c").unwrap();
+        assert_eq!(names.render(), "a,b,c");
+        assert!(<[String; 3]>::parse_value("a,,c").is_err());
+        assert_eq!(ReachSetting::parse_value("auto"), Ok(ReachSetting::Auto));
+        let given = ReachSetting::parse_value("46,93,0,52").unwrap();
+        assert_eq!(ReachSetting::parse_value(&given.render()), Ok(given));
+        assert!(ReachSetting::parse_value("46,93,nan,52").is_err());
     }
 
     #[test]

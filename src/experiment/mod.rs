@@ -26,7 +26,7 @@ pub use config::{
     Config, ConfigError, ConfigErrorKind, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES,
     REPEATED_ENTRY_NAMES,
 };
-pub use config_values::{CameraKind, ObstacleBox, SimKind};
+pub use config_values::{CameraKind, ObstacleBox, ReachSetting, SimKind};
 pub use events::{Event, EventError};
 pub use failures::FailureTally;
 pub use interrupt::StopRequest;

@@ -2,7 +2,8 @@
 //! run's trials and the robot, and that the arm (as the URDF and each link event leave it)
 //! reaches its reach space with the camera looking down.
 
-use super::{Config, ConfigErrorKind, Event};
+use super::setup::reach_space;
+use super::{Config, ConfigErrorKind, Event, SimKind};
 use crate::robot::{ArmModel, ReachSpace, RobotError};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -30,6 +31,15 @@ pub enum PreflightError {
         /// Why the robot cannot undergo it.
         source: RobotError,
     },
+    /// `reach_space auto` and no part of the study's shape fits what the arm reaches.
+    #[error("reach_space auto: no half annulus of the study's shape fits inside what this arm reaches with the camera looking down above the floor")]
+    NoReachSpace,
+    /// The dynamic simulator with an arm not of the OSCAR-6 form.
+    #[error("sim dynamic: the dynamic simulator takes only arms of the OSCAR-6 form so far (six joints, the first three learned, one wrist joint); this arm has {joints} joints")]
+    DynamicArm {
+        /// The arm's joints.
+        joints: usize,
+    },
     /// The arm cannot reach (enough of) its reach space.
     #[error(
         "{reachable} of {sampled} sampled reach-space points are reachable by this arm with the camera looking down{} (at least {:.0}% are needed)",
@@ -48,11 +58,11 @@ pub enum PreflightError {
 
 /// Reach-space points (of `samples` drawn with a fixed seed) at which `model` puts its
 /// camera with every joint inside its limits, elbow up, looking down.
-pub fn reachable_points(model: &ArmModel, samples: usize) -> usize {
+pub fn reachable_points(model: &ArmModel, reach: &ReachSpace, samples: usize) -> usize {
     let mut rng = ChaCha8Rng::seed_from_u64(REACH_SEED);
     (0..samples)
         .filter(|_| {
-            let point = ReachSpace::OSCAR6.sample(&mut rng);
+            let point = reach.sample(&mut rng);
             model.solve_camera_position(&point).is_ok()
         })
         .count()
@@ -73,7 +83,13 @@ pub fn preflight(
         }
         .into());
     }
-    check_reach(model, None)?;
+    if config.sim == SimKind::Dynamic && !model.is_oscar6_form() {
+        return Err(PreflightError::DynamicArm {
+            joints: model.dof(),
+        });
+    }
+    let reach = reach_space(config, model).ok_or(PreflightError::NoReachSpace)?;
+    check_reach(model, &reach, None)?;
     let mut changed = model.clone();
     for event in events {
         if let Event::Elongate { link, cm, .. } = *event {
@@ -83,14 +99,18 @@ pub fn preflight(
                     event: *event,
                     source,
                 })?;
-            check_reach(&changed, Some(*event))?;
+            check_reach(&changed, &reach, Some(*event))?;
         }
     }
     Ok(())
 }
 
-fn check_reach(model: &ArmModel, after: Option<Event>) -> Result<(), PreflightError> {
-    let reachable = reachable_points(model, REACH_SAMPLES);
+fn check_reach(
+    model: &ArmModel,
+    reach: &ReachSpace,
+    after: Option<Event>,
+) -> Result<(), PreflightError> {
+    let reachable = reachable_points(model, reach, REACH_SAMPLES);
     if (reachable as f64) < MIN_REACHABLE_SHARE * REACH_SAMPLES as f64 {
         return Err(PreflightError::Unreachable {
             reachable,
@@ -107,7 +127,10 @@ mod tests {
 
     #[test]
     fn the_oscar6_reaches_every_sampled_point() {
-        assert_eq!(reachable_points(&ArmModel::oscar6(), 200), 200);
+        assert_eq!(
+            reachable_points(&ArmModel::oscar6(), &ReachSpace::OSCAR6, 200),
+            200
+        );
     }
 
     #[test]

@@ -6,7 +6,9 @@ use super::interrupt::StopRequest;
 use super::output::DataFiles;
 use super::plot::{plot_run, PlotError};
 use super::progress::RunProgress;
-use super::setup::{build_camera, build_learner, build_simulator, trial_settings};
+use super::setup::{
+    build_camera, build_learner, build_simulator, load_arm, reach_space, trial_settings,
+};
 use super::summary::{RunSummary, SensorSummary};
 use super::StepFigures;
 use super::{
@@ -15,7 +17,7 @@ use super::{
 };
 use crate::control::{TrialLoop, TrialOutcome};
 use crate::learn::{LearnError, Learner, LearnerStats};
-use crate::robot::{load_urdf, ArmModel, RobotError, UrdfError};
+use crate::robot::{ArmModel, RobotError, UrdfError};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -146,10 +148,7 @@ fn run_folder(options: &RunOptions, name: &str) -> Result<PathBuf, RunFolderErro
 /// The robot the run's URDF describes (the shipped OSCAR-6 without one), once it, the
 /// config and the events pass the checks made before a run starts.
 fn load_model(options: &RunOptions) -> Result<ArmModel, RunError> {
-    let model = match &options.urdf {
-        Some(path) => load_urdf(path)?,
-        None => ArmModel::oscar6(),
-    };
+    let model = load_arm(&options.config, options.urdf.as_deref())?;
     preflight(&options.config, &model, &run_events(options))?;
     Ok(model)
 }
@@ -170,12 +169,14 @@ fn drive(
     mut learner: Box<dyn Learner>,
 ) -> Result<RunResult, RunError> {
     let config = &options.config;
+    let reach = reach_space(config, &model).expect("checked before the run");
     let sim = build_simulator(config, model);
     let camera = build_camera(config);
     let events = run_events(options);
     write_info_header(&folder, options, &events)?;
 
-    let mut trials = TrialLoop::new(sim, camera, trial_settings(config), config.seed);
+    let mut trials =
+        TrialLoop::new(sim, camera, trial_settings(config), config.seed).with_reach(reach);
     let mut files = DataFiles::create(&folder)?;
     let mut figures = StepFigures::new(config.trials, config.feedback_steps);
     let mut failures = FailureTally::default();

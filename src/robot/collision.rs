@@ -84,7 +84,8 @@ pub(crate) fn reach(model: &ArmModel, bodies: &[Elements]) -> f64 {
     chain + model.camera_mount().translation.vector.norm() + shapes
 }
 
-/// How far along the controlled move from `theta` by `delta` (fractions up to `up_to`)
+/// How far along the controlled move from every joint at `start` by `delta`
+/// (fractions up to `up_to`)
 /// the arm gets before a link or the camera would go below `floor` (m): `up_to` when
 /// none does, or when the arm starts below it. Marches in steps that cannot skip a dip
 /// (each no longer than the clearance over `reach` allows), then bisects the crossing.
@@ -92,14 +93,18 @@ pub(crate) fn floor_stop(
     model: &ArmModel,
     bodies: &[Elements],
     reach: f64,
-    theta: &Controlled,
+    start: &Joints,
     delta: &Controlled,
     up_to: f64,
     floor: f64,
 ) -> f64 {
+    let theta = &model.controlled_of(start);
+    // A numerical wrist starts from the last pose looked at.
+    let near = std::cell::Cell::new(*start);
     let clearance = |s: f64| {
-        let pose = model.pose_of(&(theta + delta * s));
+        let pose = model.pose_near(&(theta + delta * s), &near.get());
         if pose.wrist_found {
+            near.set(pose.joints);
             lowest_point(model, bodies, &pose.joints) - floor
         } else {
             f64::NAN

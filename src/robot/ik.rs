@@ -63,12 +63,18 @@ impl ArmModel {
             return Err(unreachable("the target is not a finite point"));
         }
         let mut failure: Option<String> = None;
-        let starts = self.closed_form_guess(target).into_iter().chain(
-            (!self.is_oscar6_form())
-                .then(|| self.seeds(target))
-                .into_iter()
-                .flatten(),
-        );
+        let tabled = (!self.is_oscar6_form())
+            .then(|| self.ik_seeds().nearest(self, target))
+            .flatten();
+        let starts = tabled
+            .into_iter()
+            .chain(self.closed_form_guess(target))
+            .chain(
+                (!self.is_oscar6_form())
+                    .then(|| self.seeds(target))
+                    .into_iter()
+                    .flatten(),
+            );
         for start in starts {
             match self.newton_from(start, target) {
                 Ok(theta) => return Ok(theta),
@@ -94,13 +100,14 @@ impl ArmModel {
         mut theta: Controlled,
         target: &Point3<f64>,
     ) -> Result<Controlled, String> {
-        let mut near = self.rest();
         for _ in 0..MAX_NEWTON_STEPS {
-            let pose = self.pose_near(&theta, &near);
+            // The wrist solved from rest, as `place` solves it: the same pose for the
+            // same angles whatever came before.
+            let pose = self.pose_of(&theta);
             if !pose.wrist_found {
                 return Err("no wrist pose keeps the camera looking down on the way".into());
             }
-            near = pose.joints;
+            let near = pose.joints;
             let here = camera_centre(&pose);
             let residual = here - target;
             if residual.norm() < TOLERANCE_M {
@@ -111,8 +118,10 @@ impl ArmModel {
                     .map_err(|e| e.to_string())?;
                 return Ok(theta);
             }
-            let step = self
-                .position_jacobian(&theta, &here.coords, &near)
+            let jacobian = self
+                .followed_jacobian(&pose.joints)
+                .unwrap_or_else(|| self.position_jacobian(&theta, &here.coords, &near));
+            let step = jacobian
                 .lu()
                 .solve(&residual)
                 .ok_or("the arm is singular there")?;

@@ -174,7 +174,7 @@ impl Simulator for KinematicSim {
             &self.model,
             &self.collision,
             self.reach,
-            &self.theta,
+            &self.joints,
             delta,
             fraction,
             self.settings.floor_z,

@@ -26,6 +26,19 @@ impl ReachSpace {
         z_max: 0.52,
     };
 
+    /// Where the camera is at the end of every pre-learning move: the middle of the space
+    /// (mid-radius on the x axis, mid-height); for the study's space its 69.5, 0, 26 cm.
+    pub fn prelearning_goal(&self) -> Point3<f64> {
+        if *self == ReachSpace::OSCAR6 {
+            return Point3::new(0.695, 0.0, 0.26);
+        }
+        Point3::new(
+            0.5 * (self.r_min + self.r_max),
+            0.0,
+            0.5 * (self.z_min + self.z_max),
+        )
+    }
+
     /// True when `p` lies inside.
     pub fn contains(&self, p: &Point3<f64>) -> bool {
         let r = p.x.hypot(p.y);

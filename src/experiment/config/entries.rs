@@ -2,7 +2,9 @@
 
 use super::ConfigErrorKind;
 use crate::control::ServoMode;
-use crate::experiment::config_values::{CameraKind, ConfigValue, ObstacleBox, SimKind};
+use crate::experiment::config_values::{
+    CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind,
+};
 use crate::learn::{MergeStrategy, Method};
 
 config_entries! {
@@ -137,6 +139,14 @@ config_entries! {
     /// Height of the floor (cm, world frame): a move stops where a link or the camera
     /// would go below it, in both simulators; default −22 (the lowest target's bottom).
     floor_z: f64,
+    /// The link the camera is fixed to; the chain from the URDF's root to it is the arm.
+    camera_link: String,
+    /// The camera centre in the camera link's frame (cm, x,y,z); its axes are the link's.
+    camera_offset: [f64; 3],
+    /// The three learned joints (base yaw, shoulder, elbow) by URDF name, a,b,c.
+    learned_joints: [String; 3],
+    /// The camera's reach space: `auto` (fitted to the arm) or r_min,r_max,z_min,z_max (cm).
+    reach_space: ReachSetting,
     /// Raycast camera: rays per image side (the 512×512 image is sampled N×N).
     raycast_resolution: usize,
     /// Raycast camera: σ of each pixel's grey level (coverage 0–1) before the blob is

@@ -147,6 +147,14 @@ pub enum ValueError {
         /// What is wrong with it.
         reason: String,
     },
+    /// Not the comma-separated list the entry takes; `expected` says what it takes.
+    #[error("`{}` is not {expected}", shown(.text))]
+    BadList {
+        /// The text given.
+        text: String,
+        /// What the entry takes.
+        expected: &'static str,
+    },
 }
 
 /// `text`, cut to its first characters when it is long, saying how long it was.

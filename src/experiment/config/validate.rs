@@ -6,7 +6,7 @@ mod sensing;
 
 use super::memory::machine_memory;
 use super::{Config, ConfigErrorKind};
-use crate::experiment::config_values::ConfigValue;
+use crate::experiment::config_values::{ConfigValue, ReachSetting};
 
 /// Most feedback steps a trial may take: a trial learns every pair of its poses, so
 /// N steps give N(N+1)/2 patterns (500,500 at 1000).
@@ -77,7 +77,35 @@ impl Config {
         self.check_sensors()?;
         self.check_timing()?;
         self.check_networks()?;
+        self.check_arm()?;
         self.check_lwpr()
+    }
+
+    /// The arm entries on their own; whether the URDF has such a link and joints is
+    /// checked when the arm is read.
+    fn check_arm(&self) -> Check {
+        rule(
+            self.camera_offset.iter().all(|v| v.abs() <= 1000.0),
+            "camera_offset",
+            &self.camera_offset,
+            "must be within 1000 cm of the camera link's origin on each axis",
+        )?;
+        let [a, b, c] = &self.learned_joints;
+        rule(
+            a != b && b != c && a != c,
+            "learned_joints",
+            &self.learned_joints,
+            "must name three different joints",
+        )?;
+        if let ReachSetting::Given([r_min, r_max, z_min, z_max]) = self.reach_space {
+            rule(
+                (0.0..r_max).contains(&r_min) && r_max <= 10_000.0 && z_min < z_max,
+                "reach_space",
+                &self.reach_space,
+                "must be `auto` or r_min,r_max,z_min,z_max with 0 ≤ r_min < r_max ≤ 10000 cm and z_min < z_max",
+            )?;
+        }
+        Ok(())
     }
 
     fn check_inputs(&self) -> Check {

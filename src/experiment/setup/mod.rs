@@ -1,8 +1,10 @@
 //! Setting a run up: the one place where a [`Config`] becomes the simulator, the camera,
 //! the learner and the trial loop's settings.
 
+mod arm;
 mod learners;
 
+pub use arm::{arm_settings, fit_reach, load_arm, reach_space};
 pub use learners::{
     ffn_settings, input_bounds, kohonen_settings, lin5_settings, lin8_settings, lwpr_settings,
     nnw_settings,

@@ -3,8 +3,9 @@
 //! `nodes` file one line per finished trial.
 
 use super::ShowError;
+use crate::experiment::setup::load_arm;
 use crate::experiment::{Config, Event};
-use crate::robot::{load_urdf, ArmModel, DEFAULT_URDF_NAME};
+use crate::robot::{ArmModel, DEFAULT_URDF_NAME};
 use std::path::{Path, PathBuf};
 
 /// A finished (or interrupted) run, as its folder records it.
@@ -55,8 +56,8 @@ impl RecordedRun {
         }
         let model = match urdf.as_deref() {
             None => return Err(bad("no `urdf` line".into())),
-            Some(DEFAULT_URDF_NAME) => ArmModel::oscar6(),
-            Some(path) => load_urdf(Path::new(path))?,
+            Some(DEFAULT_URDF_NAME) => load_arm(&config, None)?,
+            Some(path) => load_arm(&config, Some(Path::new(path)))?,
         };
         let nodes = std::fs::read_to_string(folder.join("nodes")).unwrap_or_default();
         Ok(RecordedRun {

@@ -6,6 +6,7 @@ use super::watch::{Look, SharedLog, WatchLog, WatchedCamera, WatchedSim};
 use super::{RecordedRun, ShowError};
 use crate::control::{Failure, TrialLoop, TrialOutcome};
 use crate::experiment::run::next_trial;
+use crate::experiment::setup::reach_space;
 use crate::experiment::setup::{build_camera, build_learner, build_simulator, trial_settings};
 use crate::experiment::Event;
 use crate::learn::ModelEvent;
@@ -49,12 +50,16 @@ pub fn replay(
     let camera = WatchedCamera::new(build_camera(config), log.clone());
     let mut learner = build_learner(config, &run.model, Some(scratch))
         .map_err(crate::experiment::RunError::from)?;
+    let reach = reach_space(config, &run.model)
+        .ok_or(crate::experiment::PreflightError::NoReachSpace)
+        .map_err(crate::experiment::RunError::from)?;
     let mut trials = TrialLoop::new(
         Box::new(sim),
         Box::new(camera),
         trial_settings(config),
         config.seed,
-    );
+    )
+    .with_reach(reach);
     let mut model_events: Vec<ModelEvent> = Vec::new();
     learner.start_trial(0);
     trials

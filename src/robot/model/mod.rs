@@ -11,6 +11,7 @@ pub use frames::Frames;
 pub use wrist::Wrist;
 
 use super::ik::GuessGeometry;
+use super::ik_seeds::IkSeeds;
 use super::joint::{LinkBody, RevoluteJoint};
 use super::joint_vector::{Joints, MAX_JOINTS};
 use super::RobotError;
@@ -56,6 +57,8 @@ pub struct ArmModel {
     wrist: Wrist,
     /// The link lengths the inverse kinematics starts from, kept up to date with the links.
     guess: GuessGeometry,
+    /// Starting poses of the inverse kinematics of an arm not of the OSCAR-6 form.
+    seeds: IkSeeds,
 }
 
 impl ArmModel {
@@ -104,8 +107,10 @@ impl ArmModel {
             rest,
             wrist: Wrist::None,
             guess: GuessGeometry::default(),
+            seeds: IkSeeds::default(),
         };
         model.wrist = Wrist::choose(&model);
+        model.rest = model.wrist.held_rest(&model);
         model.update_derived();
         Ok(model)
     }
@@ -117,6 +122,14 @@ impl ArmModel {
         let wrist = self.wrist;
         wrist.settle_rest(self);
         self.guess = GuessGeometry::of(self);
+        if !self.is_oscar6_form() {
+            self.seeds = IkSeeds::of(self);
+        }
+    }
+
+    /// Starting poses of the inverse kinematics.
+    pub(super) fn ik_seeds(&self) -> &IkSeeds {
+        &self.seeds
     }
 
     /// The link lengths the inverse kinematics starts from.

@@ -4,7 +4,7 @@
 //! otherwise up to three joints are solved by Newton steps on the camera's orientation,
 //! warm-started from the last pose, and any further joint is held at rest.
 
-use super::{ArmModel, ArmPose, Controlled, Frames, Joints};
+use super::{ArmModel, ArmPose, Controlled, Frames, Joints, MAX_JOINTS};
 use nalgebra::{Isometry3, Matrix3, Rotation3, UnitQuaternion, Vector3};
 
 /// Orientation error (rad) at which a numerical wrist solution is accepted.
@@ -17,6 +17,11 @@ const MAX_STEP_RAD: f64 = 0.5;
 const ONE_JOINT_TOLERANCE_RAD: f64 = 1e-9;
 /// Test poses per learned joint when deciding whether one joint can do the wrist's work.
 const TEST_STEPS: usize = 4;
+/// The damping of the wrist's least-squares steps.
+const DAMPING: f64 = 1e-12;
+/// The least conditioning (smallest singular value of the wrist's turning axes) a set of
+/// wrist joints needs to be solved by Newton steps.
+const MIN_CONDITIONING: f64 = 0.3;
 /// Cameras closer than this to the base's z axis have no radial direction (m).
 const MIN_RADIUS: f64 = 1e-6;
 
@@ -50,13 +55,70 @@ impl Wrist {
         if let Some(found) = one_joint {
             return found;
         }
+        let theta = reference_angles(model);
+        let level = model.with_learned(&theta);
+        let frames = model.link_frames(&level);
+        // The last three (or fewer) joints solve the reference pose; if two of them turn
+        // the camera about one axis there, the best-conditioned two or one of them are
+        // solved instead and the others held where that solution put them.
         let count = wrist.len().min(3);
         if count == 0 {
             return Wrist::None;
         }
         let mut joints = [0; 3];
         joints[..count].copy_from_slice(&wrist[wrist.len() - count..]);
-        Wrist::Numerical { joints, count }
+        let all = Wrist::Numerical { joints, count };
+        let home = all.solve(model, &theta, frames, &level);
+        if !home.wrist_found || conditioning(model, &all, &home.joints) > MIN_CONDITIONING {
+            return all;
+        }
+        let mut held = model.clone();
+        held.rest = home.joints;
+        for smaller in (1..count).rev() {
+            for subset in subsets(&joints[..count], smaller) {
+                let mut chosen = [0; 3];
+                chosen[..smaller].copy_from_slice(&subset);
+                let candidate = Wrist::Numerical {
+                    joints: chosen,
+                    count: smaller,
+                };
+                if conditioning(&held, &candidate, &home.joints) > MIN_CONDITIONING {
+                    return candidate;
+                }
+            }
+        }
+        all
+    }
+
+    /// The rest angles of the joints this wrist holds: where the solution of the reference
+    /// pose with every wrist joint free puts them.
+    pub(super) fn held_rest(&self, model: &ArmModel) -> Joints {
+        let mut rest = model.rest;
+        let Wrist::Numerical { count, .. } = *self else {
+            return rest;
+        };
+        let wrist: Vec<usize> = (0..model.dof())
+            .filter(|i| !model.learned.contains(i))
+            .collect();
+        let all_count = wrist.len().min(3);
+        if count == all_count {
+            return rest;
+        }
+        let mut joints = [0; 3];
+        joints[..all_count].copy_from_slice(&wrist[wrist.len() - all_count..]);
+        let all = Wrist::Numerical {
+            joints,
+            count: all_count,
+        };
+        let theta = reference_angles(model);
+        let level = model.with_learned(&theta);
+        let home = all.solve(model, &theta, model.link_frames(&level), &level);
+        if home.wrist_found {
+            for &j in &joints[..all_count] {
+                rest[j] = home.joints[j];
+            }
+        }
+        rest
     }
 
     /// True when this wrist meets the orientation goal at a grid of learned poses inside
@@ -91,15 +153,7 @@ impl Wrist {
         let Wrist::Numerical { .. } = *self else {
             return;
         };
-        let theta = Controlled::from_fn(|i, _| {
-            let joint = &model.joints[model.learned[i]];
-            let middle = 0.5 * (joint.lower + joint.upper);
-            if middle.is_finite() {
-                middle
-            } else {
-                0.0
-            }
-        });
+        let theta = reference_angles(model);
         let level = model.with_learned(&theta);
         let pose = self.solve(model, &theta, model.link_frames(&level), &level);
         if pose.wrist_found {
@@ -166,19 +220,26 @@ impl Wrist {
                     wrist_found: angle.is_finite(),
                 }
             }
-            Wrist::Numerical { .. } => {
+            Wrist::Numerical { joints: solved, .. } => {
+                let first = solved[0];
+                let prefix = if first == 0 {
+                    Isometry3::identity()
+                } else {
+                    level_frames[first - 1]
+                };
                 for j in self.solved() {
                     joints[j] = near[j];
                 }
-                let mut found = newton(model, self, &mut joints);
-                if !found && near != &model.rest {
+                let mut flange = newton(model, self, &prefix, &mut joints);
+                if flange.is_none() && near != &model.rest {
                     joints = model.with_learned(theta);
-                    found = newton(model, self, &mut joints);
+                    flange = newton(model, self, &prefix, &mut joints);
                 }
+                let found = flange.is_some();
                 if found {
                     wrap_into_limits(model, self, &mut joints);
                 }
-                let flange = model.link_frames(&joints).last();
+                let flange = flange.unwrap_or_else(|| model.link_frames(&joints).last());
                 ArmPose {
                     joints,
                     camera: flange * model.camera_mount(),
@@ -188,6 +249,49 @@ impl Wrist {
             }
         }
     }
+}
+
+/// The learned angles the wrist is chosen and settled at: the middle of each learned
+/// joint's limits (0 for a joint without).
+fn reference_angles(model: &ArmModel) -> Controlled {
+    Controlled::from_fn(|i, _| {
+        let joint = &model.joints[model.learned[i]];
+        let middle = 0.5 * (joint.lower + joint.upper);
+        if middle.is_finite() {
+            middle
+        } else {
+            0.0
+        }
+    })
+}
+
+/// Every `count`-joint subset of `joints` (in chain order), those nearest the end first.
+fn subsets(joints: &[usize], count: usize) -> Vec<Vec<usize>> {
+    if count == 0 {
+        return vec![Vec::new()];
+    }
+    let mut found = Vec::new();
+    for (i, &last) in joints.iter().enumerate().rev() {
+        for mut head in subsets(&joints[..i], count - 1) {
+            head.push(last);
+            found.push(head);
+        }
+    }
+    found
+}
+
+/// The smallest singular value of how the solved joints turn the camera against the goal
+/// at `q`: near 0 where two of them turn it about the same axis.
+fn conditioning(model: &ArmModel, wrist: &Wrist, q: &Joints) -> f64 {
+    let Wrist::Numerical { joints, count } = *wrist else {
+        return 0.0;
+    };
+    let frames = model.link_frames(q);
+    let turns = nalgebra::DMatrix::from_fn(3, count, |r, c| {
+        let j = joints[c];
+        (frames[j].rotation * model.joints[j].axis.into_inner())[r]
+    });
+    turns.singular_values().min()
 }
 
 impl ArmPose {
@@ -233,16 +337,23 @@ pub(crate) fn orientation_error(camera: &Isometry3<f64>) -> Option<f64> {
     Some((goal * camera.rotation.inverse()).angle())
 }
 
-/// Newton steps on the solved wrist joints of `q` until the camera meets the goal.
-fn newton(model: &ArmModel, wrist: &Wrist, q: &mut Joints) -> bool {
+/// Newton steps on the solved wrist joints of `q` until the camera meets the goal; the
+/// flange's pose when it does. `prefix` is the frame before the first solved joint, which
+/// the wrist does not move.
+fn newton(
+    model: &ArmModel,
+    wrist: &Wrist,
+    prefix: &Isometry3<f64>,
+    q: &mut Joints,
+) -> Option<Isometry3<f64>> {
     let Wrist::Numerical { joints, count } = *wrist else {
-        return false;
+        return None;
     };
     for _ in 0..MAX_STEPS {
-        let mut pose = Isometry3::identity();
+        let mut pose = *prefix;
         let mut axes = [Vector3::zeros(); 3];
         let mut origins = [Vector3::zeros(); 3];
-        for (k, joint) in model.joints.iter().enumerate() {
+        for (k, joint) in model.joints.iter().enumerate().skip(joints[0]) {
             pose *= joint.transform(q[k]);
             if let Some(s) = joints[..count].iter().position(|&j| j == k) {
                 axes[s] = pose.rotation * joint.axis.into_inner();
@@ -251,15 +362,13 @@ fn newton(model: &ArmModel, wrist: &Wrist, q: &mut Joints) -> bool {
         }
         let camera = pose * model.unturned_mount();
         let p = camera.translation.vector;
-        let Some((goal, tangent, radius)) = goal_rotation(&p) else {
-            return false;
-        };
+        let (goal, tangent, radius) = goal_rotation(&p)?;
         let error = (goal * camera.rotation.inverse()).scaled_axis();
         if !error.iter().all(|e| e.is_finite()) {
-            return false;
+            return None;
         }
         if error.norm() < TOLERANCE_RAD {
-            return true;
+            return Some(pose);
         }
         // d(error)/d(angle): the camera turns about the joint's axis, and the goal turns
         // about z as the camera centre moves around the base.
@@ -269,25 +378,27 @@ fn newton(model: &ArmModel, wrist: &Wrist, q: &mut Joints) -> bool {
             let column = axes[s] - Vector3::z() * (tangent.dot(&moved) / radius);
             jacobian.set_column(s, &column);
         }
-        let step = if count == 3 {
-            jacobian.lu().solve(&error)
-        } else {
-            // Fewer than three joints: least squares.
-            let normal = jacobian.transpose() * jacobian
-                + Matrix3::from_diagonal(&Vector3::from_fn(
-                    |i, _| if i < count { 0.0 } else { 1.0 },
-                ));
-            normal.lu().solve(&(jacobian.transpose() * error))
-        };
-        let Some(step) = step else {
-            return false;
-        };
+        // Damped least squares: Newton's step where the joints turn the camera about
+        // three axes, a least-squares step with fewer joints (unused columns are 0 and
+        // held by the damping).
+        let normal = jacobian.transpose() * jacobian
+            + Matrix3::from_diagonal(&Vector3::from_fn(
+                |i, _| {
+                    if i < count {
+                        DAMPING
+                    } else {
+                        1.0
+                    }
+                },
+            ));
+        let step = normal.lu().solve(&(jacobian.transpose() * error));
+        let step = step?;
         let scale = (MAX_STEP_RAD / step.amax()).min(1.0);
         for s in 0..count {
             q[joints[s]] += step[s] * scale;
         }
     }
-    false
+    None
 }
 
 /// Moves solved angles outside their limits by whole turns when that brings them inside.
@@ -300,5 +411,36 @@ fn wrap_into_limits(model: &ArmModel, wrist: &Wrist, q: &mut Joints) {
                 q[j] = shifted;
             }
         }
+    }
+}
+
+impl ArmModel {
+    /// ∂(camera centre)/∂(θ1, θ2, θ3) at `q` with a numerical wrist following the
+    /// orientation goal (by the implicit function theorem, from one pass down the chain);
+    /// `None` for other wrists or where the wrist is singular.
+    pub(crate) fn followed_jacobian(&self, q: &Joints) -> Option<Matrix3<f64>> {
+        let Wrist::Numerical { joints, count: 3 } = self.wrist else {
+            return None;
+        };
+        let mut pose = Isometry3::identity();
+        let mut axes = [Vector3::zeros(); MAX_JOINTS];
+        let mut origins = [Vector3::zeros(); MAX_JOINTS];
+        for (k, joint) in self.joints.iter().enumerate() {
+            pose *= joint.transform(q[k]);
+            axes[k] = pose.rotation * joint.axis.into_inner();
+            origins[k] = pose.translation.vector;
+        }
+        let p = (pose * self.unturned_mount()).translation.vector;
+        let (_, tangent, radius) = goal_rotation(&p)?;
+        // For joint k: how it moves the camera centre, and how it turns the camera
+        // against the goal.
+        let moves = |k: usize| axes[k].cross(&(p - origins[k]));
+        let turns = |k: usize| axes[k] - Vector3::z() * (tangent.dot(&moves(k)) / radius);
+        let wrist_turns = Matrix3::from_fn(|r, c| turns(joints[c])[r]);
+        let wrist_moves = Matrix3::from_fn(|r, c| moves(joints[c])[r]);
+        let learned_turns = Matrix3::from_fn(|r, c| turns(self.learned[c])[r]);
+        let learned_moves = Matrix3::from_fn(|r, c| moves(self.learned[c])[r]);
+        let follow = wrist_turns.lu().solve(&learned_turns)?;
+        Some(learned_moves - wrist_moves * follow)
     }
 }

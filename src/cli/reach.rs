@@ -1,0 +1,152 @@
+//! `eyehand reach`: the reach space an arm works in, how much of what it reaches that is,
+//! and the pre-learning pose.
+
+use super::{bad_input, say, Failure};
+use crate::camera::CameraModel;
+use crate::control::prelearning_moves;
+use crate::experiment::setup::{fit_reach, load_arm, reach_space};
+use crate::experiment::{reachable_points, Config, ReachSetting, REACH_SAMPLES};
+use crate::robot::{ArmModel, ReachSpace, Wrist};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use std::fmt::Write;
+use std::path::PathBuf;
+
+#[derive(Debug, clap::Args)]
+pub(super) struct ReachArgs {
+    /// The URDF (default: the shipped urdf/oscar6.urdf).
+    #[arg(long)]
+    urdf: Option<PathBuf>,
+    /// The config whose arm entries (camera_link, camera_offset, learned_joints,
+    /// reach_space, floor_z) apply (default: configs/lin5.conf).
+    #[arg(long)]
+    config: Option<PathBuf>,
+}
+
+pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
+    let config = match &args.config {
+        Some(path) => Config::from_file(path).map_err(bad_input)?,
+        None => Config::default_config(),
+    };
+    let model = load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?;
+    let mut report = arm_lines(&model);
+    let fit = fit_reach(&config, &model);
+    let Some(space) = reach_space(&config, &model) else {
+        return Err(bad_input(
+            "reach_space auto: no half annulus of the study's shape fits what this arm reaches",
+        ));
+    };
+    let how = match config.reach_space {
+        ReachSetting::Auto => "fitted",
+        ReachSetting::Given(_) => "given",
+    };
+    let _ = writeln!(
+        report,
+        "reach space ({how})  r {:.1}..{:.1} cm, z {:.1}..{:.1} cm, {:.1} dm³",
+        space.r_min * 100.0,
+        space.r_max * 100.0,
+        space.z_min * 100.0,
+        space.z_max * 100.0,
+        space.volume() * 1000.0
+    );
+    if let (Some(fit), ReachSetting::Auto) = (fit, config.reach_space) {
+        let _ = writeln!(
+            report,
+            "reached (r, z) area  {:.0}% of it inside the fitted space's box ({} of {} shoulder-elbow poses usable)",
+            fit.area_share * 100.0,
+            fit.usable,
+            fit.sampled
+        );
+    }
+    let reachable = reachable_points(&model, &space, REACH_SAMPLES);
+    let _ = writeln!(
+        report,
+        "covered              {:.1}% of {REACH_SAMPLES} points sampled in the reach space are reached looking down",
+        100.0 * reachable as f64 / REACH_SAMPLES as f64
+    );
+    if let Some([(low2, high2), (low3, high3)]) = learned_ranges(&model, &space) {
+        let _ = writeln!(
+            report,
+            "learned θ2, θ3       {low2:.1}..{high2:.1}°, {low3:.1}..{high3:.1}° over the reach space (boundary_0, boundary_1 with {BOUNDARY_MARGIN_DEG}° to spare: {:.0} {:.0}, {:.0} {:.0})",
+            low2 - BOUNDARY_MARGIN_DEG,
+            high2 + BOUNDARY_MARGIN_DEG,
+            low3 - BOUNDARY_MARGIN_DEG,
+            high3 + BOUNDARY_MARGIN_DEG,
+        );
+    }
+    match prelearning_moves(&model, &CameraModel::default(), &space) {
+        Some(_) => {
+            let goal = space.prelearning_goal();
+            let theta = model
+                .solve_camera_position(&goal)
+                .expect("the pre-learning moves exist");
+            let q = model.full_pose(&theta);
+            let _ = writeln!(
+                report,
+                "pre-learning pose    camera at ({:.1}, {:.1}, {:.1}) cm: {}",
+                goal.x * 100.0,
+                goal.y * 100.0,
+                goal.z * 100.0,
+                degrees(&model, q.as_slice())
+            );
+        }
+        None => {
+            report += "pre-learning pose    none: the middle of the reach space is not reached\n"
+        }
+    }
+    say(&report)
+}
+
+/// How far the suggested learner boundaries reach beyond the angles met (degrees).
+const BOUNDARY_MARGIN_DEG: f64 = 10.0;
+
+/// The range (degrees) of θ2 and θ3 over points sampled in `space` that the arm reaches.
+fn learned_ranges(model: &ArmModel, space: &ReachSpace) -> Option<[(f64, f64); 2]> {
+    let mut rng = ChaCha8Rng::seed_from_u64(1);
+    let mut ranges = [(f64::INFINITY, f64::NEG_INFINITY); 2];
+    for _ in 0..REACH_SAMPLES {
+        if let Ok(theta) = model.solve_camera_position(&space.sample(&mut rng)) {
+            for (range, angle) in ranges.iter_mut().zip([theta.y, theta.z]) {
+                let degrees = angle.to_degrees();
+                *range = (range.0.min(degrees), range.1.max(degrees));
+            }
+        }
+    }
+    ranges[0].0.is_finite().then_some(ranges)
+}
+
+/// The arm's name, chain, learned joints and wrist.
+fn arm_lines(model: &ArmModel) -> String {
+    let names: Vec<&str> = model.joints().iter().map(|j| j.name.as_str()).collect();
+    let learned = model.learned().map(|j| names[j]);
+    let wrist = match *model.wrist() {
+        Wrist::OneJoint(j) => format!("`{}` in closed form", names[j]),
+        Wrist::Numerical { joints, count } => format!(
+            "{} by Newton steps",
+            joints[..count]
+                .iter()
+                .map(|&j| format!("`{}`", names[j]))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        Wrist::None => "none".to_string(),
+    };
+    format!(
+        "arm                  {} ({} joints: {})\nlearned joints       {}\nwrist                {wrist}\n",
+        model.name(),
+        names.len(),
+        names.join(", "),
+        learned.join(", ")
+    )
+}
+
+/// `name=angle°` for every joint.
+fn degrees(model: &ArmModel, q: &[f64]) -> String {
+    model
+        .joints()
+        .iter()
+        .zip(q)
+        .map(|(j, v)| format!("{}={:.2}°", j.name, v.to_degrees()))
+        .collect::<Vec<_>>()
+        .join(" ")
+}

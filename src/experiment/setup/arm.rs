@@ -1,0 +1,66 @@
+//! The arm a config describes: which loader reads the URDF, the arm settings, and the
+//! reach space (given, or fitted to the arm).
+
+use crate::camera::CameraModel;
+use crate::experiment::{Config, ReachSetting};
+use crate::robot::description::{DescriptionOptions, RobotDescription};
+use crate::robot::{
+    load_urdf, ArmModel, ArmSettings, ReachFit, ReachSpace, UrdfError, DEFAULT_URDF,
+    DEFAULT_URDF_NAME,
+};
+use crate::units::M_PER_CM;
+use nalgebra::Vector3;
+use std::path::Path;
+
+/// The arm settings from `camera_link`, `camera_offset` (cm) and `learned_joints`.
+pub fn arm_settings(config: &Config) -> ArmSettings {
+    ArmSettings {
+        camera_link: config.camera_link.clone(),
+        camera_offset: Vector3::from(config.camera_offset) * M_PER_CM,
+        learned_joints: config.learned_joints.clone(),
+    }
+}
+
+/// The arm of `urdf` (the shipped OSCAR-6 without one) as the config's arm entries pick
+/// it out. At their defaults the OSCAR-6 loader reads it (six revolute joints and a fixed
+/// camera joint, as always); otherwise it is read as a robot description (any tree).
+pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<ArmModel, UrdfError> {
+    let settings = arm_settings(config);
+    if settings == ArmSettings::default() {
+        return match urdf {
+            Some(path) => load_urdf(path),
+            None => Ok(ArmModel::oscar6()),
+        };
+    }
+    let options = DescriptionOptions::default();
+    let description = match urdf {
+        Some(path) => RobotDescription::load(path, &options)?,
+        None => RobotDescription::parse(DEFAULT_URDF, DEFAULT_URDF_NAME, Path::new("."), &options)?,
+    };
+    Ok(ArmModel::from_description(&description, &settings)?)
+}
+
+/// The reach space `reach_space` gives (cm), or the one fitted to `model` for `auto`
+/// (`None` when nothing fits).
+pub fn reach_space(config: &Config, model: &ArmModel) -> Option<ReachSpace> {
+    match config.reach_space {
+        ReachSetting::Given([r_min, r_max, z_min, z_max]) => Some(ReachSpace {
+            r_min: r_min / 100.0,
+            r_max: r_max / 100.0,
+            z_min: z_min / 100.0,
+            z_max: z_max / 100.0,
+        }),
+        ReachSetting::Auto => fit_reach(config, model).map(|fit| fit.space),
+    }
+}
+
+/// The reach space fitted to `model` above the config's floor, targets hanging the
+/// camera's standoff and the sphere's radius below the camera.
+pub fn fit_reach(config: &Config, model: &ArmModel) -> Option<ReachFit> {
+    let camera = CameraModel::default();
+    ReachSpace::fit(
+        model,
+        config.floor_z * M_PER_CM,
+        camera.standoff + camera.object_radius,
+    )
+}

@@ -26,6 +26,9 @@ pub(super) struct GuessGeometry {
     upper: f64,
     fore: f64,
     camera_offset: Vector3<f64>,
+    /// The bearing of the wrist centre with the base yaw at 0, the shoulder and elbow at
+    /// the middle of their limits (rad): where the arm reaches at yaw 0.
+    heading: f64,
 }
 
 impl GuessGeometry {
@@ -40,11 +43,23 @@ impl GuessGeometry {
         let posed = model.full_pose(&model.controlled_of(&model.rest()));
         let camera_offset =
             model.camera_position(&posed).coords - model.link_frames(&posed)[w].translation.vector;
+        let middle = |j: usize| {
+            let joint = &model.joints()[j];
+            let m = 0.5 * (joint.lower + joint.upper);
+            if m.is_finite() {
+                m
+            } else {
+                0.0
+            }
+        };
+        let reference = model.with_learned(&Controlled::new(0.0, middle(s), middle(e)));
+        let reached = model.link_frames(&reference)[w].translation.vector;
         GuessGeometry {
             shoulder,
             upper,
             fore,
             camera_offset,
+            heading: reached.y.atan2(reached.x),
         }
     }
 }
@@ -186,15 +201,24 @@ impl ArmModel {
     }
 
     /// True when the elbow lies above the shoulder–wrist line, from the joint frames with
-    /// the wrist at rest.
+    /// the wrist at rest. For the OSCAR-6 form the arm's plane turns with the base yaw; for
+    /// any other arm the plane turns with it from the direction the arm reaches in at the
+    /// middle of its limits (whatever the base's zero direction), and the wrist must lie
+    /// in front of the base axis in that plane (an arm reaching back over its shoulder is a
+    /// second branch of the mapping).
     fn elbow_up_in(&self, frames: &Frames, yaw: f64) -> bool {
         let [_, s, e] = self.learned();
-        elbow_up(
+        let (shoulder, elbow, wrist) = (
             frames[s].translation.vector,
             frames[e].translation.vector,
             frames[wrist_joint(self)].translation.vector,
-            yaw,
-        )
+        );
+        if self.is_oscar6_form() {
+            return elbow_up(shoulder, elbow, wrist, yaw);
+        }
+        let heading = yaw + self.guess_geometry().heading;
+        let in_front = wrist.x * heading.cos() + wrist.y * heading.sin() > 0.0;
+        in_front && elbow_up(shoulder, elbow, wrist, heading)
     }
 
     /// A closed-form guess for a Puma-like arm: yaw towards the target, then the
@@ -205,6 +229,7 @@ impl ArmModel {
             upper,
             fore,
             camera_offset,
+            ..
         } = *self.guess_geometry();
         let yaw = target.y.atan2(target.x);
         let wrist = target.coords

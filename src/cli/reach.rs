@@ -5,7 +5,7 @@ use super::{bad_input, say, Failure};
 use crate::camera::CameraModel;
 use crate::control::prelearning_moves;
 use crate::experiment::setup::{fit_reach, load_arm, reach_space};
-use crate::experiment::{reachable_points, Config, ReachSetting, REACH_SAMPLES};
+use crate::experiment::{reachable_points, Config, ReachSetting, RunRequest, REACH_SAMPLES};
 use crate::robot::{ArmModel, ReachSpace, Wrist};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -17,17 +17,48 @@ pub(super) struct ReachArgs {
     /// The URDF (default: the shipped urdf/oscar6.urdf).
     #[arg(long)]
     urdf: Option<PathBuf>,
+    #[command(flatten)]
+    arm: ArmConfigArgs,
+}
+
+/// The config an arm is read with: a file and `--set`s.
+#[derive(Debug, clap::Args)]
+pub(super) struct ArmConfigArgs {
     /// The config whose arm entries (camera_link, camera_offset, learned_joints,
     /// reach_space, floor_z) apply (default: configs/lin5.conf).
     #[arg(long)]
     config: Option<PathBuf>,
+    /// Sets a config entry (repeatable), as `run --set` does.
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    sets: Vec<String>,
+}
+
+impl ArmConfigArgs {
+    /// The config file (or the default) with every `--set` applied, checked.
+    pub(super) fn config(&self) -> Result<Config, Failure> {
+        let sets = self
+            .sets
+            .iter()
+            .map(|set| {
+                set.split_once('=')
+                    .map(|(n, v)| (n.to_string(), v.to_string()))
+                    .ok_or_else(|| bad_input(format!("--set {set}: expected NAME=VALUE")))
+            })
+            .collect::<Result<_, _>>()?;
+        let request = RunRequest {
+            config: self.config.clone(),
+            sets,
+            ..RunRequest::default()
+        };
+        request
+            .config()
+            .map(|(config, _)| config)
+            .map_err(bad_input)
+    }
 }
 
 pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
-    let config = match &args.config {
-        Some(path) => Config::from_file(path).map_err(bad_input)?,
-        None => Config::default_config(),
-    };
+    let config = args.arm.config()?;
     let model = load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?;
     let mut report = arm_lines(&model);
     let fit = fit_reach(&config, &model);

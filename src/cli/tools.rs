@@ -38,9 +38,8 @@ pub(super) struct FkArgs {
     /// The URDF (default: the shipped urdf/oscar6.urdf).
     #[arg(long)]
     urdf: Option<PathBuf>,
-    /// The config whose arm entries apply (default: configs/lin5.conf).
-    #[arg(long)]
-    config: Option<PathBuf>,
+    #[command(flatten)]
+    arm: super::reach::ArmConfigArgs,
 }
 
 pub(super) fn plot(args: PlotArgs) -> Result<(), Failure> {
@@ -65,10 +64,7 @@ pub(super) fn check_config(args: CheckConfigArgs) -> Result<(), Failure> {
 }
 
 pub(super) fn fk(args: FkArgs) -> Result<(), Failure> {
-    let config = match &args.config {
-        Some(path) => Config::from_file(path).map_err(bad_input)?,
-        None => Config::default_config(),
-    };
+    let config = args.arm.config()?;
     let model = load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?;
     let [t1, t2, t3] = args.joints[..] else {
         return Err(bad_input("--joints takes three angles: t1,t2,t3"));

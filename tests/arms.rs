@@ -1,0 +1,300 @@
+//! Any serial arm from its real URDF: the Franka Panda and a UR-style arm as `ArmModel`s
+//! keep the camera looking down with its image x axis radial, learn with lin5 on the
+//! kinematic simulator, and the OSCAR-6 read as a description is the OSCAR-6. Wrong arm
+//! entries are clear errors.
+
+use eyehand::experiment::{run, Config, RunOptions};
+use eyehand::robot::description::{DescriptionOptions, RobotDescription};
+use eyehand::robot::{
+    ArmModel, ArmSettings, Controlled, KinematicSim, MoveSettings, ReachSpace, Simulator, Wrist,
+    DEFAULT_URDF,
+};
+use nalgebra::{Isometry3, Vector3};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// An arm of the test data: its URDF, camera link, learned joints and the learner's
+/// boundaries for θ2 and θ3 (degrees; `eyehand reach` suggests them).
+struct TestArm {
+    file: &'static str,
+    camera_link: &'static str,
+    learned: [&'static str; 3],
+    boundaries: [f64; 4],
+}
+
+const PANDA: TestArm = TestArm {
+    file: "panda/panda.urdf",
+    camera_link: "panda_hand",
+    learned: ["panda_joint1", "panda_joint2", "panda_joint4"],
+    boundaries: [-40.0, 82.0, -171.0, -54.0],
+};
+
+const UR_STYLE: TestArm = TestArm {
+    file: "ur_style.urdf",
+    camera_link: "tool0",
+    learned: ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint"],
+    boundaries: [-98.0, -16.0, 29.0, 134.0],
+};
+
+impl TestArm {
+    fn urdf(&self) -> PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/data")
+            .join(self.file)
+    }
+
+    fn model(&self) -> ArmModel {
+        let description =
+            RobotDescription::load(&self.urdf(), &DescriptionOptions::default()).unwrap();
+        let settings = ArmSettings {
+            camera_link: self.camera_link.into(),
+            camera_offset: Vector3::zeros(),
+            learned_joints: self.learned.map(String::from),
+        };
+        ArmModel::from_description(&description, &settings).unwrap()
+    }
+
+    /// The `--set`s of a run on this arm.
+    fn sets(&self) -> Vec<(&'static str, String)> {
+        let [b0l, b0h, b1l, b1h] = self.boundaries.map(|v| v.to_string());
+        vec![
+            ("camera_link", self.camera_link.into()),
+            ("learned_joints", self.learned.join(",")),
+            ("reach_space", "auto".into()),
+            ("boundary_0_low", b0l),
+            ("boundary_0_high", b0h),
+            ("boundary_1_low", b1l),
+            ("boundary_1_high", b1h),
+        ]
+    }
+}
+
+/// How far (degrees) the camera's optical axis is from straight down, and its image x
+/// axis from the radial direction.
+fn tilt_and_twist_deg(camera: &Isometry3<f64>) -> (f64, f64) {
+    let optical = camera.rotation * Vector3::z();
+    let image_x = camera.rotation * Vector3::x();
+    let p = camera.translation.vector;
+    let radial = Vector3::new(p.x, p.y, 0.0).normalize();
+    // atan2 of the cross and dot products: exact for tiny angles, unlike acos.
+    let angle = |a: Vector3<f64>, b: Vector3<f64>| a.cross(&b).norm().atan2(a.dot(&b));
+    (
+        angle(optical, -Vector3::z()).to_degrees(),
+        angle(image_x, radial).to_degrees(),
+    )
+}
+
+#[test]
+fn the_camera_stays_vertical_and_radial_through_moves() {
+    for arm in [PANDA, UR_STYLE] {
+        let model = arm.model();
+        assert!(
+            matches!(model.wrist(), Wrist::Numerical { count: 3, .. }),
+            "{}: {:?}",
+            arm.file,
+            model.wrist()
+        );
+        let reach = ReachSpace::fit(&model, -0.22, 0.22)
+            .expect("a reach space")
+            .space;
+        let mut sim = KinematicSim::new(model.clone(), MoveSettings::from_degrees(30.0, 60.0));
+        let mut rng = ChaCha8Rng::seed_from_u64(3);
+        let mut checked = 0;
+        for _ in 0..100 {
+            let Ok(theta) = model.solve_camera_position(&reach.sample(&mut rng)) else {
+                continue;
+            };
+            sim.place(&theta).unwrap();
+            for _ in 0..5 {
+                let delta = Controlled::from_fn(|_, _| rng.random_range(-0.05..0.05));
+                sim.execute(&delta);
+                let (tilt, twist) = tilt_and_twist_deg(&sim.camera_pose());
+                assert!(
+                    tilt < 1e-6 && twist < 1e-6,
+                    "{}: {tilt}° {twist}°",
+                    arm.file
+                );
+                assert!(model.violated_limit(&sim.joints()).is_none());
+                checked += 1;
+            }
+        }
+        assert!(checked > 400, "{}: {checked} poses", arm.file);
+    }
+}
+
+#[test]
+fn the_inverse_kinematics_puts_the_camera_where_asked() {
+    for arm in [PANDA, UR_STYLE] {
+        let model = arm.model();
+        let reach = ReachSpace::fit(&model, -0.22, 0.22).unwrap().space;
+        let mut rng = ChaCha8Rng::seed_from_u64(4);
+        let mut solved = 0;
+        for _ in 0..200 {
+            let target = reach.sample(&mut rng);
+            if let Ok(theta) = model.solve_camera_position(&target) {
+                let camera = model.pose_of(&theta).camera.translation.vector;
+                assert!((camera - target.coords).norm() < 1e-9, "{}", arm.file);
+                assert!(model.is_elbow_up(&theta));
+                solved += 1;
+            }
+        }
+        assert!(solved >= 190, "{}: {solved} of 200", arm.file);
+    }
+}
+
+#[test]
+fn the_oscar6_read_as_a_description_is_the_oscar6() {
+    let description = RobotDescription::parse(
+        DEFAULT_URDF,
+        "oscar6.urdf",
+        Path::new("."),
+        &DescriptionOptions::default(),
+    )
+    .unwrap();
+    let general = ArmModel::from_description(&description, &ArmSettings::default()).unwrap();
+    let oscar = ArmModel::oscar6();
+    assert_eq!(general.wrist(), &Wrist::OneJoint(4));
+    assert!(general.is_oscar6_form());
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    for _ in 0..100 {
+        let theta = Controlled::from_fn(|i, _| {
+            let joint = &oscar.joints()[i];
+            rng.random_range(joint.lower..joint.upper)
+        });
+        let (a, b) = (general.pose_of(&theta), oscar.pose_of(&theta));
+        assert!((a.joints - b.joints).amax() < 1e-12);
+        assert!((a.camera.to_homogeneous() - b.camera.to_homogeneous()).amax() < 1e-12);
+    }
+}
+
+#[test]
+fn lin5_learns_on_the_panda_and_the_ur_style_arm() {
+    let data = tempfile::tempdir().unwrap();
+    for arm in [PANDA, UR_STYLE] {
+        let mut config = Config::default_config();
+        for (name, value) in arm.sets() {
+            config.assign(name, &value).unwrap();
+        }
+        config.trials = 20_000;
+        config.seed = 1;
+        config.check().unwrap();
+        let options = RunOptions {
+            urdf: Some(arm.urdf()),
+            ..RunOptions::new(config, data.path())
+        };
+        let result = run(&options).unwrap();
+        let mean = result.summary.mean_distance_mm;
+        assert!(
+            mean[3].is_some_and(|m| m <= 1.0),
+            "{}: 4-step mean {mean:?} mm",
+            arm.file
+        );
+        assert!(
+            result.summary.failures < 200,
+            "{}: {} failed trials",
+            arm.file,
+            result.summary.failures
+        );
+    }
+}
+
+fn eyehand(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn reach_prints_the_space_the_coverage_and_the_prelearning_pose() {
+    let urdf = PANDA.urdf();
+    let sets: Vec<String> = PANDA
+        .sets()
+        .iter()
+        .map(|(n, v)| format!("{n}={v}"))
+        .collect();
+    let mut args = vec!["reach", "--urdf", urdf.to_str().unwrap()];
+    for set in &sets {
+        args.extend(["--set", set]);
+    }
+    let (code, out, err) = eyehand(&args);
+    assert_eq!(code, 0, "{err}");
+    for expected in [
+        "7 joints",
+        "reach space (fitted)",
+        "covered",
+        "pre-learning pose",
+        "panda_joint7=",
+    ] {
+        assert!(out.contains(expected), "{expected} in\n{out}");
+    }
+    let (code, out, _) = eyehand(&["reach"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("r 46.0..93.0 cm, z 0.0..52.0 cm"), "{out}");
+    assert!(out.contains("(69.5, 0.0, 26.0) cm"), "{out}");
+}
+
+#[test]
+fn wrong_arm_entries_are_clear_errors() {
+    let urdf = PANDA.urdf();
+    let urdf = urdf.to_str().unwrap();
+    let learned = "learned_joints=panda_joint1,panda_joint2,panda_joint4";
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &["--set", "camera_link=nowhere", "--set", learned],
+            "camera link `nowhere` is not a link of the robot",
+        ),
+        (
+            &[
+                "--set",
+                "camera_link=panda_hand",
+                "--set",
+                "learned_joints=panda_joint1,panda_joint8,panda_joint4",
+            ],
+            "learned joint `panda_joint8` is a fixed joint",
+        ),
+        (
+            &[
+                "--set",
+                "camera_link=panda_link4",
+                "--set",
+                "learned_joints=panda_joint1,panda_joint2,panda_joint6",
+            ],
+            "learned joint `panda_joint6` is not on the chain",
+        ),
+        (
+            &["--set", "camera_link=panda_leftfinger", "--set", learned],
+            "joint `panda_finger_joint1` on the chain to the camera is prismatic",
+        ),
+        (
+            &[
+                "--set",
+                "camera_link=panda_hand",
+                "--set",
+                learned,
+                "--sim",
+                "dynamic",
+            ],
+            "the dynamic simulator takes only arms of the OSCAR-6 form",
+        ),
+    ];
+    let data = tempfile::tempdir().unwrap();
+    let data = data.path().to_str().unwrap();
+    for (sets, message) in cases {
+        let mut args = vec!["run", "--urdf", urdf, "--trials", "5", "--data", data];
+        args.extend(sets);
+        let (code, _, err) = eyehand(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(err.contains(message), "{message} in {err}");
+    }
+    let (code, _, err) = eyehand(&["run", "--set", "reach_space=90,46,0,52", "--trials", "5"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("reach_space"), "{err}");
+}

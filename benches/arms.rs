@@ -1,12 +1,16 @@
 //! Robot descriptions from real URDFs: how long the OSCAR-6, the Franka Panda (meshes and
 //! hulls) and the UR-style arm take to load, and how long the chain's forward kinematics
 //! of the camera pose takes per call, next to `ArmModel`'s for the OSCAR-6. Prints the
-//! markdown table of docs/ARMS.md.
+//! markdown table of docs/ARMS.md. Then each arm as an `ArmModel` (its wrist solved):
+//! the reach space, a pose with the wrist solved, and lin5 run for 20,000 trials on the
+//! kinematic simulator (seed 1): the second table of docs/ARMS.md.
 //!
 //! `cargo bench --bench arms` (20 loads, 1,000,000 poses per row, seed 1).
 
+use eyehand::experiment::setup::{load_arm, reach_space};
+use eyehand::experiment::{reachable_points, run, Config, RunOptions, REACH_SAMPLES};
 use eyehand::robot::description::{Chain, DescriptionOptions, RobotDescription};
-use eyehand::robot::{ArmModel, Joints};
+use eyehand::robot::{ArmModel, Controlled, Joints};
 use nalgebra::Isometry3;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -18,6 +22,128 @@ use std::time::Instant;
 const LOADS: u32 = 20;
 const CALLS: usize = 1_000_000;
 const SEED: u64 = 1;
+/// Trials of each lin5 run.
+const TRIALS: usize = 20_000;
+/// Poses per wrist-solving row.
+const POSES: usize = 200_000;
+
+/// An arm of the second table: its URDF (`None`: the shipped OSCAR-6) and the `--set`s
+/// that pick it out (the boundaries of θ2 and θ3 as `eyehand reach` suggests them).
+struct LearningArm {
+    name: &'static str,
+    urdf: Option<&'static str>,
+    sets: &'static [(&'static str, &'static str)],
+}
+
+const LEARNING_ARMS: [LearningArm; 3] = [
+    LearningArm {
+        name: "oscar6 (defaults)",
+        urdf: None,
+        sets: &[],
+    },
+    LearningArm {
+        name: "panda",
+        urdf: Some("tests/data/panda/panda.urdf"),
+        sets: &[
+            ("camera_link", "panda_hand"),
+            ("learned_joints", "panda_joint1,panda_joint2,panda_joint4"),
+            ("reach_space", "auto"),
+            ("boundary_0_low", "-40"),
+            ("boundary_0_high", "82"),
+            ("boundary_1_low", "-171"),
+            ("boundary_1_high", "-54"),
+        ],
+    },
+    LearningArm {
+        name: "ur_style",
+        urdf: Some("tests/data/ur_style.urdf"),
+        sets: &[
+            ("camera_link", "tool0"),
+            (
+                "learned_joints",
+                "shoulder_pan_joint,shoulder_lift_joint,elbow_joint",
+            ),
+            ("reach_space", "auto"),
+            ("boundary_0_low", "-98"),
+            ("boundary_0_high", "-16"),
+            ("boundary_1_low", "29"),
+            ("boundary_1_high", "134"),
+        ],
+    },
+];
+
+/// Nanoseconds per pose with the wrist solved, along a path of small steps (each pose
+/// warm-started from the last), and from rest.
+fn wrist_costs(model: &ArmModel) -> (f64, f64) {
+    let start = model.controlled_of(&model.rest());
+    let mut theta = start;
+    let mut near = model.pose_of(&theta).joints;
+    let path_start = Instant::now();
+    for k in 0..POSES {
+        let phase = k as f64 * 1e-3;
+        theta = start + Controlled::new(0.3 * phase.sin(), 0.2 * phase.cos(), 0.2 * phase.sin());
+        near = black_box(model.pose_near(&theta, &near)).joints;
+    }
+    let path = path_start.elapsed().as_nanos() as f64 / POSES as f64;
+    let rest_start = Instant::now();
+    for k in 0..POSES {
+        let phase = k as f64 * 1e-3;
+        theta = start + Controlled::new(0.3 * phase.sin(), 0.2 * phase.cos(), 0.2 * phase.sin());
+        black_box(model.pose_of(&theta));
+    }
+    (path, rest_start.elapsed().as_nanos() as f64 / POSES as f64)
+}
+
+/// The second table: each arm's reach space, wrist cost and lin5 run.
+fn learning_table(root: &std::path::Path) {
+    println!();
+    println!("| arm | joints | wrist | reach space r, z (cm) | covered | pose, warm (ns) | pose, from rest (ns) | lin5 mean distance after steps 1..5 (mm) | failures | trials/s |");
+    println!("|---|---|---|---|---|---|---|---|---|---|");
+    let data = tempfile::tempdir().expect("a scratch folder");
+    for arm in LEARNING_ARMS {
+        let mut config = Config::default_config();
+        for (name, value) in arm.sets {
+            config.assign(name, value).expect("a valid entry");
+        }
+        config.trials = TRIALS;
+        config.seed = SEED;
+        config.check().expect("a valid config");
+        let urdf = arm.urdf.map(|file| root.join(file));
+        let model = load_arm(&config, urdf.as_deref()).expect("the arm loads");
+        let reach = reach_space(&config, &model).expect("a reach space");
+        let covered = reachable_points(&model, &reach, REACH_SAMPLES) as f64 / REACH_SAMPLES as f64;
+        let (warm, cold) = wrist_costs(&model);
+        let wrist = match *model.wrist() {
+            eyehand::robot::Wrist::OneJoint(_) => "1 joint, closed form".to_string(),
+            eyehand::robot::Wrist::Numerical { count, .. } => format!("{count} joints, Newton"),
+            eyehand::robot::Wrist::None => "none".to_string(),
+        };
+        let options = RunOptions {
+            urdf,
+            ..RunOptions::new(config, data.path())
+        };
+        let result = run(&options).expect("the run runs");
+        let summary = &result.summary;
+        let means: Vec<String> = summary
+            .mean_distance_mm
+            .iter()
+            .map(|m| m.map_or("-".into(), |m| format!("{m:.3}")))
+            .collect();
+        println!(
+            "| {} | {} | {wrist} | {:.1}–{:.1}, {:.1}–{:.1} | {:.1}% | {warm:.0} | {cold:.0} | {} | {} | {:.0} |",
+            arm.name,
+            model.dof(),
+            reach.r_min * 100.0,
+            reach.r_max * 100.0,
+            reach.z_min * 100.0,
+            reach.z_max * 100.0,
+            covered * 100.0,
+            means.join(" / "),
+            summary.failures,
+            summary.trials_per_second
+        );
+    }
+}
 
 /// 1,024 random joint vectors inside the chain's limits (±π where unlimited), flattened.
 fn poses(chain: &Chain) -> Vec<f64> {
@@ -82,4 +208,5 @@ fn main() {
             println!("| oscar6 (`ArmModel`) | `camera_link` | 6 | - | - | {ns:.0} |");
         }
     }
+    learning_table(&root);
 }

@@ -5,7 +5,7 @@ use crate::convert::{load_config, path_array, path_from, query_array, query_from
 use eyehand::experiment::setup::build_learner;
 use eyehand::experiment::StopRequest;
 use eyehand::learn::{LearnError, Learner, LearnerStats, Observation, Query};
-use eyehand::robot::{load_urdf, ArmModel};
+use eyehand::robot::ArmModel;
 use nalgebra::Vector3;
 use numpy::PyArray1;
 use pyo3::exceptions::{PyKeyboardInterrupt, PyValueError};
@@ -195,7 +195,7 @@ impl BuiltinLearner {
     ) -> PyResult<BuiltinLearner> {
         let (mut config, _) = load_config(config.as_deref(), entries)?;
         crate::convert::set_entry(&mut config, "method", method)?;
-        let model = nominal_model(urdf.as_deref())?;
+        let model = nominal_model(&config, urdf.as_deref())?;
         let inner = build_learner(&config, &model, None).map_err(crate::convert::value_error)?;
         Ok(BuiltinLearner { inner })
     }
@@ -244,10 +244,11 @@ impl BuiltinLearner {
     }
 }
 
-/// The robot a URDF describes, or the shipped OSCAR-6; a bad URDF is a `ValueError`.
-pub fn nominal_model(urdf: Option<&std::path::Path>) -> PyResult<ArmModel> {
-    match urdf {
-        Some(path) => load_urdf(path).map_err(crate::convert::value_error),
-        None => Ok(ArmModel::oscar6()),
-    }
+/// The arm a URDF describes (the shipped OSCAR-6 without one) as the config's arm entries
+/// pick it out; a bad URDF is a `ValueError`.
+pub fn nominal_model(
+    config: &eyehand::experiment::Config,
+    urdf: Option<&std::path::Path>,
+) -> PyResult<ArmModel> {
+    eyehand::experiment::setup::load_arm(config, urdf).map_err(crate::convert::value_error)
 }

@@ -48,14 +48,17 @@ impl Testbed {
         set_entry(&mut config, "sim", sim)?;
         set_entry(&mut config, "camera", camera)?;
         config.seed = seed;
-        let model = nominal_model(urdf.as_deref())?;
+        let model = nominal_model(&config, urdf.as_deref())?;
         preflight(&config, &model, &[]).map_err(value_error)?;
+        let reach = eyehand::experiment::setup::reach_space(&config, &model)
+            .ok_or_else(|| value_error(eyehand::experiment::PreflightError::NoReachSpace))?;
         let trials = TrialLoop::new(
             build_simulator(&config, model),
             build_camera(&config),
             trial_settings(&config),
             seed,
-        );
+        )
+        .with_reach(reach);
         Ok(Testbed { trials })
     }
 
@@ -187,7 +190,7 @@ impl Testbed {
     }
 
     /// Forward kinematics of the robot as it is now, as `eyehand fk --json` gives it:
-    /// {"camera_cm": (3,), "joints_deg": (6,)} for θ1..θ3 in degrees.
+    /// {"camera_cm": (3,), "joints_deg": (every joint,)} for θ1..θ3 in degrees.
     fn fk<'py>(&self, py: Python<'py>, joints: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
         let theta = vector3(joints, "joints")?;
         if !theta.iter().all(|v| v.is_finite()) {
@@ -206,9 +209,11 @@ impl Testbed {
     /// The limits (low, high) of θ1, θ2, θ3 in degrees, a (3, 2) array.
     #[getter]
     fn joint_limits_deg<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let joints = self.trials.sim().model().joints();
-        let flat: Vec<f64> = joints[..3]
+        let model = self.trials.sim().model();
+        let flat: Vec<f64> = model
+            .learned()
             .iter()
+            .map(|&i| &model.joints()[i])
             .flat_map(|j| [j.lower.to_degrees(), j.upper.to_degrees()])
             .collect();
         PyArray1::from_vec(py, flat).reshape([3, 2])

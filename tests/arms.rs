@@ -294,6 +294,31 @@ fn wrong_arm_entries_are_clear_errors() {
         assert_eq!(code, 2, "{args:?}: {err}");
         assert!(err.contains(message), "{message} in {err}");
     }
+    // From a config file, the error names the entry's line.
+    let shipped =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/configs/lin5.conf")).unwrap();
+    let text: String = shipped
+        .lines()
+        .map(|line| match line.split_whitespace().next() {
+            Some("camera_link") => "camera_link panda_hand".to_string(),
+            Some("learned_joints") => {
+                "learned_joints panda_joint1,panda_joint8,panda_joint4".to_string()
+            }
+            _ => line.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let line = 1 + shipped
+        .lines()
+        .position(|l| l.starts_with("learned_joints"))
+        .unwrap();
+    let file = Path::new(data).join("panda.conf");
+    std::fs::write(&file, text).unwrap();
+    let file = file.to_str().unwrap();
+    let (code, _, err) = eyehand(&["run", "--config", file, "--urdf", urdf, "--data", data]);
+    assert_eq!(code, 2, "{err}");
+    let at = format!("{file}:{line}: learned_joints: ");
+    assert!(err.contains(&at), "{at} in {err}");
     let (code, _, err) = eyehand(&["run", "--set", "reach_space=90,46,0,52", "--trials", "5"]);
     assert_eq!(code, 2);
     assert!(err.contains("reach_space"), "{err}");

@@ -92,7 +92,10 @@ pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
     let stop = StopRequest::on_signals().map_err(|e| failed(format!("signal handlers: {e}")))?;
     options.stop = stop.clone();
     let result = experiment::run(&options).map_err(|e| match e {
-        RunError::Urdf(_) | RunError::Preflight(_) | RunError::Event { .. } => bad_input(e),
+        RunError::Urdf(_)
+        | RunError::ArmEntry { .. }
+        | RunError::Preflight(_)
+        | RunError::Event { .. } => bad_input(e),
         _ => failed(e),
     })?;
     say(&format!("{}\n", result.folder.display()))?;

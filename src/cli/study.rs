@@ -172,7 +172,10 @@ fn run_one_cell(folder: &StudyFolder, index: usize, stop: StopRequest) -> Result
         }
         Err(CellRunError::Study(e)) => Err(study_failure(e)),
         Err(CellRunError::Run(
-            e @ (RunError::Urdf(_) | RunError::Preflight(_) | RunError::Event { .. }),
+            e @ (RunError::Urdf(_)
+            | RunError::ArmEntry { .. }
+            | RunError::Preflight(_)
+            | RunError::Event { .. }),
         )) => Err(bad_input(e)),
         Err(e) => Err(failed(e)),
     }

@@ -7,7 +7,8 @@ use super::output::DataFiles;
 use super::plot::{plot_run, PlotError};
 use super::progress::RunProgress;
 use super::setup::{
-    build_camera, build_learner, build_simulator, load_arm, reach_space, trial_settings,
+    arm_entry, build_camera, build_learner, build_simulator, entry_position, load_arm, reach_space,
+    trial_settings,
 };
 use super::summary::{RunSummary, SensorSummary};
 use super::StepFigures;
@@ -74,6 +75,16 @@ pub enum RunError {
     /// The URDF is broken or not an OSCAR-6.
     #[error(transparent)]
     Urdf(#[from] UrdfError),
+    /// The config's `camera_link` or `learned_joints` names no such part of the URDF.
+    #[error("{at}: {entry}: {source}")]
+    ArmEntry {
+        /// `file:line` of the entry, or `--set` when the command line gave it.
+        at: String,
+        /// The entry.
+        entry: &'static str,
+        /// What the URDF says to it.
+        source: Box<UrdfError>,
+    },
     /// The config, an event or the arm fails the checks made before the run starts.
     #[error(transparent)]
     Preflight(#[from] PreflightError),
@@ -148,7 +159,17 @@ fn run_folder(options: &RunOptions, name: &str) -> Result<PathBuf, RunFolderErro
 /// The robot the run's URDF describes (the shipped OSCAR-6 without one), once it, the
 /// config and the events pass the checks made before a run starts.
 fn load_model(options: &RunOptions) -> Result<ArmModel, RunError> {
-    let model = load_arm(&options.config, options.urdf.as_deref())?;
+    let model =
+        load_arm(&options.config, options.urdf.as_deref()).map_err(|source| {
+            match arm_entry(&source) {
+                Some(entry) => RunError::ArmEntry {
+                    at: entry_position(&options.config_name, &options.config, entry),
+                    entry,
+                    source: Box::new(source),
+                },
+                None => RunError::Urdf(source),
+            }
+        })?;
     preflight(&options.config, &model, &run_events(options))?;
     Ok(model)
 }

@@ -3,9 +3,11 @@
 
 use crate::camera::CameraModel;
 use crate::experiment::{Config, ReachSetting};
-use crate::robot::description::{DescriptionOptions, RobotDescription};
+use crate::robot::description::{
+    DescriptionErrorKind as Kind, DescriptionOptions, RobotDescription,
+};
 use crate::robot::{
-    load_urdf, ArmModel, ArmSettings, ReachFit, ReachSpace, UrdfError, DEFAULT_URDF,
+    load_urdf, ArmModel, ArmSettings, ReachFit, ReachSpace, UrdfError, UrdfErrorKind, DEFAULT_URDF,
     DEFAULT_URDF_NAME,
 };
 use crate::units::M_PER_CM;
@@ -38,6 +40,44 @@ pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<ArmModel, UrdfEr
         None => RobotDescription::parse(DEFAULT_URDF, DEFAULT_URDF_NAME, Path::new("."), &options)?,
     };
     Ok(ArmModel::from_description(&description, &settings)?)
+}
+
+/// The config entry an error reading the arm is about (`camera_link` or
+/// `learned_joints`), when it is about one.
+pub fn arm_entry(error: &UrdfError) -> Option<&'static str> {
+    let UrdfErrorKind::Description(kind) = &error.kind else {
+        return None;
+    };
+    match kind {
+        Kind::UnknownLink { .. } | Kind::NoMovingJoint { .. } | Kind::PrismaticOnChain { .. } => {
+            Some("camera_link")
+        }
+        Kind::UnknownJoint { .. }
+        | Kind::LearnedJointFixed { .. }
+        | Kind::LearnedJointOffChain { .. }
+        | Kind::LearnedJointRepeated { .. } => Some("learned_joints"),
+        _ => None,
+    }
+}
+
+/// `file:line` of `entry` in the config file `file` when that line gives the value
+/// `config` holds; `--set` when the value came from elsewhere (the command line, code).
+pub fn entry_position(file: &str, config: &Config, entry: &str) -> String {
+    let value = config
+        .entries()
+        .into_iter()
+        .find_map(|(name, value)| (name == entry).then_some(value));
+    let line = std::fs::read_to_string(file).ok().and_then(|text| {
+        text.lines().position(|line| {
+            let content = line.split('#').next().unwrap_or("");
+            let mut words = content.split_whitespace();
+            words.next() == Some(entry) && words.next() == value.as_deref()
+        })
+    });
+    match line {
+        Some(index) => format!("{file}:{}", index + 1),
+        None => "--set".to_string(),
+    }
 }
 
 /// The reach space `reach_space` gives (cm), or the one fitted to `model` for `auto`

@@ -325,10 +325,16 @@ impl ArmModel {
         Ok(())
     }
 
-    /// How much link 1, 2 or 3 is longer than in the URDF (m).
+    /// How much link 1, 2 or 3 is longer than in the URDF (m); 0 for a link of no length
+    /// (two joints at one point), which cannot be stretched.
     pub fn link_stretch(&self, link: usize) -> f64 {
         let nominal = self.nominal_origins[link].translation.vector;
-        (self.joints[link].origin.translation.vector - nominal).dot(&nominal.normalize())
+        match Unit::try_new(nominal, 1e-9) {
+            Some(direction) => {
+                (self.joints[link].origin.translation.vector - nominal).dot(&direction)
+            }
+            None => 0.0,
+        }
     }
 
     /// Turns the camera about its optical axis by `angle` (rad); turns add up.

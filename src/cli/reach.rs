@@ -36,18 +36,9 @@ pub(super) struct ArmConfigArgs {
 impl ArmConfigArgs {
     /// The config file (or the default) with every `--set` applied, checked.
     pub(super) fn config(&self) -> Result<Config, Failure> {
-        let sets = self
-            .sets
-            .iter()
-            .map(|set| {
-                set.split_once('=')
-                    .map(|(n, v)| (n.to_string(), v.to_string()))
-                    .ok_or_else(|| bad_input(format!("--set {set}: expected NAME=VALUE")))
-            })
-            .collect::<Result<_, _>>()?;
         let request = RunRequest {
             config: self.config.clone(),
-            sets,
+            sets: super::run::name_values(&self.sets)?,
             ..RunRequest::default()
         };
         request

@@ -51,21 +51,24 @@ pub(super) struct RunArgs {
     record: super::show::RecordArgs,
 }
 
+/// `--set NAME=VALUE` flags as (name, value) pairs.
+pub(super) fn name_values(sets: &[String]) -> Result<Vec<(String, String)>, Failure> {
+    sets.iter()
+        .map(|set| {
+            set.split_once('=')
+                .map(|(n, v)| (n.to_string(), v.to_string()))
+                .ok_or_else(|| {
+                    let shown = experiment::shown(set);
+                    bad_input(format!("--set {shown}: expected NAME=VALUE"))
+                })
+        })
+        .collect()
+}
+
 impl RunArgs {
     /// The typed run these flags ask for.
     fn request(self) -> Result<RunRequest, Failure> {
-        let sets = self
-            .sets
-            .iter()
-            .map(|set| {
-                set.split_once('=')
-                    .map(|(n, v)| (n.to_string(), v.to_string()))
-                    .ok_or_else(|| {
-                        let shown = experiment::shown(set);
-                        bad_input(format!("--set {shown}: expected NAME=VALUE"))
-                    })
-            })
-            .collect::<Result<_, _>>()?;
+        let sets = name_values(&self.sets)?;
         Ok(RunRequest {
             config: self.config,
             sets,

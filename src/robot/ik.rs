@@ -8,7 +8,7 @@
 use super::model::{ArmModel, ArmPose, Controlled, Frames, Wrist};
 use super::RobotError;
 use nalgebra::{Matrix3, Point3, Vector3};
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::TAU;
 
 /// Position error (m) at which a solution is accepted.
 const TOLERANCE_M: f64 = 1e-11;
@@ -43,15 +43,7 @@ impl GuessGeometry {
         let posed = model.full_pose(&model.controlled_of(&model.rest()));
         let camera_offset =
             model.camera_position(&posed).coords - model.link_frames(&posed)[w].translation.vector;
-        let middle = |j: usize| {
-            let joint = &model.joints()[j];
-            let m = 0.5 * (joint.lower + joint.upper);
-            if m.is_finite() {
-                m
-            } else {
-                0.0
-            }
-        };
+        let middle = |j: usize| model.joints()[j].middle();
         let reference = model.with_learned(&Controlled::new(0.0, middle(s), middle(e)));
         let reached = model.link_frames(&reference)[w].translation.vector;
         GuessGeometry {
@@ -153,7 +145,7 @@ impl ArmModel {
     fn seeds(&self, target: &Point3<f64>) -> impl Iterator<Item = Controlled> + '_ {
         let [yaw_joint, s, e] = self.learned().map(|j| &self.joints()[j]);
         let within = |joint: &super::RevoluteJoint, f: f64| {
-            let (lower, upper) = (joint.lower.max(-PI), joint.upper.min(PI));
+            let (lower, upper) = joint.one_turn();
             lower + (upper - lower) * f
         };
         let bearing = target.y.atan2(target.x);

@@ -4,7 +4,7 @@
 
 use super::{ArmModel, Controlled};
 use nalgebra::Point3;
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::TAU;
 
 /// Poses per learned joint in the table.
 const STEPS: usize = 16;
@@ -31,8 +31,7 @@ impl IkSeeds {
     pub(super) fn of(model: &ArmModel) -> IkSeeds {
         let [yaw, s, e] = model.learned();
         let at = |j: usize, n: usize| {
-            let joint = &model.joints()[j];
-            let (lower, upper) = (joint.lower.max(-PI), joint.upper.min(PI));
+            let (lower, upper) = model.joints()[j].one_turn();
             lower + (upper - lower) * (n as f64 + 0.5) / STEPS as f64
         };
         let mut seeds = Vec::new();

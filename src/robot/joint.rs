@@ -31,6 +31,23 @@ impl RevoluteJoint {
         angle >= self.lower && angle <= self.upper
     }
 
+    /// The limits cut to one turn either way (−π..π for a joint with wider or no limits):
+    /// the angles worth sampling.
+    pub fn one_turn(&self) -> (f64, f64) {
+        let half = std::f64::consts::PI;
+        (self.lower.max(-half), self.upper.min(half))
+    }
+
+    /// The middle of the limits (0 for a joint without limits).
+    pub fn middle(&self) -> f64 {
+        let middle = 0.5 * (self.lower + self.upper);
+        if middle.is_finite() {
+            middle
+        } else {
+            0.0
+        }
+    }
+
     /// The joint frame's pose in the parent link's frame at `angle`.
     pub fn transform(&self, angle: f64) -> Isometry3<f64> {
         self.origin * nalgebra::UnitQuaternion::from_axis_angle(&self.axis, angle)

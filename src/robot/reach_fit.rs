@@ -147,9 +147,8 @@ impl ReachSpace {
 fn reached_points(model: &ArmModel, floor_z: f64) -> Vec<(f64, f64)> {
     let [yaw, s, e] = model.learned();
     let span = |j: usize| {
-        let joint = &model.joints()[j];
-        let lower = joint.lower.max(-std::f64::consts::PI);
-        (lower, joint.upper.min(std::f64::consts::PI) - lower)
+        let (lower, upper) = model.joints()[j].one_turn();
+        (lower, upper - lower)
     };
     let bodies: Vec<_> = (1..=model.dof()).map(|k| body_elements(model, k)).collect();
     let base_yaw = model.rest()[yaw];

@@ -125,8 +125,7 @@ impl Wrist {
     /// the limits.
     fn keeps_vertical(&self, model: &ArmModel) -> bool {
         let span = |j: usize| {
-            let joint = &model.joints[j];
-            let (lower, upper) = (joint.lower.max(-3.0), joint.upper.min(3.0));
+            let (lower, upper) = model.joints[j].one_turn();
             (lower, upper - lower)
         };
         let mut tested = 0;
@@ -254,15 +253,7 @@ impl Wrist {
 /// The learned angles the wrist is chosen and settled at: the middle of each learned
 /// joint's limits (0 for a joint without).
 fn reference_angles(model: &ArmModel) -> Controlled {
-    Controlled::from_fn(|i, _| {
-        let joint = &model.joints[model.learned[i]];
-        let middle = 0.5 * (joint.lower + joint.upper);
-        if middle.is_finite() {
-            middle
-        } else {
-            0.0
-        }
-    })
+    Controlled::from_fn(|i, _| model.joints[model.learned[i]].middle())
 }
 
 /// Every `count`-joint subset of `joints` (in chain order), those nearest the end first.

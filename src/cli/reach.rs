@@ -74,7 +74,7 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
     if let (Some(fit), ReachSetting::Auto) = (fit, config.reach_space) {
         let _ = writeln!(
             report,
-            "reached (r, z) area  {:.0}% of it inside the fitted space's box ({} of {} shoulder-elbow poses usable)",
+            "box share            the space's (r, z) box holds {:.0}% of the (r, z) cells the arm reaches ({} of {} shoulder-elbow poses usable)",
             fit.area_share * 100.0,
             fit.usable,
             fit.sampled

@@ -29,7 +29,8 @@ const NEAR: f64 = 0.01;
 const MIN_MARCH: f64 = 1e-3;
 /// Bisection steps that find where a move meets contact (1e-12 of a move).
 const BISECTIONS: usize = 40;
-/// Bodies: the base and links 1–6 (the camera on link 6).
+/// Bodies: the base and links 1–6 (the camera on link 6). An arm with more joints is checked
+/// for its first six links only (docs/ARMS.md).
 const BODIES: usize = 7;
 
 /// A collision element: its parry shape at its pose in the body frame, and the capsule that
@@ -134,7 +135,7 @@ impl ArmGeometry {
             };
             take(gap, speed(i, j));
         }
-        for (k, at) in links.iter().enumerate() {
+        for (k, at) in links.iter().enumerate().take(BODIES - 1) {
             take(self.allowance_of(k + 1, at, obstacles, rates), 1.0);
         }
         allow
@@ -189,7 +190,7 @@ impl ArmGeometry {
         let rates = [0.0; BODIES];
         for (i, obstacle) in obstacles.iter().enumerate() {
             let one = std::slice::from_ref(obstacle);
-            for (k, at) in links.iter().enumerate() {
+            for (k, at) in links.iter().enumerate().take(BODIES - 1) {
                 if self.allowance_of(k + 1, at, one, &rates) <= 0.0 {
                     return Some((k + 1, i + 1));
                 }
@@ -198,8 +199,8 @@ impl ArmGeometry {
         None
     }
 
-    /// How far along the controlled move from `theta` by `delta` (fractions up to `up_to`)
-    /// the arm gets before two of its bodies or a link and an obstacle touch: `up_to` when
+    /// How far along the controlled move from every joint at `start` by `delta` (fractions
+    /// up to `up_to`) the arm gets before two of its bodies or a link and an obstacle touch: `up_to` when
     /// none do, or when they already touch at the start. Marches in steps no pair can close
     /// in, then bisects the contact. A point of body j moves, relative to body i, no faster
     /// than the turns of the joints between them times its reach from their axes; the
@@ -208,11 +209,14 @@ impl ArmGeometry {
     pub(crate) fn contact_stop(
         &self,
         model: &ArmModel,
-        theta: &Controlled,
+        start: &Joints,
         delta: &Controlled,
         up_to: f64,
         obstacles: &[Obstacle],
     ) -> f64 {
+        let theta = &model.controlled_of(start);
+        // A numerical wrist starts from the last pose looked at.
+        let near = std::cell::Cell::new(*start);
         let turns = delta.abs();
         let rates: [f64; BODIES] = std::array::from_fn(|body| {
             // Body k hangs from joint k - 1.
@@ -224,8 +228,9 @@ impl ArmGeometry {
             }
         });
         let allowance = |s: f64| {
-            let q = model.full_pose(&(theta + delta * s));
-            self.allowance(model, &q, &rates, obstacles)
+            let pose = model.pose_near(&(theta + delta * s), &near.get());
+            near.set(pose.joints);
+            self.allowance(model, &pose.joints, &rates, obstacles)
         };
         let (mut s, mut now) = (0.0, allowance(0.0));
         if now <= 0.0 {

@@ -181,7 +181,7 @@ impl Simulator for KinematicSim {
         );
         let touch = self.geometry.contact_stop(
             &self.model,
-            &self.theta,
+            &self.joints,
             delta,
             floor.min(fraction),
             &self.obstacles,

@@ -21,7 +21,7 @@ use crate::experiment::show::{
     TrialRange, TrialTrace, BACKGROUND_GREY,
 };
 use crate::experiment::CameraKind;
-use crate::robot::{ArmModel, Joints};
+use crate::robot::{ArmModel, Frames, Joints};
 use nalgebra::{Isometry3, Point3, Vector3};
 use rerun::{
     Capsules3D, Ellipsoids3D, Image, LineStrips3D, Pinhole, Points3D, RecordingStream, Scalars,
@@ -102,10 +102,10 @@ fn transform(pose: &Isometry3<f64>) -> Transform3D {
     )
 }
 
-/// The six link frames and the camera frame of `joints`.
-fn frames(model: &ArmModel, joints: &Joints) -> ([Isometry3<f64>; 6], Isometry3<f64>) {
+/// The link frames and the camera frame of `joints`.
+fn frames(model: &ArmModel, joints: &Joints) -> (Frames, Isometry3<f64>) {
     let links = model.link_frames(joints);
-    (links, links[5] * model.camera_mount())
+    (links, links.last() * model.camera_mount())
 }
 
 impl TrialLogger {
@@ -173,8 +173,8 @@ impl TrialLogger {
         let base = joints[0].origin.translation.vector;
         self.stream
             .log("world/arm/base", &capsule(&Vector3::zeros(), &base))?;
-        for k in 0..6 {
-            let next = if k < 5 {
+        for k in 0..joints.len() {
+            let next = if k + 1 < joints.len() {
                 joints[k + 1].origin.translation.vector
             } else {
                 model.camera_mount().translation.vector

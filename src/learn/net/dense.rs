@@ -13,6 +13,9 @@ pub struct DenseNet<const I: usize, const O: usize> {
     /// Layout: W1 (hidden × I, row-major), b1 (hidden), W2 (O × hidden, row-major), b2 (O).
     params: Vec<f64>,
     activations: Vec<f64>,
+    /// A batch's hidden activations, pattern after pattern (scratch of conjugate-gradient
+    /// training, grown to the largest batch and kept).
+    batch_activations: Vec<f64>,
 }
 
 impl<const I: usize, const O: usize> DenseNet<I, O> {
@@ -26,6 +29,7 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
             hidden,
             params,
             activations: vec![0.0; hidden],
+            batch_activations: Vec::new(),
         }
     }
 
@@ -52,26 +56,44 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
         (w1, b1, w2, b2)
     }
 
-    /// The net's output for `x`. (Sums run in index order from −0, as `Iterator::sum`
-    /// does, so the loops' shape does not change a bit of the result.)
-    pub fn forward(&mut self, x: &SVector<f64, I>) -> SVector<f64, O> {
-        let (w1, b1, w2, b2) = Self::layers(&self.params, self.hidden);
-        for ((a, row), b) in self.activations.iter_mut().zip(w1.chunks_exact(I)).zip(b1) {
+    /// Writes the hidden units' net inputs for `x` into `sums` (one per unit): each unit's
+    /// weighted sum (in index order from −0, as `Iterator::sum` does, so the loops' shape
+    /// does not change a bit of the result) plus its bias.
+    fn hidden_sums(params: &[f64], x: &SVector<f64, I>, sums: &mut [f64]) {
+        let (w1, b1, _, _) = Self::layers(params, sums.len());
+        for ((a, row), b) in sums.iter_mut().zip(w1.chunks_exact(I)).zip(b1) {
             let row: &[f64; I] = row.try_into().expect("rows of I weights");
             let mut sum = -0.0;
             for i in 0..I {
                 sum += row[i] * x[i];
             }
-            *a = (sum + b).tanh();
+            *a = sum + b;
         }
+    }
+
+    /// Writes the hidden units' activations for `x` into `activations` (one per unit).
+    fn hidden_layer(params: &[f64], x: &SVector<f64, I>, activations: &mut [f64]) {
+        Self::hidden_sums(params, x, activations);
+        activations.iter_mut().for_each(|a| *a = a.tanh());
+    }
+
+    /// The output layer's answer to the hidden `activations`.
+    fn output_layer(params: &[f64], activations: &[f64]) -> SVector<f64, O> {
+        let h = activations.len();
+        let (_, _, w2, b2) = Self::layers(params, h);
         let mut out = [-0.0; O];
-        let h = self.hidden;
-        for (j, a) in self.activations.iter().enumerate() {
+        for (j, a) in activations.iter().enumerate() {
             for (k, o) in out.iter_mut().enumerate() {
                 *o += w2[k * h + j] * a;
             }
         }
         SVector::from_fn(|k, _| out[k] + b2[k])
+    }
+
+    /// The net's output for `x`.
+    pub fn forward(&mut self, x: &SVector<f64, I>) -> SVector<f64, O> {
+        Self::hidden_layer(&self.params, x, &mut self.activations);
+        Self::output_layer(&self.params, &self.activations)
     }
 
     /// Adds ∂(½‖y − t‖²)/∂params for one pattern to `grad`; returns ½‖y − t‖².
@@ -81,9 +103,22 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
         target: &SVector<f64, O>,
         grad: &mut [f64],
     ) -> f64 {
-        let error = self.forward(x) - target;
-        let h = self.hidden;
-        let (_, _, w2, _) = Self::layers(&self.params, h);
+        Self::hidden_layer(&self.params, x, &mut self.activations);
+        Self::back_propagate(&self.params, &self.activations, x, target, grad)
+    }
+
+    /// Adds ∂(½‖y − t‖²)/∂params for the pattern (`x`, `target`) whose hidden activations
+    /// are `activations` to `grad`; returns ½‖y − t‖².
+    fn back_propagate(
+        params: &[f64],
+        activations: &[f64],
+        x: &SVector<f64, I>,
+        target: &SVector<f64, O>,
+        grad: &mut [f64],
+    ) -> f64 {
+        let error = Self::output_layer(params, activations) - target;
+        let h = activations.len();
+        let (_, _, w2, _) = Self::layers(params, h);
         let (w1_grad, rest) = grad.split_at_mut(h * I);
         let (b1_grad, rest) = rest.split_at_mut(h);
         let (w2_grad, b2_grad) = rest.split_at_mut(O * h);
@@ -91,7 +126,7 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
         // as `Iterator::sum` starts), then its weights' gradients. Each gradient entry gets
         // one addition per pattern, so the order of units does not change a bit.
         let rows = w1_grad.chunks_exact_mut(I).zip(b1_grad);
-        for (j, ((row, bias), a)) in rows.zip(&self.activations).enumerate() {
+        for (j, ((row, bias), a)) in rows.zip(activations).enumerate() {
             let mut back = -0.0;
             for (k, e) in error.iter().enumerate() {
                 back += e * w2[k * h + j];
@@ -142,12 +177,23 @@ impl<const I: usize, const O: usize> Objective for BatchLoss<'_, I, O> {
         self.net.params.len()
     }
 
+    /// The whole batch's hidden layer first (every net input, then one pass of tanh over
+    /// them all: independent, so they run side by side), then the patterns' gradients in
+    /// order — the same sums as pattern by pattern, to the bit.
     fn evaluate(&mut self, at: &[f64], grad: &mut [f64]) -> f64 {
-        self.net.params.copy_from_slice(at);
+        let net = &mut *self.net;
+        net.params.copy_from_slice(at);
+        let h = net.hidden;
+        let activations = &mut net.batch_activations;
+        activations.resize(self.batch.len() * h, 0.0);
+        for ((x, _), sums) in self.batch.iter().zip(activations.chunks_exact_mut(h)) {
+            DenseNet::<I, O>::hidden_sums(&net.params, x, sums);
+        }
+        activations.iter_mut().for_each(|a| *a = a.tanh());
         grad.fill(0.0);
         let mut loss = 0.0;
-        for (x, t) in self.batch {
-            loss += self.net.accumulate_gradient(x, t, grad);
+        for ((x, t), hidden) in self.batch.iter().zip(activations.chunks_exact(h)) {
+            loss += DenseNet::<I, O>::back_propagate(&net.params, hidden, x, t, grad);
         }
         let n = self.batch.len().max(1) as f64;
         grad.iter_mut().for_each(|g| *g /= n);

@@ -14,10 +14,10 @@
 //! between the two and how far the nearer end reaches: small moves far from contact cost
 //! one look.
 
-use super::collision::{body_elements, Elements};
+use super::collision::{body_elements, Elements, MoveStart};
 use super::dynamic::{parts, to_pose};
 use super::world::Obstacle;
-use super::{ArmModel, Controlled, Joints, Shape};
+use super::{ArmModel, Controlled, Frames, Joints, Shape};
 use nalgebra::{Isometry3, Point3, Vector3};
 use rapier3d_f64::math::Pose;
 use rapier3d_f64::parry::query::{distance, intersection_test};
@@ -100,7 +100,11 @@ impl ArmGeometry {
         rates: &[f64; BODIES],
         obstacles: &[Obstacle],
     ) -> f64 {
-        let links = model.link_frames(q);
+        self.allowance_at(&model.link_frames(q), rates, obstacles)
+    }
+
+    /// [`allowance`](Self::allowance) with the links placed at `links`.
+    fn allowance_at(&self, links: &Frames, rates: &[f64; BODIES], obstacles: &[Obstacle]) -> f64 {
         let frame = |k: usize| match k {
             0 => Isometry3::identity(),
             _ => links[k - 1],
@@ -209,14 +213,14 @@ impl ArmGeometry {
     pub(crate) fn contact_stop(
         &self,
         model: &ArmModel,
-        start: &Joints,
+        start: &MoveStart,
         delta: &Controlled,
         up_to: f64,
         obstacles: &[Obstacle],
     ) -> f64 {
-        let theta = &model.controlled_of(start);
+        let theta = &start.theta;
         // A numerical wrist starts from the last pose looked at.
-        let near = std::cell::Cell::new(*start);
+        let near = std::cell::Cell::new(start.pose.joints);
         let turns = delta.abs();
         let rates: [f64; BODIES] = std::array::from_fn(|body| {
             // Body k hangs from joint k - 1.
@@ -232,7 +236,7 @@ impl ArmGeometry {
             near.set(pose.joints);
             self.allowance(model, &pose.joints, &rates, obstacles)
         };
-        let (mut s, mut now) = (0.0, allowance(0.0));
+        let (mut s, mut now) = (0.0, self.allowance_at(&start.frames, &rates, obstacles));
         if now <= 0.0 {
             return up_to;
         }

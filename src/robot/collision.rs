@@ -2,7 +2,7 @@
 //! as the arm is now (the camera on link 6, a stretched link's shapes grown with it), and
 //! how low they reach — the floor rule both simulators share.
 
-use super::{ArmModel, Controlled, Joints, Shape};
+use super::{ArmModel, ArmPose, Controlled, Frames, Joints, Shape, MAX_JOINTS};
 use nalgebra::{Isometry3, Unit, Vector3};
 
 /// Shapes never get shorter than this when a link is shortened (m).
@@ -53,7 +53,11 @@ pub(crate) fn stretch_of(model: &ArmModel, k: usize) -> Option<(Unit<Vector3<f64
 /// The lowest world height (m) any moving link or the camera reaches at pose `q`, with
 /// each body's collision elements (`bodies[k - 1]` for link k).
 pub(crate) fn lowest_point(model: &ArmModel, bodies: &[Elements], q: &Joints) -> f64 {
-    let frames = model.link_frames(q);
+    lowest_of(&model.link_frames(q), bodies)
+}
+
+/// The lowest z (m) of the collision elements of links placed at `frames`.
+fn lowest_of(frames: &Frames, bodies: &[Elements]) -> f64 {
     frames
         .iter()
         .zip(bodies)
@@ -61,15 +65,40 @@ pub(crate) fn lowest_point(model: &ArmModel, bodies: &[Elements], q: &Joints) ->
         .fold(f64::INFINITY, f64::min)
 }
 
-/// How far any point of the arm can be from a joint axis (m): the joint origins, the
-/// camera mount and each collision element's reach added up. A joint turn of δ rad moves
-/// no point of the arm by more than this times δ.
-pub(crate) fn reach(model: &ArmModel, bodies: &[Elements]) -> f64 {
-    let chain: f64 = model
-        .joints()
-        .iter()
-        .map(|j| j.origin.translation.vector.norm())
-        .sum();
+/// The arm where a move starts, as the floor and contact rules first look at it: the
+/// controlled angles, the pose solved from them (as at fraction 0 of the move, warm-started
+/// from the joints the arm is at) and its link frames — worked out once for both rules.
+#[derive(Debug, Clone)]
+pub(crate) struct MoveStart {
+    /// The joints the arm is at.
+    pub joints: Joints,
+    /// Its controlled (learned) angles.
+    pub theta: Controlled,
+    /// The pose at fraction 0 of the move.
+    pub pose: ArmPose,
+    /// That pose's link frames.
+    pub frames: Frames,
+}
+
+impl MoveStart {
+    /// The start of the move by `delta` from `joints`.
+    pub(crate) fn new(model: &ArmModel, joints: &Joints, delta: &Controlled) -> MoveStart {
+        let theta = model.controlled_of(joints);
+        let pose = model.pose_near(&(theta + delta * 0.0), joints);
+        let frames = model.link_frames(&pose.joints);
+        MoveStart {
+            joints: *joints,
+            theta,
+            pose,
+            frames,
+        }
+    }
+}
+
+/// How far any point of the arm beyond each joint can be from that joint's axis (m): the
+/// later joint origins, the camera mount and the largest collision element's reach added up.
+/// A turn of joint j by δ rad moves no point of the arm by more than `reaches[j]` times δ.
+pub(crate) fn reaches(model: &ArmModel, bodies: &[Elements]) -> [f64; MAX_JOINTS] {
     let extent = |(pose, shape): &(Isometry3<f64>, Shape)| {
         pose.translation.vector.norm()
             + match *shape {
@@ -81,26 +110,57 @@ pub(crate) fn reach(model: &ArmModel, bodies: &[Elements]) -> f64 {
             }
     };
     let shapes = bodies.iter().flatten().map(extent).fold(0.0, f64::max);
-    chain + model.camera_mount().translation.vector.norm() + shapes
+    let tail = model.camera_mount().translation.vector.norm() + shapes;
+    let origins = model
+        .joints()
+        .iter()
+        .map(|j| j.origin.translation.vector.norm());
+    let origins: Vec<f64> = origins.collect();
+    std::array::from_fn(|j| origins.iter().skip(j + 1).sum::<f64>() + tail)
+}
+
+/// How fast (m per unit fraction of the move by `delta`) any point of the arm can sink:
+/// each joint's turn times its reach — the learned joints by their share of the move, each
+/// joint the wrist solves by at most θ2's and θ3's turns together. The first joint's axis is
+/// fixed in the world: a turn about it lowers a point by at most its reach times the sine
+/// of the axis's angle to the vertical (nothing for a base yaw).
+fn sinking_speed(model: &ArmModel, reaches: &[f64; MAX_JOINTS], delta: &Controlled) -> f64 {
+    let wrist_turn = delta.y.abs() + delta.z.abs();
+    let first = &model.joints()[0];
+    let first_tilt = (first.origin.rotation * first.axis.into_inner())
+        .cross(&Vector3::z())
+        .norm();
+    (0..model.dof())
+        .map(|joint| {
+            let turn = match model.learned().iter().position(|&j| j == joint) {
+                Some(i) => delta[i].abs(),
+                None if model.wrist().sets(joint) => wrist_turn,
+                None => 0.0,
+            };
+            let tilt = if joint == 0 { first_tilt } else { 1.0 };
+            turn * reaches[joint] * tilt
+        })
+        .sum()
 }
 
 /// How far along the controlled move from every joint at `start` by `delta`
 /// (fractions up to `up_to`)
 /// the arm gets before a link or the camera would go below `floor` (m): `up_to` when
 /// none does, or when the arm starts below it. Marches in steps that cannot skip a dip
-/// (each no longer than the clearance over `reach` allows), then bisects the crossing.
+/// (each no longer than the clearance over the arm's sinking speed allows), then bisects the
+/// crossing.
 pub(crate) fn floor_stop(
     model: &ArmModel,
     bodies: &[Elements],
-    reach: f64,
-    start: &Joints,
+    reaches: &[f64; MAX_JOINTS],
+    start: &MoveStart,
     delta: &Controlled,
     up_to: f64,
     floor: f64,
 ) -> f64 {
-    let theta = &model.controlled_of(start);
+    let theta = &start.theta;
     // A numerical wrist starts from the last pose looked at.
-    let near = std::cell::Cell::new(*start);
+    let near = std::cell::Cell::new(start.joints);
     let clearance = |s: f64| {
         let pose = model.pose_near(&(theta + delta * s), &near.get());
         if pose.wrist_found {
@@ -110,12 +170,14 @@ pub(crate) fn floor_stop(
             f64::NAN
         }
     };
-    // The wrist follows θ2 and θ3: it turns by at most their sum (for each of up to three
-    // wrist joints solved).
-    let wrist_turn = (delta.y.abs() + delta.z.abs()) * wrist_joints(model);
-    let speed = reach * (delta.abs().sum() + wrist_turn);
+    let speed = sinking_speed(model, reaches, delta);
     let mut s = 0.0;
-    let mut gap = clearance(0.0);
+    let mut gap = if start.pose.wrist_found {
+        near.set(start.pose.joints);
+        lowest_of(&start.frames, bodies) - floor
+    } else {
+        f64::NAN
+    };
     if gap.is_nan() || gap < 0.0 || speed == 0.0 {
         return up_to;
     }
@@ -141,15 +203,6 @@ pub(crate) fn floor_stop(
         (s, gap) = (next, next_gap);
     }
     up_to
-}
-
-/// How many joints the wrist turns: 1 for a one-joint wrist, up to 3 for a numerical one.
-fn wrist_joints(model: &ArmModel) -> f64 {
-    match *model.wrist() {
-        super::Wrist::OneJoint(_) => 1.0,
-        super::Wrist::Numerical { count, .. } => count as f64,
-        super::Wrist::None => 0.0,
-    }
 }
 
 /// The lowest world height (m) of `shape` at world pose `pose`.
@@ -283,5 +336,42 @@ mod tests {
         // The camera looks down from 0.1 m beyond the wrist, its 6 cm box below the lens
         // centre... the lowest point is the camera box's bottom edge.
         assert!(low > DEFAULT_FLOOR_Z && low < 0.55, "{low}");
+    }
+
+    #[test]
+    fn no_point_of_the_arm_sinks_faster_than_the_march_assumes() {
+        use rand::{Rng, SeedableRng};
+        let model = ArmModel::oscar6();
+        let bodies: Vec<_> = (1..=6).map(|k| body_elements(&model, k)).collect();
+        let reaches = reaches(&model, &bodies);
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+        let (lower, upper): (Vec<f64>, Vec<f64>) = model
+            .learned()
+            .iter()
+            .map(|&j| {
+                let joint = &model.joints()[j];
+                (joint.lower, joint.upper)
+            })
+            .unzip();
+        let mut draw = || Controlled::from_fn(|i, _| rng.random_range(lower[i]..upper[i]));
+        for _ in 0..200 {
+            let (from, to) = (draw(), draw());
+            let delta = to - from;
+            let speed = sinking_speed(&model, &reaches, &delta);
+            let lowest =
+                |s: f64| lowest_point(&model, &bodies, &model.pose_of(&(from + delta * s)).joints);
+            let steps = 200;
+            let mut before = lowest(0.0);
+            for k in 1..=steps {
+                let now = lowest(k as f64 / steps as f64);
+                assert!(
+                    before - now <= speed / steps as f64 + 1e-12,
+                    "from {from:?} by {delta:?}: sank {} m in a step, bound {}",
+                    before - now,
+                    speed / steps as f64
+                );
+                before = now;
+            }
+        }
     }
 }

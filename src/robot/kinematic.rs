@@ -2,14 +2,14 @@
 //! is instant in wall time; its simulated duration follows the trapezoidal profile.
 
 use super::clearance::ArmGeometry;
-use super::collision::{body_elements, floor_stop, reach, Elements};
+use super::collision::{body_elements, floor_stop, reaches, Elements, MoveStart};
 use super::dynamic::compound;
 use super::model::{ArmModel, Controlled};
 use super::motion::{limit_stop_fraction, TrapezoidProfile};
 use super::simulator::{MoveReport, MoveSettings, SimWork, Simulator};
 use super::world::{Obstacle, WorldView, SEEN_BODIES};
-use super::Joints;
 use super::RobotError;
+use super::{Joints, MAX_JOINTS};
 use nalgebra::{Isometry3, Vector3};
 use rapier3d_f64::parry::shape::SharedShape;
 
@@ -23,9 +23,10 @@ pub struct KinematicSim {
     settings: MoveSettings,
     theta: Controlled,
     joints: Joints,
-    /// Each link's collision elements (link 1 first) and how far they reach, for the floor.
+    /// Each link's collision elements (link 1 first) and how far the arm reaches beyond each
+    /// joint, for the floor.
     collision: Vec<Elements>,
-    reach: f64,
+    reaches: [f64; MAX_JOINTS],
     /// The bodies a camera sees (base, links 1–5) as parry shapes, for [`WorldView`].
     seen_shapes: [Option<SharedShape>; SEEN_BODIES],
     /// The obstacle boxes in the world.
@@ -49,7 +50,7 @@ impl KinematicSim {
             joints: pose.joints,
             camera: pose.camera,
             collision: Default::default(),
-            reach: 0.0,
+            reaches: [0.0; MAX_JOINTS],
             seen_shapes: Default::default(),
             obstacles: Vec::new(),
             geometry: ArmGeometry::default(),
@@ -70,7 +71,7 @@ impl KinematicSim {
         self.collision = (1..=self.model.dof())
             .map(|k| body_elements(&self.model, k))
             .collect();
-        self.reach = reach(&self.model, &self.collision);
+        self.reaches = reaches(&self.model, &self.collision);
         self.geometry = ArmGeometry::new(&self.model);
         self.seen_shapes = std::array::from_fn(|k| {
             let base;
@@ -170,18 +171,19 @@ impl Simulator for KinematicSim {
             report.stopped_by_limit = Some(self.model.wrist_joint_at_fault(&end_pose));
             fraction = self.wrist_stop(delta, fraction);
         }
+        let start = MoveStart::new(&self.model, &self.joints, delta);
         let floor = floor_stop(
             &self.model,
             &self.collision,
-            self.reach,
-            &self.joints,
+            &self.reaches,
+            &start,
             delta,
             fraction,
             self.settings.floor_z,
         );
         let touch = self.geometry.contact_stop(
             &self.model,
-            &self.joints,
+            &start,
             delta,
             floor.min(fraction),
             &self.obstacles,

@@ -95,10 +95,10 @@ fn run_python_learner(
     outcome.map_err(run_error)
 }
 
-/// Runs a built-in learner's run on a thread of its own while this one, without the GIL, wakes every
-/// [`SIGNAL_POLL`] to let Python's signal handlers run. When one raises (Ctrl-C's
-/// `KeyboardInterrupt`), the run is asked to stop after its current trial; once it has
-/// finished writing, that exception is returned in place of the run's result.
+/// Runs a built-in learner's run on a thread of its own while this one, without the GIL,
+/// wakes every [`SIGNAL_POLL`] to let Python's signal handlers run. When one raises
+/// (Ctrl-C's `KeyboardInterrupt`), the run is asked to stop after its current trial; once
+/// it has finished writing, that exception is returned in place of the run's result.
 fn run_interruptible(
     py: Python<'_>,
     options: &RunOptions,

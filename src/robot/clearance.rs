@@ -14,7 +14,7 @@
 //! between the two and how far the nearer end reaches: small moves far from contact cost
 //! one look.
 
-use super::collision::{body_elements, Elements, MoveStart};
+use super::collision::{body_elements, joint_turns, Elements, MoveStart};
 use super::dynamic::{parts, to_pose};
 use super::world::Obstacle;
 use super::{ArmModel, Controlled, Frames, Joints, Shape};
@@ -221,16 +221,10 @@ impl ArmGeometry {
         let theta = &start.theta;
         // A numerical wrist starts from the last pose looked at.
         let near = std::cell::Cell::new(start.pose.joints);
-        let turns = delta.abs();
-        let rates: [f64; BODIES] = std::array::from_fn(|body| {
-            // Body k hangs from joint k - 1.
-            let joint = body.wrapping_sub(1);
-            match model.learned().iter().position(|&j| j == joint) {
-                Some(i) => turns[i],
-                None if model.wrist().sets(joint) => turns.y + turns.z,
-                None => 0.0,
-            }
-        });
+        let turns = joint_turns(model, delta);
+        // Body k hangs from joint k - 1; the base (body 0) stays.
+        let rates: [f64; BODIES] =
+            std::array::from_fn(|body| body.checked_sub(1).map_or(0.0, |joint| turns[joint]));
         let allowance = |s: f64| {
             let pose = model.pose_near(&(theta + delta * s), &near.get());
             near.set(pose.joints);

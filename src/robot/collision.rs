@@ -119,26 +119,34 @@ pub(crate) fn reaches(model: &ArmModel, bodies: &[Elements]) -> [f64; MAX_JOINTS
     std::array::from_fn(|j| origins.iter().skip(j + 1).sum::<f64>() + tail)
 }
 
-/// How fast (m per unit fraction of the move by `delta`) any point of the arm can sink:
-/// each joint's turn times its reach — the learned joints by their share of the move, each
-/// joint the wrist solves by at most θ2's and θ3's turns together. The first joint's axis is
-/// fixed in the world: a turn about it lowers a point by at most its reach times the sine
-/// of the axis's angle to the vertical (nothing for a base yaw).
-fn sinking_speed(model: &ArmModel, reaches: &[f64; MAX_JOINTS], delta: &Controlled) -> f64 {
+/// How far (rad) each joint of the chain can turn in the move by `delta`: the learned joints
+/// by their share of the move, each joint the wrist solves by at most θ2's and θ3's turns
+/// together, the others not at all.
+pub(crate) fn joint_turns(model: &ArmModel, delta: &Controlled) -> [f64; MAX_JOINTS] {
     let wrist_turn = delta.y.abs() + delta.z.abs();
+    std::array::from_fn(
+        |joint| match model.learned().iter().position(|&j| j == joint) {
+            Some(i) => delta[i].abs(),
+            None if model.wrist().sets(joint) => wrist_turn,
+            None => 0.0,
+        },
+    )
+}
+
+/// How fast (m per unit fraction of the move by `delta`) any point of the arm can sink:
+/// each joint's turn ([`joint_turns`]) times its reach. The first joint's axis is fixed in
+/// the world: a turn about it lowers a point by at most its reach times the sine of the
+/// axis's angle to the vertical (nothing for a base yaw).
+fn sinking_speed(model: &ArmModel, reaches: &[f64; MAX_JOINTS], delta: &Controlled) -> f64 {
+    let turns = joint_turns(model, delta);
     let first = &model.joints()[0];
     let first_tilt = (first.origin.rotation * first.axis.into_inner())
         .cross(&Vector3::z())
         .norm();
     (0..model.dof())
         .map(|joint| {
-            let turn = match model.learned().iter().position(|&j| j == joint) {
-                Some(i) => delta[i].abs(),
-                None if model.wrist().sets(joint) => wrist_turn,
-                None => 0.0,
-            };
             let tilt = if joint == 0 { first_tilt } else { 1.0 };
-            turn * reaches[joint] * tilt
+            turns[joint] * reaches[joint] * tilt
         })
         .sum()
 }

@@ -11,7 +11,10 @@
 //! 0.78 mm at the 20 cm standoff, 0.045° at about 1 m of reach).
 
 use eyehand::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
-use eyehand::experiment::{run, CameraKind, Config, RunOptions, RunSummary};
+mod common;
+
+use common::run_in_process;
+use eyehand::experiment::{CameraKind, Config, RunSummary};
 use eyehand::learn::Method;
 use eyehand::robot::{ArmModel, KinematicSim, MoveSettings, Obstacle, Simulator};
 use nalgebra::{Point3, Vector3};
@@ -28,18 +31,11 @@ fn config(method: Method) -> Config {
     config
 }
 
-fn run_config(config: Config) -> RunSummary {
-    let data = tempfile::tempdir().expect("a temporary data folder");
-    run(&RunOptions::new(config, data.path()))
-        .expect("the run succeeds")
-        .summary
-}
-
 fn distances(summary: &RunSummary) -> String {
     summary
         .mean_distance_mm
         .iter()
-        .map(|d| d.map_or("-".into(), |d| format!("{d:.4}")))
+        .map(|&d| common::mm(d))
         .collect::<Vec<_>>()
         .join(" | ")
 }
@@ -53,7 +49,7 @@ fn noise_table() {
             config.camera_noise_px = sigma;
             config.camera_area_noise = sigma / 12.8;
             config.joint_noise_deg = 0.045 * sigma;
-            run_config(config)
+            run_in_process(config)
         };
         let (lin5, ik) = (noisy(Method::Lin5), noisy(Method::Ik));
         let ratio = match (lin5.mean_distance_mm[3], ik.mean_distance_mm[3]) {
@@ -76,7 +72,7 @@ fn raycast_table() {
         let mut config = config(Method::Lin5);
         config.camera = kind;
         config.raycast_resolution = resolution;
-        let summary = run_config(config);
+        let summary = run_in_process(config);
         println!(
             "| {label} | {:.0} | {} | {} |",
             summary.trials_per_second,

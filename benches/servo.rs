@@ -9,7 +9,10 @@
 //! summary's window (the last tenth of the trials).
 
 use eyehand::control::ServoMode;
-use eyehand::experiment::{run, Config, RunOptions, RunSummary, SimKind};
+mod common;
+
+use common::run_in_process;
+use eyehand::experiment::{Config, RunSummary, SimKind};
 use eyehand::learn::Method;
 
 const TRIALS: usize = 5_000;
@@ -39,13 +42,6 @@ fn config(method: Method, timing: Timing, trials: usize) -> Config {
         ServoMode::Continuous => 150,
     };
     config
-}
-
-fn run_config(config: Config) -> RunSummary {
-    let data = tempfile::tempdir().expect("a temporary data folder");
-    run(&RunOptions::new(config, data.path()))
-        .expect("the run succeeds")
-        .summary
 }
 
 fn figure(value: Option<f64>, digits: usize) -> String {
@@ -85,7 +81,11 @@ fn main() {
             fps: 0.0,
             latency_ms: 0.0,
         };
-        row(method, study, &run_config(config(method, study, trials)));
+        row(
+            method,
+            study,
+            &run_in_process(config(method, study, trials)),
+        );
         for latency_ms in [0.0, 50.0] {
             let mut seconds = [None; 2];
             for (k, servo) in [ServoMode::Step, ServoMode::Continuous]
@@ -97,7 +97,7 @@ fn main() {
                     fps: FPS,
                     latency_ms,
                 };
-                let summary = run_config(config(method, timing, trials));
+                let summary = run_in_process(config(method, timing, trials));
                 row(method, timing, &summary);
                 seconds[k] = summary.mean_seconds_to_epsilon;
             }

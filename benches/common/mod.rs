@@ -5,7 +5,7 @@
 
 pub mod recovery;
 
-use eyehand::experiment::RunSummary;
+use eyehand::experiment::{run, Config, RunOptions, RunSummary};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -36,6 +36,14 @@ pub fn run_cli(data: &Path, args: &[&str]) -> Finished {
         summary: serde_json::from_str(&json).expect("a valid summary"),
         folder,
     }
+}
+
+/// Runs `config` in this process, into a temporary data folder, and returns its summary.
+pub fn run_in_process(config: Config) -> RunSummary {
+    let data = tempfile::tempdir().expect("a temporary data folder");
+    run(&RunOptions::new(config, data.path()))
+        .expect("the run succeeds")
+        .summary
 }
 
 /// Trials per second over trials (from, to] from the minutes column of `nodes`.

@@ -1,13 +1,12 @@
 //! Any serial arm from its real URDF: the Franka Panda and a UR-style arm as `ArmModel`s
 //! keep the camera looking down with its image x axis radial, learn with lin5 on the
-//! kinematic simulator, and the OSCAR-6 read as a description is the OSCAR-6. Wrong arm
-//! entries are clear errors.
+//! kinematic simulator, and the camera link rides with the camera. Wrong arm entries are
+//! clear errors.
 
 use eyehand::experiment::{run, Config, RunOptions};
 use eyehand::robot::description::{DescriptionOptions, RobotDescription};
 use eyehand::robot::{
     ArmModel, ArmSettings, Controlled, KinematicSim, MoveSettings, ReachSpace, Simulator, Wrist,
-    DEFAULT_URDF,
 };
 use nalgebra::{Isometry3, Vector3};
 use rand::{Rng, SeedableRng};
@@ -145,27 +144,48 @@ fn the_inverse_kinematics_puts_the_camera_where_asked() {
 }
 
 #[test]
-fn the_oscar6_read_as_a_description_is_the_oscar6() {
-    let description = RobotDescription::parse(
-        DEFAULT_URDF,
-        "oscar6.urdf",
-        Path::new("."),
-        &DescriptionOptions::default(),
-    )
-    .unwrap();
-    let general = ArmModel::from_description(&description, &ArmSettings::default()).unwrap();
+fn the_camera_link_and_what_is_fixed_below_it_ride_with_the_camera() {
+    // The OSCAR-6: its 0.3 kg camera link with its box is the body after link 6 (0.5 kg).
     let oscar = ArmModel::oscar6();
-    assert_eq!(general.wrist(), &Wrist::OneJoint(4));
-    assert!(general.is_oscar6_form());
-    let mut rng = ChaCha8Rng::seed_from_u64(5);
-    for _ in 0..100 {
-        let theta = Controlled::from_fn(|i, _| {
-            let joint = &oscar.joints()[i];
-            rng.random_range(joint.lower..joint.upper)
-        });
-        let (a, b) = (general.pose_of(&theta), oscar.pose_of(&theta));
-        assert!((a.joints - b.joints).amax() < 1e-12);
-        assert!((a.camera.to_homogeneous() - b.camera.to_homogeneous()).amax() < 1e-12);
+    assert_eq!(oscar.wrist(), &Wrist::OneJoint(4));
+    assert!(oscar.is_oscar6_form());
+    let links = oscar.links();
+    assert_eq!((links[6].mass, links[7].mass), (0.5, 0.3));
+    assert_eq!(links[7].name, "camera_link");
+    assert_eq!(links[7].collisions.len(), 1);
+    // The Panda with the camera on its hand: the hand (0.81 kg) rides with the camera, links
+    // 7 and 8 stay the last body; a camera offset leaves the hand where it is.
+    let at = |offset_cm: [f64; 3]| {
+        let description =
+            RobotDescription::load(&PANDA.urdf(), &DescriptionOptions::default()).unwrap();
+        let settings = ArmSettings {
+            camera_link: PANDA.camera_link.into(),
+            camera_offset: Vector3::from(offset_cm) / 100.0,
+            learned_joints: PANDA.learned.map(String::from),
+        };
+        ArmModel::from_description(&description, &settings).unwrap()
+    };
+    let (plain, offset) = (at([0.0; 3]), at([3.0, -2.0, 10.0]));
+    let links = plain.links();
+    assert_eq!(links.len(), 9);
+    assert!((links[7].mass - 0.2).abs() < 1e-12, "{}", links[7].mass);
+    assert!((links[8].mass - 0.81).abs() < 1e-12, "{}", links[8].mass);
+    assert_eq!(links[8].name, "panda_hand");
+    let hand = |model: &ArmModel| -> Vec<Isometry3<f64>> {
+        let camera = &model.links()[8];
+        let mut poses = vec![model.camera_mount() * camera.inertial_origin];
+        poses.extend(
+            camera
+                .collisions
+                .iter()
+                .map(|(pose, _)| model.camera_mount() * pose),
+        );
+        poses
+    };
+    let (a, b) = (hand(&plain), hand(&offset));
+    assert_eq!(a.len(), 2);
+    for (a, b) in a.iter().zip(&b) {
+        assert!((a.to_homogeneous() - b.to_homogeneous()).amax() < 1e-12);
     }
 }
 

@@ -1,7 +1,8 @@
-//! A broken or unsupported URDF is a clear error naming the element at fault; tests match
-//! on the error's kind.
+//! A broken or unsupported OSCAR-6 URDF, read as a robot description at the default arm
+//! settings, is a clear error naming the element at fault; tests match on the error's kind.
 
-use eyehand::robot::{load_urdf, parse_urdf, ArmModel, UrdfErrorKind};
+use eyehand::robot::description::DescriptionErrorKind as Kind;
+use eyehand::robot::{load_urdf, parse_urdf, ArmModel, Shape};
 
 fn shipped() -> String {
     std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/urdf/oscar6.urdf")).unwrap()
@@ -15,7 +16,7 @@ fn without_joint(name: &str) -> String {
     format!("{}{}", &text[..start], &text[end..])
 }
 
-fn kind_of(text: &str) -> UrdfErrorKind {
+fn kind_of(text: &str) -> Kind {
     let err = parse_urdf(text, "arm.urdf").unwrap_err();
     assert_eq!(err.file, "arm.urdf");
     assert!(err.to_string().starts_with("arm.urdf: "), "{err}");
@@ -43,9 +44,8 @@ fn a_missing_joint_is_named() {
     for (joint, link) in [("joint_4", "link_4"), ("camera_joint", "camera_link")] {
         assert_eq!(
             kind_of(&without_joint(joint)),
-            UrdfErrorKind::NotConnected {
-                link: link.into(),
-                root: "base_link".into()
+            Kind::TwoRoots {
+                roots: vec!["base_link".into(), link.into()]
             }
         );
     }
@@ -59,19 +59,18 @@ fn a_wrong_joint_type_is_named() {
     );
     assert_eq!(
         kind_of(&text),
-        UrdfErrorKind::NotRevolute {
-            joint: "joint_3".into(),
-            found: "Prismatic".into(),
-            number: 3
+        Kind::PrismaticOnChain {
+            joint: "joint_3".into()
         }
     );
     let text = shipped().replace(
         r#"<joint name="camera_joint" type="fixed">"#,
         r#"<joint name="camera_joint" type="revolute">"#,
     );
+    // A camera joint that turns without limits.
     assert!(matches!(
         kind_of(&text),
-        UrdfErrorKind::CameraJointNotFixed { joint, .. } if joint == "camera_joint"
+        Kind::BadLimits { joint, .. } if joint == "camera_joint"
     ));
 }
 
@@ -83,7 +82,7 @@ fn bad_numbers_are_named() {
     );
     assert!(matches!(
         kind_of(&text),
-        UrdfErrorKind::NonFinite { element, value } if element == "joint `joint_3` origin" && value.is_infinite()
+        Kind::NonFinite { element, value } if element == "joint `joint_3` origin" && value.is_infinite()
     ));
     let text = shipped().replace(
         r#"<limit lower="-0.524" upper="1.745""#,
@@ -91,7 +90,7 @@ fn bad_numbers_are_named() {
     );
     assert_eq!(
         kind_of(&text),
-        UrdfErrorKind::LimitsInverted {
+        Kind::BadLimits {
             joint: "joint_2".into(),
             lower: 1.9,
             upper: 1.745
@@ -100,61 +99,79 @@ fn bad_numbers_are_named() {
     let text = shipped().replace(r#"<mass value="17.0"/>"#, r#"<mass value="-17.0"/>"#);
     assert_eq!(
         kind_of(&text),
-        UrdfErrorKind::NoMass {
+        Kind::NegativeMass {
             link: "link_2".into(),
             mass: -17.0
         }
     );
     let text = shipped().replace(r#"<axis xyz="0 1 0"/>"#, r#"<axis xyz="0 0 0"/>"#);
-    assert!(matches!(kind_of(&text), UrdfErrorKind::ZeroAxis { joint } if joint == "joint_3"));
+    assert!(matches!(kind_of(&text), Kind::ZeroAxis { joint } if joint == "joint_3"));
     let text = shipped().replace(
         r#"<cylinder radius="0.08" length="0.60"/>"#,
         r#"<cylinder radius="0.08" length="-0.60"/>"#,
     );
-    assert!(matches!(kind_of(&text), UrdfErrorKind::BadShape { link } if link == "link_2"));
+    assert!(matches!(
+        kind_of(&text),
+        Kind::BadShape { link, shape } if link == "link_2" && shape == "cylinder"
+    ));
+    let text = shipped().replace(
+        r#"<limit lower="-0.524" upper="1.745" effort="600" velocity="1.6"/>"#,
+        r#"<limit lower="-0.524" upper="1.745" effort="600" velocity="1.6"/><dynamics damping="-2"/>"#,
+    );
+    assert!(matches!(
+        kind_of(&text),
+        Kind::BadDynamics { joint, damping, .. } if joint == "joint_2" && damping == -2.0
+    ));
 }
 
 #[test]
-fn unsupported_structures_are_named() {
+fn a_camera_link_that_is_not_there_is_named() {
     let text = shipped()
         .replace(
             r#"<child link="camera_link"/>"#,
             r#"<child link="eye_link"/>"#,
         )
         .replace(r#"<link name="camera_link">"#, r#"<link name="eye_link">"#);
-    assert!(
-        matches!(kind_of(&text), UrdfErrorKind::NotCameraLink { link, .. } if link == "eye_link")
-    );
-    let text = shipped().replace(
-        r#"<geometry><sphere radius="0.045"/></geometry>"#,
-        r#"<geometry><mesh filename="wrist.stl"/></geometry>"#,
-    );
     assert_eq!(
         kind_of(&text),
-        UrdfErrorKind::MeshCollision {
-            link: "link_5".into(),
-            filename: "wrist.stl".into()
+        Kind::UnknownLink {
+            link: "camera_link".into()
         }
     );
+}
+
+#[test]
+fn meshes_and_branches_are_read_as_any_arm_reads_them() {
+    // A collision mesh that is not there: a capsule stands in (a warning of the description).
+    let text = shipped().replace(
+        r#"<geometry><sphere radius="0.045"/></geometry>"#,
+        r#"<geometry><mesh filename="no_such_wrist.stl"/></geometry>"#,
+    );
+    let model = parse_urdf(&text, "arm.urdf").unwrap();
+    assert!(matches!(
+        model.links()[5].collisions.as_slice(),
+        [(_, Shape::Capsule { .. })]
+    ));
+    // A tool fixed to link 3 becomes part of link 3's body.
     let branch = shipped().replace(
         "</robot>",
         r#"<link name="tool"><inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
         <joint name="tool_joint" type="fixed"><parent link="link_3"/><child link="tool"/></joint></robot>"#,
     );
-    assert!(matches!(
-        kind_of(&branch),
-        UrdfErrorKind::Branch { link, joints } if link == "link_3" && joints.len() == 2
-    ));
+    let model = parse_urdf(&branch, "arm.urdf").unwrap();
+    let oscar = ArmModel::oscar6();
+    assert_eq!(model.links()[3].mass, oscar.links()[3].mass + 1.0);
+    assert_eq!(model.links()[4], oscar.links()[4]);
 }
 
 #[test]
 fn broken_xml_and_missing_files_are_errors() {
     assert!(matches!(
         kind_of("<robot name=\"x\"><link name="),
-        UrdfErrorKind::NotUrdf { .. }
+        Kind::NotUrdf { .. }
     ));
     let err = load_urdf(std::path::Path::new("/no/such/arm.urdf")).unwrap_err();
-    assert!(matches!(err.kind, UrdfErrorKind::Unreadable { .. }));
+    assert!(matches!(err.kind, Kind::Unreadable { .. }));
     assert!(
         err.to_string()
             .starts_with("/no/such/arm.urdf: cannot read"),

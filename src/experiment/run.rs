@@ -18,7 +18,7 @@ use super::{
 };
 use crate::control::{TrialLoop, TrialOutcome};
 use crate::learn::{LearnError, Learner, LearnerStats};
-use crate::robot::{ArmModel, RobotError, UrdfError};
+use crate::robot::{ArmModel, DescriptionError, RobotError};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -72,9 +72,9 @@ impl RunOptions {
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum RunError {
-    /// The URDF is broken or not an OSCAR-6.
+    /// The URDF is broken, or the arm the config's entries pick out of it cannot be built.
     #[error(transparent)]
-    Urdf(#[from] UrdfError),
+    Urdf(#[from] DescriptionError),
     /// The config's `camera_link` or `learned_joints` names no such part of the URDF.
     #[error("{at}: {entry}: {source}")]
     ArmEntry {
@@ -83,7 +83,7 @@ pub enum RunError {
         /// The entry.
         entry: &'static str,
         /// What the URDF says to it.
-        source: Box<UrdfError>,
+        source: Box<DescriptionError>,
     },
     /// The config, an event or the arm fails the checks made before the run starts.
     #[error(transparent)]

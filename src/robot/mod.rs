@@ -23,7 +23,7 @@ mod world;
 pub use collision::DEFAULT_FLOOR_Z;
 pub use description::{Chain, DescriptionError, DescriptionOptions, RobotDescription};
 pub use dynamic::{Drive, DynamicSettings, DynamicSim, FreeArm, SimCounters};
-pub use error::{RobotError, UrdfError, UrdfErrorKind};
+pub use error::RobotError;
 pub use joint::{LinkBody, RevoluteJoint, Shape};
 pub use joint_vector::{Joints, MAX_JOINTS};
 pub use kinematic::KinematicSim;

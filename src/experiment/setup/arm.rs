@@ -1,15 +1,12 @@
-//! The arm a config describes: which loader reads the URDF, the arm settings, and the
-//! reach space (given, or fitted to the arm).
+//! The arm a config describes: its URDF read as a robot description, the arm settings, and
+//! the reach space (given, or fitted to the arm).
 
 use crate::camera::CameraModel;
 use crate::experiment::{Config, ReachSetting};
 use crate::robot::description::{
-    DescriptionErrorKind as Kind, DescriptionOptions, RobotDescription,
+    DescriptionError, DescriptionErrorKind as Kind, DescriptionOptions, RobotDescription,
 };
-use crate::robot::{
-    load_urdf, ArmModel, ArmSettings, ReachFit, ReachSpace, UrdfError, UrdfErrorKind, DEFAULT_URDF,
-    DEFAULT_URDF_NAME,
-};
+use crate::robot::{ArmModel, ArmSettings, ReachFit, ReachSpace, DEFAULT_URDF, DEFAULT_URDF_NAME};
 use crate::units::M_PER_CM;
 use nalgebra::Vector3;
 use std::path::Path;
@@ -24,31 +21,20 @@ pub fn arm_settings(config: &Config) -> ArmSettings {
 }
 
 /// The arm of `urdf` (the shipped OSCAR-6 without one) as the config's arm entries pick
-/// it out. At their defaults the OSCAR-6 loader reads it (six revolute joints and a fixed
-/// camera joint, as always); otherwise it is read as a robot description (any tree).
-pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<ArmModel, UrdfError> {
-    let settings = arm_settings(config);
-    if settings == ArmSettings::default() {
-        return match urdf {
-            Some(path) => load_urdf(path),
-            None => Ok(ArmModel::oscar6()),
-        };
-    }
+/// it out of its robot description.
+pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<ArmModel, DescriptionError> {
     let options = DescriptionOptions::default();
     let description = match urdf {
         Some(path) => RobotDescription::load(path, &options)?,
         None => RobotDescription::parse(DEFAULT_URDF, DEFAULT_URDF_NAME, Path::new("."), &options)?,
     };
-    Ok(ArmModel::from_description(&description, &settings)?)
+    ArmModel::from_description(&description, &arm_settings(config))
 }
 
 /// The config entry an error reading the arm is about (`camera_link` or
 /// `learned_joints`), when it is about one.
-pub fn arm_entry(error: &UrdfError) -> Option<&'static str> {
-    let UrdfErrorKind::Description(kind) = &error.kind else {
-        return None;
-    };
-    match kind {
+pub fn arm_entry(error: &DescriptionError) -> Option<&'static str> {
+    match error.kind {
         Kind::UnknownLink { .. } | Kind::NoMovingJoint { .. } | Kind::PrismaticOnChain { .. } => {
             Some("camera_link")
         }

@@ -54,7 +54,7 @@ pub enum ShowError {
     Config(#[from] crate::experiment::ConfigError),
     /// The run's URDF is gone or broken.
     #[error(transparent)]
-    Urdf(#[from] crate::robot::UrdfError),
+    Urdf(#[from] crate::robot::DescriptionError),
     /// A trial the run does not have.
     #[error("trial {trial} is not in the run: it has trials 1..{trials}")]
     NoSuchTrial {

@@ -88,7 +88,9 @@ impl Chain {
         }
         let seeds = std::iter::once(description.root)
             .chain(moving.iter().map(|&j| description.joints[j].child));
-        let bodies: Vec<ChainBody> = seeds.map(|seed| rigid_body(description, seed)).collect();
+        let bodies: Vec<ChainBody> = seeds
+            .map(|seed| ChainBody::rooted_at(description, seed))
+            .collect();
         let pose_in = |body: &ChainBody, link: usize| {
             body.links.iter().find(|(l, _)| *l == link).map(|(_, p)| *p)
         };
@@ -188,21 +190,24 @@ fn path_to(description: &RobotDescription, link: usize) -> Vec<usize> {
     path
 }
 
-/// `seed` and every link fixed to it below, with their poses in its frame.
-fn rigid_body(description: &RobotDescription, seed: usize) -> ChainBody {
-    let mut links = vec![(seed, Isometry3::identity())];
-    let mut next = 0;
-    while let Some(&(link, pose)) = links.get(next) {
-        for &j in &description.links[link].child_joints {
-            let joint = &description.joints[j];
-            if joint.kind == JointKind::Fixed {
-                links.push((joint.child, pose * joint.origin));
+impl ChainBody {
+    /// The rigid body of link `seed` and every link fixed to it below, with their poses in
+    /// `seed`'s frame.
+    pub fn rooted_at(description: &RobotDescription, seed: usize) -> ChainBody {
+        let mut links = vec![(seed, Isometry3::identity())];
+        let mut next = 0;
+        while let Some(&(link, pose)) = links.get(next) {
+            for &j in &description.links[link].child_joints {
+                let joint = &description.joints[j];
+                if joint.kind == JointKind::Fixed {
+                    links.push((joint.child, pose * joint.origin));
+                }
             }
+            next += 1;
         }
-        next += 1;
+        let inertial = links.iter().fold(Inertial::MASSLESS, |sum, (link, pose)| {
+            sum.combined(&description.links[*link].inertial.transformed(pose))
+        });
+        ChainBody { links, inertial }
     }
-    let inertial = links.iter().fold(Inertial::MASSLESS, |sum, (link, pose)| {
-        sum.combined(&description.links[*link].inertial.transformed(pose))
-    });
-    ChainBody { links, inertial }
 }

@@ -104,6 +104,13 @@ pub(super) fn joint(
         &[dynamics.damping, dynamics.friction],
         &format!("joint `{name}` dynamics"),
     )?;
+    if dynamics.damping < 0.0 || dynamics.friction < 0.0 {
+        return Err(Kind::BadDynamics {
+            joint: name.clone(),
+            damping: dynamics.damping,
+            friction: dynamics.friction,
+        });
+    }
     Ok(Joint {
         name: name.clone(),
         kind,

@@ -1,8 +1,6 @@
 //! What can be wrong with a robot description or a chain asked of it, as data: kinds with
 //! the names and numbers of the elements at fault.
 
-use crate::robot::{UrdfError, UrdfErrorKind};
-
 /// A URDF that cannot be read as a robot description, or a chain that cannot be cut from it:
 /// the file and what is wrong.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -12,15 +10,6 @@ pub struct DescriptionError {
     pub file: String,
     /// What is wrong.
     pub kind: DescriptionErrorKind,
-}
-
-impl From<DescriptionError> for UrdfError {
-    fn from(error: DescriptionError) -> UrdfError {
-        UrdfError {
-            file: error.file,
-            kind: UrdfErrorKind::Description(error.kind),
-        }
-    }
 }
 
 /// What is wrong, naming the element.
@@ -115,6 +104,16 @@ pub enum DescriptionErrorKind {
         lower: f64,
         /// Upper limit (rad or m).
         upper: f64,
+    },
+    /// A `<dynamics>` damping or friction that is negative.
+    #[error("joint `{joint}` needs a non-negative dynamics damping and friction (has {damping} N·m·s/rad, {friction} N·m)")]
+    BadDynamics {
+        /// The joint.
+        joint: String,
+        /// Viscous damping (N·m·s/rad or N·s/m).
+        damping: f64,
+        /// Dry friction (N·m or N).
+        friction: f64,
     },
     /// A negative mass.
     #[error("link `{link}` has a negative mass ({mass} kg)")]

@@ -3,8 +3,8 @@
 
 use super::ArmModel;
 use crate::robot::description::{
-    Chain, DescriptionError, DescriptionErrorKind as Kind, Geometry, GeometryElement, JointKind,
-    RobotDescription,
+    Chain, ChainBody, DescriptionError, DescriptionErrorKind as Kind, Geometry, GeometryElement,
+    Inertial, JointKind, RobotDescription,
 };
 use crate::robot::joint::{LinkBody, RevoluteJoint, Shape};
 use crate::robot::MAX_JOINTS;
@@ -74,36 +74,24 @@ impl ArmModel {
                 friction: joint.dynamics.friction,
             });
         }
+        let camera_part = camera_part(description, &chain, &settings.camera_offset);
+        let last = chain.bodies.len() - 1;
         let mut links: Vec<LinkBody> = chain
             .bodies
             .iter()
-            .map(|body| {
-                let (first, _) = body.links[0];
-                LinkBody {
-                    name: description.links[first].name.clone(),
-                    mass: body.inertial.mass,
-                    inertial_origin: Isometry3::from(Translation3::from(body.inertial.com.coords)),
-                    inertia: body.inertial.inertia,
-                    collisions: body
-                        .links
-                        .iter()
-                        .flat_map(|(link, pose)| {
-                            description.links[*link]
-                                .collisions
-                                .iter()
-                                .map(move |element| floor_shape(pose, element))
-                        })
-                        .collect(),
-                }
+            .enumerate()
+            .map(|(k, body)| {
+                let on_camera =
+                    |link: usize| k == last && camera_part.iter().any(|(l, _)| *l == link);
+                let kept = body.links.iter().filter(|(link, _)| !on_camera(*link));
+                link_body(description, body.links[0].0, kept)
             })
             .collect();
-        links.push(LinkBody {
-            name: description.links[chain.camera_link].name.clone(),
-            mass: 0.0,
-            inertial_origin: Isometry3::identity(),
-            inertia: Default::default(),
-            collisions: Vec::new(),
-        });
+        links.push(link_body(
+            description,
+            chain.camera_link,
+            camera_part.iter(),
+        ));
         let mount = if settings.camera_offset == Vector3::zeros() {
             chain.camera_in_body
         } else {
@@ -117,6 +105,53 @@ impl ArmModel {
                 })
             },
         )
+    }
+}
+
+/// The links that ride with the camera (turned with it), posed in the camera's frame: the
+/// camera link and every link fixed below it, unless the camera link is the last body's own
+/// link (then nothing rides apart from the body).
+fn camera_part(
+    description: &RobotDescription,
+    chain: &Chain,
+    offset: &Vector3<f64>,
+) -> Vec<(usize, Isometry3<f64>)> {
+    let last = chain.bodies.last().expect("a body per moving joint");
+    if last.links[0].0 == chain.camera_link {
+        return Vec::new();
+    }
+    let to_camera = Translation3::from(-offset);
+    ChainBody::rooted_at(description, chain.camera_link)
+        .links
+        .into_iter()
+        .map(|(link, pose)| (link, to_camera * pose))
+        .collect()
+}
+
+/// A body of the arm named after description link `name`: the `links` at their poses in
+/// its frame, their mass properties joined, their collision elements as the floor rule
+/// sees them.
+fn link_body<'a>(
+    description: &RobotDescription,
+    name: usize,
+    links: impl Iterator<Item = &'a (usize, Isometry3<f64>)> + Clone,
+) -> LinkBody {
+    let inertial = links.clone().fold(Inertial::MASSLESS, |sum, (link, pose)| {
+        sum.combined(&description.links[*link].inertial.transformed(pose))
+    });
+    LinkBody {
+        name: description.links[name].name.clone(),
+        mass: inertial.mass,
+        inertial_origin: Isometry3::from(Translation3::from(inertial.com.coords)),
+        inertia: inertial.inertia,
+        collisions: links
+            .flat_map(|(link, pose)| {
+                description.links[*link]
+                    .collisions
+                    .iter()
+                    .map(move |element| floor_shape(pose, element))
+            })
+            .collect(),
     }
 }
 

@@ -109,7 +109,9 @@ fn learning_table(root: &std::path::Path) {
         config.seed = SEED;
         config.check().expect("a valid config");
         let urdf = arm.urdf.map(|file| root.join(file));
-        let model = load_arm(&config, urdf.as_deref()).expect("the arm loads");
+        let model = load_arm(&config, urdf.as_deref())
+            .expect("the arm loads")
+            .model;
         let reach = reach_space(&config, &model).expect("a reach space");
         let covered = reachable_points(&model, &reach, REACH_SAMPLES) as f64 / REACH_SAMPLES as f64;
         let (warm, cold) = wrist_costs(&model);

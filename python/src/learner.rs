@@ -250,5 +250,7 @@ pub fn nominal_model(
     config: &eyehand::experiment::Config,
     urdf: Option<&std::path::Path>,
 ) -> PyResult<ArmModel> {
-    eyehand::experiment::setup::load_arm(config, urdf).map_err(crate::convert::value_error)
+    eyehand::experiment::setup::load_arm(config, urdf)
+        .map(|arm| arm.model)
+        .map_err(crate::convert::value_error)
 }

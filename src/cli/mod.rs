@@ -12,6 +12,8 @@ mod simulate;
 mod study;
 mod tools;
 
+use crate::experiment::setup::LoadedArm;
+use crate::robot::ArmModel;
 use clap::{Parser, Subcommand};
 use std::io::{self, Write};
 use std::process::ExitCode;
@@ -55,6 +57,14 @@ fn bad_input(e: impl std::fmt::Display) -> Failure {
 
 fn failed(e: impl std::fmt::Display) -> Failure {
     (1, e.to_string())
+}
+
+/// The model of an arm read for a command, its URDF's warnings printed to stderr.
+fn warned(arm: LoadedArm) -> ArmModel {
+    for warning in &arm.warnings {
+        eprintln!("eyehand: warning: {warning}");
+    }
+    arm.model
 }
 
 /// Exit code of a program whose reader closed the pipe (as if SIGPIPE had ended it).

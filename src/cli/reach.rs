@@ -1,7 +1,7 @@
 //! `eyehand reach`: the reach space an arm works in, how much of what it reaches that is,
 //! and the pre-learning pose.
 
-use super::{bad_input, say, Failure};
+use super::{bad_input, say, warned, Failure};
 use crate::camera::CameraModel;
 use crate::control::prelearning_moves;
 use crate::experiment::setup::{fit_reach, load_arm, reach_space};
@@ -50,7 +50,7 @@ impl ArmConfigArgs {
 
 pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
     let config = args.arm.config()?;
-    let model = load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?;
+    let model = warned(load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?);
     let mut report = arm_lines(&model);
     let fit = fit_reach(&config, &model);
     let Some(space) = reach_space(&config, &model) else {

@@ -1,10 +1,10 @@
 //! `eyehand plot`, `check-config` and `fk`.
 
-use super::{bad_input, failed, say, Failure};
+use super::{bad_input, failed, say, warned, Failure};
 use crate::experiment::plot::plot_run;
 use crate::experiment::setup::load_arm;
-use crate::experiment::{preflight, Config, Event};
-use crate::robot::{ArmModel, Controlled};
+use crate::experiment::{check_arm, Config, RunError, RunOptions};
+use crate::robot::Controlled;
 use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
@@ -20,6 +20,9 @@ pub(super) struct PlotArgs {
 pub(super) struct CheckConfigArgs {
     /// The config file.
     file: PathBuf,
+    /// The URDF a run would be given (default: the shipped urdf/oscar6.urdf).
+    #[arg(long)]
+    urdf: Option<PathBuf>,
 }
 
 #[derive(Debug, clap::Args)]
@@ -53,19 +56,27 @@ pub(super) fn plot(args: PlotArgs) -> Result<(), Failure> {
     say(&format!("{}\n", png.display()))
 }
 
-/// Checks the file as `run` would: its entries, its events and the shipped arm's reach
-/// after them.
+/// Checks the file as `run` would: its entries, the arm they pick out of the URDF (the
+/// shipped OSCAR-6 without `--urdf`), its events and the arm's reach after them.
 pub(super) fn check_config(args: CheckConfigArgs) -> Result<(), Failure> {
+    let file = args.file.display().to_string();
     let config = Config::from_file(&args.file).map_err(bad_input)?;
-    let events = Event::from_config(&config);
-    preflight(&config, &ArmModel::oscar6(), &events)
-        .map_err(|e| bad_input(format!("{}: {e}", args.file.display())))?;
-    say(&format!("{}: ok\n", args.file.display()))
+    let options = RunOptions {
+        config_name: file.clone(),
+        urdf: args.urdf,
+        ..RunOptions::new(config, ".")
+    };
+    let arm = check_arm(&options).map_err(|e| match e {
+        RunError::Preflight(e) => bad_input(format!("{file}: {e}")),
+        e => bad_input(e),
+    })?;
+    warned(arm);
+    say(&format!("{file}: ok\n"))
 }
 
 pub(super) fn fk(args: FkArgs) -> Result<(), Failure> {
     let config = args.arm.config()?;
-    let model = load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?;
+    let model = warned(load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?);
     let [t1, t2, t3] = args.joints[..] else {
         return Err(bad_input("--joints takes three angles: t1,t2,t3"));
     };

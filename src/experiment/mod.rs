@@ -8,6 +8,7 @@ mod failures;
 mod interrupt;
 mod memory;
 mod output;
+mod package_paths;
 pub mod plot;
 mod preflight;
 mod progress;
@@ -32,10 +33,11 @@ pub use failures::FailureTally;
 pub use interrupt::StopRequest;
 pub use memory::{peak_rss_kb, resident_kb};
 pub use output::DataFiles;
+pub use package_paths::PackagePaths;
 pub use preflight::{
     preflight, reachable_points, PreflightError, MIN_REACHABLE_SHARE, REACH_SAMPLES,
 };
-pub use run::{run, run_learner, RunError, RunOptions, RunResult};
+pub use run::{check_arm, run, run_learner, RunError, RunOptions, RunResult};
 pub use run_folder::{allocate_run_folder, fresh_run_folder, RunFolderError, RUN_IDS};
 pub use run_request::{RequestError, RunRequest};
 pub use step_figures::StepFigures;

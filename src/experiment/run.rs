@@ -8,7 +8,7 @@ use super::plot::{plot_run, PlotError};
 use super::progress::RunProgress;
 use super::setup::{
     arm_entry, build_camera, build_learner, build_simulator, entry_position, load_arm, reach_space,
-    trial_settings,
+    trial_settings, LoadedArm,
 };
 use super::summary::{RunSummary, SensorSummary};
 use super::StepFigures;
@@ -156,10 +156,22 @@ fn run_folder(options: &RunOptions, name: &str) -> Result<PathBuf, RunFolderErro
     }
 }
 
-/// The robot the run's URDF describes (the shipped OSCAR-6 without one), once it, the
-/// config and the events pass the checks made before a run starts.
+/// The robot the run's URDF describes (the shipped OSCAR-6 without one), its warnings
+/// printed to stderr, once it, the config and the events pass the checks made before a run
+/// starts.
 fn load_model(options: &RunOptions) -> Result<ArmModel, RunError> {
-    let model =
+    let arm = check_arm(options)?;
+    for warning in &arm.warnings {
+        eprintln!("eyehand: warning: {warning}");
+    }
+    Ok(arm.model)
+}
+
+/// The arm a run of `options` would move (its URDF as the config's arm entries pick it
+/// out), once it, the config and the events pass the checks made before a run starts; an
+/// arm entry the URDF contradicts is reported at the entry's line.
+pub fn check_arm(options: &RunOptions) -> Result<LoadedArm, RunError> {
+    let arm =
         load_arm(&options.config, options.urdf.as_deref()).map_err(|source| {
             match arm_entry(&source) {
                 Some(entry) => RunError::ArmEntry {
@@ -170,8 +182,8 @@ fn load_model(options: &RunOptions) -> Result<ArmModel, RunError> {
                 None => RunError::Urdf(source),
             }
         })?;
-    preflight(&options.config, &model, &run_events(options))?;
-    Ok(model)
+    preflight(&options.config, &arm.model, &run_events(options))?;
+    Ok(arm)
 }
 
 /// The config's events and the command line's, in trial order.

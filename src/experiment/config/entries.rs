@@ -5,6 +5,7 @@ use crate::control::ServoMode;
 use crate::experiment::config_values::{
     CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind,
 };
+use crate::experiment::PackagePaths;
 use crate::learn::{MergeStrategy, Method};
 
 config_entries! {
@@ -145,6 +146,9 @@ config_entries! {
     camera_offset: [f64; 3],
     /// The three learned joints (base yaw, shoulder, elbow) by URDF name, a,b,c.
     learned_joints: [String; 3],
+    /// Folders searched for the URDF's `package://NAME/rest` meshes, in order (`none`, or
+    /// comma-separated; a relative one in a config file is taken from that file's folder).
+    package_paths: PackagePaths,
     /// The camera's reach space: `auto` (fitted to the arm) or r_min,r_max,z_min,z_max (cm).
     reach_space: ReachSetting,
     /// Raycast camera: rays per image side (the 512×512 image is sampled N×N).

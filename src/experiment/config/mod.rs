@@ -89,7 +89,10 @@ impl Config {
             .iter()
             .map(|n| (*n, entries.line_of(n)))
             .collect();
-        let config = entries.complete().expect("no entry is missing");
+        let mut config = entries.complete().expect("no entry is missing");
+        if let Some(folder) = Path::new(file).parent() {
+            config.package_paths.relative_to(folder);
+        }
         config.check().map_err(|kind| {
             let line = kind
                 .entry()

@@ -97,6 +97,17 @@ impl Config {
             &self.learned_joints,
             "must name three different joints",
         )?;
+        if let Some(folder) = self.package_paths.missing_folder() {
+            rule(
+                false,
+                "package_paths",
+                &self.package_paths,
+                &format!(
+                    "must name existing folders; `{}` is not one",
+                    folder.display()
+                ),
+            )?;
+        }
         if let ReachSetting::Given([r_min, r_max, z_min, z_max]) = self.reach_space {
             rule(
                 (0.0..r_max).contains(&r_min) && r_max <= 10_000.0 && z_min < z_max,

@@ -4,12 +4,13 @@
 use crate::camera::CameraModel;
 use crate::experiment::{Config, ReachSetting};
 use crate::robot::description::{
-    DescriptionError, DescriptionErrorKind as Kind, DescriptionOptions, RobotDescription,
+    mesh_candidates, DescriptionError, DescriptionErrorKind as Kind, DescriptionOptions,
+    DescriptionWarning, RobotDescription,
 };
 use crate::robot::{ArmModel, ArmSettings, ReachFit, ReachSpace, DEFAULT_URDF, DEFAULT_URDF_NAME};
 use crate::units::M_PER_CM;
 use nalgebra::Vector3;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// The arm settings from `camera_link`, `camera_offset` (cm) and `learned_joints`.
 pub fn arm_settings(config: &Config) -> ArmSettings {
@@ -20,15 +21,56 @@ pub fn arm_settings(config: &Config) -> ArmSettings {
     }
 }
 
+/// An arm read from its URDF, with what the URDF was missing.
+#[derive(Debug, Clone)]
+pub struct LoadedArm {
+    /// The arm the config's entries pick out of the URDF.
+    pub model: ArmModel,
+    /// What the URDF was missing and what stands in for it, one line each (the URDF, the
+    /// link, the mesh and the paths it was looked for at).
+    pub warnings: Vec<String>,
+}
+
 /// The arm of `urdf` (the shipped OSCAR-6 without one) as the config's arm entries pick
-/// it out of its robot description.
-pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<ArmModel, DescriptionError> {
-    let options = DescriptionOptions::default();
+/// it out of its robot description, `package://` meshes looked up in `package_paths`.
+pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<LoadedArm, DescriptionError> {
+    let options = DescriptionOptions {
+        package_paths: config.package_paths.0.clone(),
+    };
     let description = match urdf {
         Some(path) => RobotDescription::load(path, &options)?,
         None => RobotDescription::parse(DEFAULT_URDF, DEFAULT_URDF_NAME, Path::new("."), &options)?,
     };
-    ArmModel::from_description(&description, &arm_settings(config))
+    let model = ArmModel::from_description(&description, &arm_settings(config))?;
+    let folder = urdf.and_then(Path::parent).unwrap_or(Path::new("."));
+    let warnings = description
+        .warnings
+        .iter()
+        .map(|warning| warning_line(&description.file, warning, folder, &options.package_paths))
+        .collect();
+    Ok(LoadedArm { model, warnings })
+}
+
+/// A warning as a line: the URDF, what is missing, and for a mesh not found the paths it
+/// was looked for at.
+fn warning_line(
+    file: &str,
+    warning: &DescriptionWarning,
+    urdf_folder: &Path,
+    package_paths: &[PathBuf],
+) -> String {
+    if matches!(warning, DescriptionWarning::UnreadVisualMesh { .. }) {
+        return format!("{file}: {warning}");
+    }
+    let tried: Vec<String> = mesh_candidates(warning.filename(), urdf_folder, package_paths)
+        .iter()
+        .map(|path| path.display().to_string())
+        .collect();
+    if tried.is_empty() {
+        format!("{file}: {warning}; no package_paths to look in")
+    } else {
+        format!("{file}: {warning}; looked for {}", tried.join(", "))
+    }
 }
 
 /// The config entry an error reading the arm is about (`camera_link` or

@@ -56,8 +56,8 @@ impl RecordedRun {
         }
         let model = match urdf.as_deref() {
             None => return Err(bad("no `urdf` line".into())),
-            Some(DEFAULT_URDF_NAME) => load_arm(&config, None)?,
-            Some(path) => load_arm(&config, Some(Path::new(path)))?,
+            Some(DEFAULT_URDF_NAME) => load_arm(&config, None)?.model,
+            Some(path) => load_arm(&config, Some(Path::new(path)))?.model,
         };
         let nodes = std::fs::read_to_string(folder.join("nodes")).unwrap_or_default();
         Ok(RecordedRun {

@@ -22,6 +22,6 @@ pub use inertia::Inertial;
 pub use joint::{Joint, JointDynamics, JointKind, JointLimits};
 pub use link::Link;
 pub use mesh::{MeshFormat, TriangleMesh};
-pub use resolve::resolve_mesh;
+pub use resolve::{mesh_candidates, resolve_mesh};
 pub use robot::{DescriptionOptions, RobotDescription};
 pub use warning::DescriptionWarning;

@@ -12,12 +12,18 @@ pub fn resolve_mesh(
     urdf_folder: &Path,
     package_paths: &[PathBuf],
 ) -> Option<PathBuf> {
-    candidates(filename, urdf_folder, package_paths)
+    mesh_candidates(filename, urdf_folder, package_paths)
         .into_iter()
         .find(|path| path.is_file())
 }
 
-fn candidates(filename: &str, urdf_folder: &Path, package_paths: &[PathBuf]) -> Vec<PathBuf> {
+/// Every path a mesh `filename` may be at, in the order they are tried (none for a
+/// `package://` mesh without search paths).
+pub fn mesh_candidates(
+    filename: &str,
+    urdf_folder: &Path,
+    package_paths: &[PathBuf],
+) -> Vec<PathBuf> {
     if let Some(rest) = filename.strip_prefix("package://") {
         let (package, inside) = rest.split_once('/').unwrap_or((rest, ""));
         let mut found: Vec<PathBuf> = package_paths

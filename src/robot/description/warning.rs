@@ -1,4 +1,5 @@
-//! What a description had to do without: warnings collected while reading, never printed.
+//! What a description had to do without: warnings collected while reading (a run prints
+//! them).
 
 use std::fmt;
 
@@ -32,6 +33,17 @@ pub enum DescriptionWarning {
         /// The length of the capsule's segment (m); 0 for a ball at the link's origin.
         length: f64,
     },
+}
+
+impl DescriptionWarning {
+    /// The mesh the warning is about, as the URDF names it.
+    pub fn filename(&self) -> &str {
+        match self {
+            DescriptionWarning::MissingVisualMesh { filename, .. }
+            | DescriptionWarning::UnreadVisualMesh { filename, .. }
+            | DescriptionWarning::MissingCollisionMesh { filename, .. } => filename,
+        }
+    }
 }
 
 impl fmt::Display for DescriptionWarning {

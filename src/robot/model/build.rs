@@ -37,7 +37,9 @@ impl Default for ArmSettings {
 impl ArmModel {
     /// The arm `settings` pick out of `description`: every moving joint on the chain to the
     /// camera link (revolute or continuous, at most [`MAX_JOINTS`]), each body's links
-    /// merged, meshes seen by the floor rule as their bounding boxes.
+    /// merged, the camera link and the links fixed below it a body of their own at the
+    /// camera mount (last in the link list), meshes seen by the floor rule as their
+    /// bounding boxes.
     pub fn from_description(
         description: &RobotDescription,
         settings: &ArmSettings,

@@ -1,6 +1,6 @@
 //! `package://` meshes found through the config's `package_paths`: a URDF in a folder tree
 //! of its own loads its mesh with the entry (relative folders taken from the config file's
-//! folder) and warns, naming the URI and the paths tried, without it.
+//! folder, made absolute) and warns, naming the URI and the paths tried, without it.
 
 use eyehand::experiment::setup::load_arm;
 use eyehand::experiment::Config;
@@ -63,7 +63,10 @@ fn package_meshes_load_with_the_search_paths_and_warn_without() {
             "../urdf",
             format!(
                 "looked for {}",
-                root.join("conf/../urdf/myarm/meshes/wrist.obj").display()
+                root.canonicalize()
+                    .unwrap()
+                    .join("urdf/myarm/meshes/wrist.obj")
+                    .display()
             ),
         ),
     ] {

@@ -11,11 +11,13 @@ pub struct PackagePaths(pub Vec<PathBuf>);
 
 impl PackagePaths {
     /// Every relative folder taken from `base` (a config file's folder) instead of the
-    /// working folder.
+    /// working folder, made absolute when it exists (so a run folder's copy of the config
+    /// finds it from anywhere).
     pub fn relative_to(&mut self, base: &Path) {
         for path in &mut self.0 {
             if path.is_relative() {
-                *path = base.join(&*path);
+                let joined = base.join(&*path);
+                *path = std::fs::canonicalize(&joined).unwrap_or(joined);
             }
         }
     }

@@ -64,7 +64,7 @@ fn warning_line(
     }
     let tried: Vec<String> = mesh_candidates(warning.filename(), urdf_folder, package_paths)
         .iter()
-        .map(|path| path.display().to_string())
+        .map(|path| path.components().collect::<PathBuf>().display().to_string())
         .collect();
     if tried.is_empty() {
         format!("{file}: {warning}; no package_paths to look in")

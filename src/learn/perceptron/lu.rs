@@ -3,78 +3,52 @@
 //! The arithmetic is nalgebra's `LU` step for step — the same pivot choice (the first
 //! largest magnitude in the column), the same multiplications by the pivot's reciprocal,
 //! the same order of updates in the elimination and in the two triangular solves — so the
-//! results are the same to the last bit; only the generic matrix views are gone, which
-//! made a node's refit cost several times what its arithmetic does.
+//! results are the same to the last bit. Only the bookkeeping differs: fixed-size arrays
+//! indexed by loops the compiler unrolls, every right-hand side carried through each
+//! triangular sweep at once, and no copies or generic views, which made a node's refit
+//! cost several times what its arithmetic does.
 
-use nalgebra::SMatrix;
+/// The largest matrix factored: lin8's 8 inputs and a constant.
+const LARGEST: usize = 9;
+
+/// Runs `step::<I, ..>(args)` for I = 0, 1, …, [`LARGEST`] − 1; a step with I ≥ M does
+/// nothing. With I and M constants, each step's loops have fixed lengths, which the
+/// compiler unrolls; a loop over I would leave them as loops of varying length.
+macro_rules! each_step {
+    ($step:ident::<I, $($generic:ident),*>($($arg:expr),*)) => {
+        $step::<0, $($generic),*>($($arg),*);
+        $step::<1, $($generic),*>($($arg),*);
+        $step::<2, $($generic),*>($($arg),*);
+        $step::<3, $($generic),*>($($arg),*);
+        $step::<4, $($generic),*>($($arg),*);
+        $step::<5, $($generic),*>($($arg),*);
+        $step::<6, $($generic),*>($($arg),*);
+        $step::<7, $($generic),*>($($arg),*);
+        $step::<8, $($generic),*>($($arg),*);
+    };
+}
 
 /// The factors L (unit lower, below the diagonal) and U of P·A, column by column, and the
-/// row swaps P in the order they were made.
+/// row swap made at each step.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct SmallLu<const M: usize> {
     /// `columns[c][r]` is the factor's entry at row r, column c.
     columns: [[f64; M]; M],
-    /// Row swaps (i, pivot row), `swaps` of them.
-    swapped: [(usize, usize); M],
-    swaps: usize,
+    /// The row swapped with row i at step i (i itself when none was).
+    pivots: [usize; M],
 }
 
 impl<const M: usize> SmallLu<M> {
-    /// Factors `matrix`. A column whose candidates are all zero is left as it is (its
-    /// pivot is zero, and [`solve`](Self::solve) fails).
-    pub(super) fn new(matrix: &SMatrix<f64, M, M>) -> Self {
-        let mut columns = [[0.0; M]; M];
-        for (c, column) in columns.iter_mut().enumerate() {
-            for (r, value) in column.iter_mut().enumerate() {
-                *value = matrix[(r, c)];
-            }
-        }
-        let mut lu = SmallLu {
-            columns,
-            swapped: [(0, 0); M],
-            swaps: 0,
-        };
-        for i in 0..M {
-            lu.eliminate(i);
-        }
-        lu
-    }
+    const FITS: () = assert!(M <= LARGEST, "each_step! covers at most LARGEST steps");
 
-    /// Step `i` of the elimination: pivot, scale the column below it, update the rest.
-    fn eliminate(&mut self, i: usize) {
-        let column = &self.columns[i];
-        let mut pivot = i;
-        let mut largest = column[i].abs();
-        for (r, value) in column.iter().enumerate().skip(i + 1) {
-            if value.abs() > largest {
-                largest = value.abs();
-                pivot = r;
-            }
-        }
-        let diagonal = column[pivot];
-        if diagonal == 0.0 {
-            return;
-        }
-        if pivot != i {
-            self.swapped[self.swaps] = (i, pivot);
-            self.swaps += 1;
-            for column in &mut self.columns {
-                column.swap(i, pivot);
-            }
-        }
-        let inverse = 1.0 / diagonal;
-        for value in &mut self.columns[i][i + 1..] {
-            *value *= inverse;
-        }
-        let (left, right) = self.columns.split_at_mut(i + 1);
-        let factors = &left[i];
-        for column in right {
-            let head = column[i];
-            // (x + (−h·f) is nalgebra's (−h·f) + x: addition commutes exactly.)
-            for (value, factor) in column[i + 1..].iter_mut().zip(&factors[i + 1..]) {
-                *value += -head * factor;
-            }
-        }
+    /// Factors the matrix whose column c is `columns[c]`. A column whose candidates are
+    /// all zero is left as it is (its pivot is zero, and [`solve`](Self::solve) fails).
+    #[inline(always)]
+    pub(super) fn from_columns(mut columns: [[f64; M]; M]) -> Self {
+        let () = Self::FITS;
+        let mut pivots = [0; M];
+        each_step!(eliminate::<I, M>(&mut columns, &mut pivots));
+        SmallLu { columns, pivots }
     }
 
     /// |U|'s diagonal: the pivots.
@@ -82,42 +56,104 @@ impl<const M: usize> SmallLu<M> {
         std::array::from_fn(|i| self.columns[i][i].abs())
     }
 
-    /// Solves A·X = B for `K` right-hand sides; `None` when a pivot is zero.
-    pub(super) fn solve<const K: usize>(
-        &self,
-        rhs: &SMatrix<f64, M, K>,
-    ) -> Option<SMatrix<f64, M, K>> {
-        let mut x = *rhs;
-        for &(i, pivot) in &self.swapped[..self.swaps] {
-            x.swap_rows(i, pivot);
+    /// Solves A·X = B for the `K` columns of B, given row by row (`rhs[r][k]`); `None`
+    /// when a pivot is zero.
+    #[inline(always)]
+    pub(super) fn solve<const K: usize>(&self, rhs: &[[f64; K]; M]) -> Option<[[f64; K]; M]> {
+        if (0..M).any(|i| self.columns[i][i] == 0.0) {
+            return None;
         }
+        let mut b = *rhs;
+        for (i, &pivot) in self.pivots.iter().enumerate() {
+            b.swap(i, pivot);
+        }
+        // L y = P b, unit diagonal, then U x = y from the last row up.
+        each_step!(forward::<I, M, K>(&self.columns, &mut b));
+        each_step!(backward::<I, M, K>(&self.columns, &mut b));
+        Some(b)
+    }
+}
+
+/// Step `I` of the elimination: pivot, scale the column below it, update the columns
+/// right of it; `pivots[I]` is the pivot's row.
+#[inline(always)]
+fn eliminate<const I: usize, const M: usize>(columns: &mut [[f64; M]; M], pivots: &mut [usize; M]) {
+    if I >= M {
+        return;
+    }
+    let mut pivot = I;
+    let mut largest = columns[I][I].abs();
+    for (r, value) in columns[I].iter().enumerate().skip(I + 1) {
+        let magnitude = value.abs();
+        if magnitude > largest {
+            largest = magnitude;
+            pivot = r;
+        }
+    }
+    let diagonal = columns[I][pivot];
+    pivots[I] = I;
+    if diagonal == 0.0 {
+        return;
+    }
+    if pivot != I {
+        pivots[I] = pivot;
+        for column in columns.iter_mut() {
+            column.swap(I, pivot);
+        }
+    }
+    let inverse = 1.0 / diagonal;
+    for value in &mut columns[I][I + 1..] {
+        *value *= inverse;
+    }
+    let factors = columns[I];
+    for column in &mut columns[I + 1..] {
+        let head = column[I];
+        for r in I + 1..M {
+            // (x + (−h·f) is nalgebra's (−h·f) + x: addition commutes exactly.)
+            column[r] += -head * factors[r];
+        }
+    }
+}
+
+/// Step `I` of solving L y = P b: row I's value taken out of the rows below.
+#[inline(always)]
+fn forward<const I: usize, const M: usize, const K: usize>(
+    columns: &[[f64; M]; M],
+    b: &mut [[f64; K]; M],
+) {
+    if I >= M {
+        return;
+    }
+    let head = b[I];
+    for r in I + 1..M {
+        let l = columns[I][r];
         for k in 0..K {
-            let mut b: [f64; M] = std::array::from_fn(|r| x[(r, k)]);
-            // L y = P b, unit diagonal.
-            for i in 0..M.saturating_sub(1) {
-                let (done, rest) = b.split_at_mut(i + 1);
-                let coefficient = done[i];
-                for (value, l) in rest.iter_mut().zip(&self.columns[i][i + 1..]) {
-                    *value += -coefficient * l;
-                }
-            }
-            // U x = y.
-            for i in (0..M).rev() {
-                let diagonal = self.columns[i][i];
-                if diagonal == 0.0 {
-                    return None;
-                }
-                let coefficient = b[i] / diagonal;
-                b[i] = coefficient;
-                for (value, u) in b[..i].iter_mut().zip(&self.columns[i][..i]) {
-                    *value += -coefficient * u;
-                }
-            }
-            for (r, value) in b.iter().enumerate() {
-                x[(r, k)] = *value;
-            }
+            b[r][k] += -head[k] * l;
         }
-        Some(x)
+    }
+}
+
+/// Step `I` of solving U x = y, from the last row: row M − 1 − I divided by its pivot and
+/// taken out of the rows above.
+#[inline(always)]
+fn backward<const I: usize, const M: usize, const K: usize>(
+    columns: &[[f64; M]; M],
+    b: &mut [[f64; K]; M],
+) {
+    if I >= M {
+        return;
+    }
+    let i = M - 1 - I;
+    let diagonal = columns[i][i];
+    for value in &mut b[i] {
+        *value /= diagonal;
+    }
+    let head = b[i];
+    for r in 0..i {
+        let u = columns[i][r];
+        for k in 0..K {
+            b[r][k] += -head[k] * u;
+        }
     }
 }
 
@@ -143,26 +179,32 @@ mod tests {
         m
     }
 
+    fn factored(a: &Matrix6<f64>) -> SmallLu<6> {
+        SmallLu::from_columns(std::array::from_fn(|c| std::array::from_fn(|r| a[(r, c)])))
+    }
+
     #[test]
     fn factors_and_solutions_are_nalgebras_to_the_last_bit() {
         let mut rng = ChaCha8Rng::seed_from_u64(5);
         for _ in 0..2000 {
             let a = awkward(&mut rng);
             let b = Matrix6x3::from_fn(|_, _| rng.random_range(-100.0..100.0));
-            let ours = SmallLu::new(&a);
+            let ours = factored(&a);
             let theirs = a.lu();
             let pivots = theirs.u().diagonal().map(f64::abs);
             assert_eq!(
                 ours.pivot_magnitudes().map(f64::to_bits),
                 pivots.data.0[0].map(f64::to_bits)
             );
-            let (x, y) = (ours.solve(&b), theirs.solve(&b));
+            let rows: [[f64; 3]; 6] = std::array::from_fn(|r| std::array::from_fn(|k| b[(r, k)]));
+            let (x, y) = (ours.solve(&rows), theirs.solve(&b));
             assert_eq!(x.is_some(), y.is_some());
             if let (Some(x), Some(y)) = (x, y) {
-                assert!(x
-                    .iter()
-                    .zip(y.iter())
-                    .all(|(p, q)| p.to_bits() == q.to_bits()));
+                for (r, row) in x.iter().enumerate() {
+                    for (k, value) in row.iter().enumerate() {
+                        assert_eq!(value.to_bits(), y[(r, k)].to_bits());
+                    }
+                }
             }
         }
     }
@@ -171,8 +213,8 @@ mod tests {
     fn a_zero_column_gives_no_solution() {
         let mut a = Matrix6::<f64>::identity();
         a[(3, 3)] = 0.0;
-        let lu = SmallLu::new(&a);
+        let lu = factored(&a);
         assert_eq!(lu.pivot_magnitudes()[3], 0.0);
-        assert_eq!(lu.solve(&Matrix6x3::from_element(1.0)), None);
+        assert_eq!(lu.solve(&[[1.0; 3]; 6]), None);
     }
 }

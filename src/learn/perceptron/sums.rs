@@ -1,7 +1,7 @@
 //! Normal-equation sums of a least-squares fit, and their solution.
 
 use super::lu::SmallLu;
-use nalgebra::{SMatrix, SVector};
+use nalgebra::SMatrix;
 
 /// Below this reciprocal condition estimate a fit counts as singular: its coefficients
 /// would carry less than about six correct digits.
@@ -62,37 +62,135 @@ impl<const M: usize> NormalSums<M> {
     /// partial pivoting is made once and solved for the three joints. The ratio of its
     /// smallest to largest pivot estimates the reciprocal condition number.
     pub(super) fn solve(&self, may_idle: &[bool; M]) -> Option<SMatrix<f64, 3, M>> {
-        let diagonal = self.zz.diagonal();
         // The constant's diagonal counts the patterns.
-        let count = diagonal[M - 1];
-        let idle: [bool; M] =
-            std::array::from_fn(|i| may_idle[i] && diagonal[i] <= IDLE * IDLE * count);
-        let usable = |i: usize| idle[i] || (diagonal[i] > 0.0 && diagonal[i].is_finite());
-        if !(0..M).all(usable) {
+        let count = self.zz[(M - 1, M - 1)];
+        let mut idle = [false; M];
+        // A zero scale drops an idle input's row and column.
+        let mut scale = [0.0; M];
+        for i in 0..M {
+            let diagonal = self.zz[(i, i)];
+            idle[i] = may_idle[i] && diagonal <= IDLE * IDLE * count;
+            if !idle[i] {
+                if !(diagonal > 0.0 && diagonal.is_finite()) {
+                    return None;
+                }
+                scale[i] = diagonal.sqrt().recip();
+            }
+        }
+        let mut equilibrated = [[0.0; M]; M];
+        for (c, column) in equilibrated.iter_mut().enumerate() {
+            for (r, value) in column.iter_mut().enumerate() {
+                *value = self.zz[(r, c)] * (scale[r] * scale[c]);
+            }
+        }
+        for i in (0..M).filter(|&i| idle[i]) {
+            equilibrated[i][i] = 1.0;
+        }
+        let lu = SmallLu::from_columns(equilibrated);
+        if !well_conditioned(&lu.pivot_magnitudes()) {
             return None;
         }
-        // A zero scale drops an idle input's row and column.
-        let scale = SVector::<f64, M>::from_fn(|i, _| {
+        let mut rhs = [[0.0; 3]; M];
+        for (r, row) in rhs.iter_mut().enumerate() {
+            for (k, value) in row.iter_mut().enumerate() {
+                *value = self.zt[(r, k)] * scale[r];
+            }
+        }
+        let y = lu.solve(&rhs)?;
+        let w = SMatrix::<f64, 3, M>::from_fn(|k, r| y[r][k] * scale[r]);
+        w.iter().all(|v| v.is_finite()).then_some(w)
+    }
+}
+
+/// Whether the smallest pivot is above [`MIN_RCOND`] times the largest (false for NaN
+/// pivots too), the two found by nalgebra's `min` and `max` folds.
+fn well_conditioned<const M: usize>(pivots: &[f64; M]) -> bool {
+    let (mut least, mut most) = (pivots[0], pivots[0]);
+    for &pivot in &pivots[1..] {
+        least = if least <= pivot { least } else { pivot };
+        most = if most >= pivot { most } else { pivot };
+    }
+    least > MIN_RCOND * most
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Matrix6x3, SVector, Vector6};
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    /// The fit as nalgebra writes it: the same equilibration, nalgebra's own LU and its
+    /// `min`/`max`, one solve for the three joints.
+    fn nalgebra_fit(sums: &NormalSums<6>, may_idle: &[bool; 6]) -> Option<SMatrix<f64, 3, 6>> {
+        let diagonal = sums.zz.diagonal();
+        let count = diagonal[5];
+        let idle: [bool; 6] =
+            std::array::from_fn(|i| may_idle[i] && diagonal[i] <= IDLE * IDLE * count);
+        let usable = |i: usize| idle[i] || (diagonal[i] > 0.0 && diagonal[i].is_finite());
+        if !(0..6).all(usable) {
+            return None;
+        }
+        let scale = Vector6::from_fn(|i, _| {
             if idle[i] {
                 0.0
             } else {
                 diagonal[i].sqrt().recip()
             }
         });
-        let mut equilibrated = self.zz.component_mul(&(scale * scale.transpose()));
-        for i in (0..M).filter(|&i| idle[i]) {
+        let mut equilibrated = sums.zz.component_mul(&(scale * scale.transpose()));
+        for i in (0..6).filter(|&i| idle[i]) {
             equilibrated[(i, i)] = 1.0;
         }
-        let lu = SmallLu::new(&equilibrated);
-        let pivots = SVector::<f64, M>::from(lu.pivot_magnitudes());
-        // (False for NaN pivots too.)
+        let lu = equilibrated.lu();
+        let pivots = lu.u().diagonal().map(f64::abs);
         let well_conditioned = pivots.min() > MIN_RCOND * pivots.max();
         if !well_conditioned {
             return None;
         }
-        let rhs = SMatrix::<f64, M, 3>::from_fn(|i, j| self.zt[(i, j)] * scale[i]);
+        let rhs = Matrix6x3::from_fn(|i, j| sums.zt[(i, j)] * scale[i]);
         let y = lu.solve(&rhs)?;
-        let w = SMatrix::<f64, M, 3>::from_fn(|i, j| y[(i, j)] * scale[i]);
+        let w = Matrix6x3::from_fn(|i, j| y[(i, j)] * scale[i]);
         w.iter().all(|v| v.is_finite()).then(|| w.transpose())
+    }
+
+    /// Sums of a few to a few hundred patterns whose inputs span many orders of magnitude;
+    /// some inputs stay at 0 (idle), some nearly copy another (ill-conditioned).
+    fn awkward_sums(rng: &mut ChaCha8Rng) -> NormalSums<6> {
+        let mut sums = NormalSums::new();
+        let widths: [f64; 5] = std::array::from_fn(|_| 10f64.powi(rng.random_range(-8..3)));
+        let still = rng.random_range(0..8usize);
+        let twin = rng.random_bool(0.2);
+        for seq in 0..rng.random_range(1..300) {
+            let mut z = SVector::<f64, 6>::from_fn(|i, _| match i {
+                5 => 1.0,
+                _ if i == still => 0.0,
+                _ => widths[i] * rng.random_range(-1.0..1.0),
+            });
+            if twin {
+                z[3] = z[1] * (1.0 + 1e-9);
+            }
+            let t = SVector::<f64, 3>::from_fn(|_, _| rng.random_range(-50.0..50.0));
+            sums.add(&(z * z.transpose()), &(z * t.transpose()), seq);
+        }
+        sums
+    }
+
+    #[test]
+    fn the_fit_is_nalgebras_to_the_last_bit() {
+        let mut rng = ChaCha8Rng::seed_from_u64(11);
+        let mut answered = 0;
+        for _ in 0..3000 {
+            let sums = awkward_sums(&mut rng);
+            let may_idle = std::array::from_fn(|i| i < 5 && rng.random_bool(0.5));
+            let (ours, theirs) = (sums.solve(&may_idle), nalgebra_fit(&sums, &may_idle));
+            assert_eq!(ours.is_some(), theirs.is_some());
+            if let (Some(ours), Some(theirs)) = (ours, theirs) {
+                answered += 1;
+                assert_eq!(ours.map(f64::to_bits), theirs.map(f64::to_bits));
+            }
+        }
+        // Both outcomes are exercised.
+        assert!((500..2900).contains(&answered), "{answered} fits answered");
     }
 }

@@ -71,7 +71,8 @@ impl<const M: usize> NormalSums<M> {
             let diagonal = self.zz[(i, i)];
             idle[i] = may_idle[i] && diagonal <= IDLE * IDLE * count;
             if !idle[i] {
-                if !(diagonal > 0.0 && diagonal.is_finite()) {
+                // (Positive and finite; NaN fails both tests.)
+                if !(diagonal > 0.0 && diagonal < f64::INFINITY) {
                     return None;
                 }
                 scale[i] = diagonal.sqrt().recip();

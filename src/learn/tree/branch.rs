@@ -19,6 +19,22 @@ const REACH_BITS: u32 = 4;
 const _: () = assert!(REACH_BITS + BRANCH_BITS * MAX_DEPTH as u32 <= u64::BITS);
 const _: () = assert!(MAX_DEPTH < 1 << REACH_BITS);
 
+/// `SPREAD[n]`: bit b of the 4-bit `n` moved to bit `BRANCH_BITS · b` — one dimension's
+/// bits of four successive depths, where a [`BinKey`] keeps them.
+const SPREAD: [u64; 16] = {
+    let mut table = [0; 16];
+    let mut n = 0;
+    while n < 16 {
+        let mut b = 0;
+        while b < 4 {
+            table[n] |= ((n as u64 >> b) & 1) << (BRANCH_BITS * b);
+            b += 1;
+        }
+        n += 1;
+    }
+    table
+};
+
 /// A bin's name: the branch numbers of its path from the root, one per depth, for as many
 /// depths as the point has a box (its *reach*; a rule may stop a path early).
 ///
@@ -27,11 +43,33 @@ const _: () = assert!(MAX_DEPTH < 1 << REACH_BITS);
 pub(crate) struct BinKey(u64);
 
 impl BinKey {
-    /// Appends the branch number of the next depth.
+    /// Appends the branch number of the next depth (the tests' way of making keys).
+    #[cfg(test)]
     pub(crate) fn push(&mut self, branch: u8) {
         debug_assert!((branch as usize) < BRANCHES && self.reach() < MAX_DEPTH);
         let shift = REACH_BITS + BRANCH_BITS * self.reach() as u32;
         self.0 = (self.0 | u64::from(branch) << shift) + 1;
+    }
+
+    /// The key of the path down to `depth` through the finest cells `cells` (one per
+    /// dimension, at most 5; each below 2^[`MAX_DEPTH`]): depth d's branch number has, as
+    /// its bit j, bit `MAX_DEPTH − d` of `cells[j]`. The same key as pushing each depth's
+    /// branch number in turn, packed a dimension at a time (a few table look-ups instead
+    /// of a loop over depths).
+    pub(crate) fn of_cells(cells: &[u64], depth: usize) -> BinKey {
+        debug_assert!(cells.len() <= BRANCH_BITS as usize && depth <= MAX_DEPTH);
+        let mut packed = 0;
+        for (j, &cell) in cells.iter().enumerate() {
+            // Bit d − 1 of `levels` is the cell's bit of depth d.
+            let levels = (cell as u16).reverse_bits() >> (u16::BITS as usize - MAX_DEPTH);
+            let levels = u64::from(levels) & ((1 << depth) - 1);
+            let spread = (0..MAX_DEPTH.div_ceil(4)).fold(0, |spread, nibble| {
+                let bits = (levels >> (4 * nibble)) & 0xf;
+                spread | SPREAD[bits as usize] << (4 * BRANCH_BITS * nibble as u32)
+            });
+            packed |= spread << j;
+        }
+        BinKey(packed << REACH_BITS | depth as u64)
     }
 
     /// Depths the path goes down.
@@ -96,21 +134,16 @@ impl<const N: usize> BranchRule<N> for Halving<N> {
         // The point's finest cell per dimension; its binary digits are the β's of each depth.
         let last = (1u64 << MAX_DEPTH) - 1;
         let cell: [u64; N] = std::array::from_fn(|j| {
-            let c = ((x[j] - self.low[j]) * self.cells_per_unit[j]).floor();
-            // NaN and points below the box go to cell 0; `as` saturates above.
+            let c = (x[j] - self.low[j]) * self.cells_per_unit[j];
+            // NaN and points below the box go to cell 0; `as` saturates above, and
+            // truncates toward zero, which is the floor for c ≥ 0 (no libm call).
             if c >= 0.0 {
                 (c as u64).min(last)
             } else {
                 0
             }
         });
-        let mut key = BinKey::default();
-        for d in 1..=depth {
-            let shift = MAX_DEPTH - d;
-            let branch = (0..N).fold(0u8, |b, j| b | (((cell[j] >> shift) & 1) as u8) << j);
-            key.push(branch);
-        }
-        key
+        BinKey::of_cells(&cell, depth)
     }
 
     fn child(&self, parent: &Region<N>, _child_depth: usize, branch: u8) -> Region<N> {
@@ -121,6 +154,8 @@ impl<const N: usize> BranchRule<N> for Halving<N> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
 
     fn cube(low: f64, high: f64) -> Halving<5> {
         Halving::new(Region::from_bounds(
@@ -142,6 +177,24 @@ mod tests {
         }
         assert_eq!(key.branch(0), None);
         assert_eq!(key.branch(MAX_DEPTH + 1), None);
+    }
+
+    #[test]
+    fn keys_of_cells_are_the_keys_pushed_depth_by_depth() {
+        let mut rng = ChaCha8Rng::seed_from_u64(3);
+        for _ in 0..2000 {
+            let cells: [u64; 5] = std::array::from_fn(|_| rng.random_range(0..1 << MAX_DEPTH));
+            for depth in 0..=MAX_DEPTH {
+                let mut pushed = BinKey::default();
+                for d in 1..=depth {
+                    let shift = MAX_DEPTH - d;
+                    let branch =
+                        (0..5).fold(0u8, |b, j| b | (((cells[j] >> shift) & 1) as u8) << j);
+                    pushed.push(branch);
+                }
+                assert_eq!(BinKey::of_cells(&cells, depth), pushed);
+            }
+        }
     }
 
     #[test]

@@ -266,7 +266,7 @@ fn wrong_arm_entries_are_clear_errors() {
     let urdf = PANDA.urdf();
     let urdf = urdf.to_str().unwrap();
     let learned = "learned_joints=panda_joint1,panda_joint2,panda_joint4";
-    let cases: [(&[&str], &str); 5] = [
+    let cases: [(&[&str], &str); 4] = [
         (
             &["--set", "camera_link=nowhere", "--set", learned],
             "camera link `nowhere` is not a link of the robot",
@@ -292,17 +292,6 @@ fn wrong_arm_entries_are_clear_errors() {
         (
             &["--set", "camera_link=panda_leftfinger", "--set", learned],
             "joint `panda_finger_joint1` on the chain to the camera is prismatic",
-        ),
-        (
-            &[
-                "--set",
-                "camera_link=panda_hand",
-                "--set",
-                learned,
-                "--sim",
-                "dynamic",
-            ],
-            "the dynamic simulator takes only arms of the OSCAR-6 form",
         ),
     ];
     let data = tempfile::tempdir().unwrap();

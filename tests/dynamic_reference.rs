@@ -61,7 +61,7 @@ fn a_stretched_link_weighs_and_swings_as_mujoco_says() {
     sim.stretch_link(2, 0.1).expect("a valid stretch");
     for row in rows("mujoco_stretched.csv") {
         let q = joints(&row);
-        let torques = Joints::from(sim.holding_torques(&q));
+        let torques = sim.holding_torques(&q);
         let error = relative(&torques, &joints(&row[6..]));
         assert!(error < TORQUE_TOL, "at {q}: {torques} vs {:?}", &row[6..12]);
     }

@@ -3,8 +3,8 @@
 //! reaches its reach space with the camera looking down.
 
 use super::setup::reach_space;
-use super::{Config, ConfigErrorKind, Event, SimKind};
-use crate::robot::{ArmModel, LinkBody, ReachSpace, RobotError};
+use super::{Config, ConfigErrorKind, Event};
+use crate::robot::{ArmModel, ReachSpace, RobotError};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
@@ -34,23 +34,6 @@ pub enum PreflightError {
     /// `reach_space auto` and no part of the study's shape fits what the arm reaches.
     #[error("reach_space auto: no half annulus of the study's shape fits inside what this arm reaches with the camera looking down above the floor")]
     NoReachSpace,
-    /// The dynamic simulator with an arm not of the OSCAR-6 form.
-    #[error("sim dynamic: the dynamic simulator takes only arms of the OSCAR-6 form so far (six joints, the first three learned, one wrist joint); this arm has {joints} joints")]
-    DynamicArm {
-        /// The arm's joints.
-        joints: usize,
-    },
-    /// The dynamic simulator with a moving link that has no mass, or an inertia tensor
-    /// without a positive moment about every axis.
-    #[error("sim dynamic: link `{link}` needs a positive mass and positive principal moments of inertia (has {mass} kg, smallest moment {moment} kg·m²)")]
-    DynamicMass {
-        /// The link.
-        link: String,
-        /// Its mass (kg).
-        mass: f64,
-        /// Its smallest principal moment of inertia (kg·m²).
-        moment: f64,
-    },
     /// The arm cannot reach (enough of) its reach space.
     #[error(
         "{reachable} of {sampled} sampled reach-space points are reachable by this arm with the camera looking down{} (at least {:.0}% are needed)",
@@ -94,14 +77,6 @@ pub fn preflight(
         }
         .into());
     }
-    if config.sim == SimKind::Dynamic {
-        if !model.is_oscar6_form() {
-            return Err(PreflightError::DynamicArm {
-                joints: model.dof(),
-            });
-        }
-        check_masses(model)?;
-    }
     let reach = reach_space(config, model).ok_or(PreflightError::NoReachSpace)?;
     check_reach(model, &reach, None)?;
     let mut changed = model.clone();
@@ -114,32 +89,6 @@ pub fn preflight(
                     source,
                 })?;
             check_reach(&changed, &reach, Some(*event))?;
-        }
-    }
-    Ok(())
-}
-
-/// Every moving body of `model` has mass and a positive moment about every axis: each
-/// moving link, the last one with the camera link riding on it (either may be massless).
-fn check_masses(model: &ArmModel) -> Result<(), PreflightError> {
-    let links = model.links();
-    for k in 1..=model.dof() {
-        let parts = if k == model.dof() {
-            &links[k..=k + 1]
-        } else {
-            &links[k..=k]
-        };
-        let flat = |link: &&LinkBody| link.inertia.symmetric_eigenvalues().min() <= 0.0;
-        let problem = match parts.iter().filter(|link| link.mass > 0.0).find(flat) {
-            _ if parts.iter().all(|link| link.mass <= 0.0) => Some(&parts[0]),
-            found => found,
-        };
-        if let Some(link) = problem {
-            return Err(PreflightError::DynamicMass {
-                link: link.name.clone(),
-                mass: link.mass,
-                moment: link.inertia.symmetric_eigenvalues().min(),
-            });
         }
     }
     Ok(())
@@ -204,28 +153,6 @@ mod tests {
                 ..
             }
         ));
-    }
-
-    #[test]
-    fn a_massless_or_flat_link_is_refused_for_the_dynamic_simulator() {
-        let mut config = Config::default_config();
-        config.sim = SimKind::Dynamic;
-        let arm = |from: &str, to: &str| {
-            assert!(crate::robot::DEFAULT_URDF.contains(from));
-            let text = crate::robot::DEFAULT_URDF.replacen(from, to, 1);
-            crate::robot::parse_urdf(&text, "arm.urdf").unwrap()
-        };
-        let massless = arm(r#"<mass value="17.0"/>"#, r#"<mass value="0"/>"#);
-        let flat = arm(r#"ixx="0.0544""#, r#"ixx="0""#);
-        for (model, mass) in [(&massless, 0.0), (&flat, 17.0)] {
-            let err = preflight(&config, model, &[]).unwrap_err();
-            assert!(
-                matches!(&err, PreflightError::DynamicMass { link, mass: m, .. } if link == "link_2" && *m == mass),
-                "{err}"
-            );
-        }
-        config.sim = SimKind::Kinematic;
-        assert_eq!(preflight(&config, &massless, &[]), Ok(()));
     }
 
     #[test]

@@ -17,7 +17,7 @@
 use super::collision::{body_elements, joint_turns, Elements, MoveStart};
 use super::dynamic::{parts, to_pose};
 use super::world::Obstacle;
-use super::{ArmModel, Controlled, Frames, Joints, Shape};
+use super::{ArmModel, Controlled, Frames, Joints, Shape, MAX_JOINTS};
 use nalgebra::{Isometry3, Point3, Vector3};
 use rapier3d_f64::math::Pose;
 use rapier3d_f64::parry::query::{distance, intersection_test};
@@ -29,9 +29,8 @@ const NEAR: f64 = 0.01;
 const MIN_MARCH: f64 = 1e-3;
 /// Bisection steps that find where a move meets contact (1e-12 of a move).
 const BISECTIONS: usize = 40;
-/// Bodies: the base and links 1–6 (the camera on link 6). An arm with more joints is checked
-/// for its first six links only (docs/ARMS.md).
-const BODIES: usize = 7;
+/// The most bodies an arm has: the base and one per joint (the camera on the last).
+const MAX_BODIES: usize = MAX_JOINTS + 1;
 
 /// A collision element: its parry shape at its pose in the body frame, and the capsule that
 /// holds it (segment ends in the body frame, radius).
@@ -46,21 +45,25 @@ struct Part {
 /// reaches from each joint's axis.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct ArmGeometry {
-    bodies: [Vec<Part>; BODIES],
-    /// Each body's capsule holding all its parts (none for a body without any).
-    hulls: [Option<Capsule>; BODIES],
+    /// Each body's parts: the base's, then one body per joint.
+    bodies: Vec<Vec<Part>>,
+    /// Each body's capsule holding all its parts (none for a body without any, or past
+    /// the arm's last body).
+    hulls: [Option<Capsule>; MAX_BODIES],
     pairs: Vec<(usize, usize)>,
     /// `reach[k][j]` (j ≥ k ≥ 1): the farthest a point of body j can be from the axis of
     /// joint k (m): the joint origins from body k to body j, and body j's own extent.
-    reach: [[f64; BODIES]; BODIES],
+    reach: [[f64; MAX_BODIES]; MAX_BODIES],
 }
 
 impl ArmGeometry {
     /// The geometry of `model` as it is now.
     pub(crate) fn new(model: &ArmModel) -> ArmGeometry {
-        let elements: [Elements; BODIES] = std::array::from_fn(|k| body_elements(model, k));
-        let bodies: [Vec<Part>; BODIES] =
-            std::array::from_fn(|k| elements[k].iter().map(part).collect());
+        let elements: Vec<Elements> = (0..=model.dof()).map(|k| body_elements(model, k)).collect();
+        let bodies: Vec<Vec<Part>> = elements
+            .iter()
+            .map(|body| body.iter().map(part).collect())
+            .collect();
         let extent = |parts: &[Part]| {
             parts
                 .iter()
@@ -75,15 +78,15 @@ impl ArmGeometry {
             .iter()
             .map(|j| j.origin.translation.vector.norm())
             .collect();
-        let mut reach = [[0.0; BODIES]; BODIES];
-        for k in 1..BODIES {
-            for j in k..BODIES {
+        let mut reach = [[0.0; MAX_BODIES]; MAX_BODIES];
+        for k in 1..bodies.len() {
+            for j in k..bodies.len() {
                 reach[k][j] = origins[k..j].iter().sum::<f64>() + extent(&bodies[j]);
             }
         }
         ArmGeometry {
             pairs: contact_pairs(model, &elements),
-            hulls: std::array::from_fn(|k| hull(&bodies[k])),
+            hulls: std::array::from_fn(|k| bodies.get(k).and_then(|parts| hull(parts))),
             bodies,
             reach,
         }
@@ -97,21 +100,26 @@ impl ArmGeometry {
         &self,
         model: &ArmModel,
         q: &Joints,
-        rates: &[f64; BODIES],
+        rates: &[f64; MAX_BODIES],
         obstacles: &[Obstacle],
     ) -> f64 {
         self.allowance_at(&model.link_frames(q), rates, obstacles)
     }
 
     /// [`allowance`](Self::allowance) with the links placed at `links`.
-    fn allowance_at(&self, links: &Frames, rates: &[f64; BODIES], obstacles: &[Obstacle]) -> f64 {
+    fn allowance_at(
+        &self,
+        links: &Frames,
+        rates: &[f64; MAX_BODIES],
+        obstacles: &[Obstacle],
+    ) -> f64 {
         let frame = |k: usize| match k {
             0 => Isometry3::identity(),
             _ => links[k - 1],
         };
         let speed =
             |i: usize, j: usize| -> f64 { (i + 1..=j).map(|k| rates[k] * self.reach[k][j]).sum() };
-        let placed: [Option<Capsule>; BODIES] =
+        let placed: [Option<Capsule>; MAX_BODIES] =
             std::array::from_fn(|k| self.hulls[k].map(|h| h.placed(&frame(k))));
         let mut allow = f64::INFINITY;
         let mut take = |gap: f64, speed: f64| {
@@ -139,7 +147,7 @@ impl ArmGeometry {
             };
             take(gap, speed(i, j));
         }
-        for (k, at) in links.iter().enumerate().take(BODIES - 1) {
+        for (k, at) in links.iter().enumerate() {
             take(self.allowance_of(k + 1, at, obstacles, rates), 1.0);
         }
         allow
@@ -152,7 +160,7 @@ impl ArmGeometry {
         k: usize,
         at: &Isometry3<f64>,
         obstacles: &[Obstacle],
-        rates: &[f64; BODIES],
+        rates: &[f64; MAX_BODIES],
     ) -> f64 {
         let Some(hull) = self.hulls[k].map(|h| h.placed(at)) else {
             return f64::INFINITY;
@@ -180,7 +188,8 @@ impl ArmGeometry {
         allow
     }
 
-    /// The first link (1–6) and obstacle (1-based) that touch with the arm at `q`, if any.
+    /// The first link (1 for joint 1's body) and obstacle (1-based) that touch with the arm
+    /// at `q`, if any.
     pub(crate) fn inside_obstacle(
         &self,
         model: &ArmModel,
@@ -191,10 +200,10 @@ impl ArmGeometry {
             return None;
         }
         let links = model.link_frames(q);
-        let rates = [0.0; BODIES];
+        let rates = [0.0; MAX_BODIES];
         for (i, obstacle) in obstacles.iter().enumerate() {
             let one = std::slice::from_ref(obstacle);
-            for (k, at) in links.iter().enumerate().take(BODIES - 1) {
+            for (k, at) in links.iter().enumerate() {
                 if self.allowance_of(k + 1, at, one, &rates) <= 0.0 {
                     return Some((k + 1, i + 1));
                 }
@@ -223,7 +232,7 @@ impl ArmGeometry {
         let near = std::cell::Cell::new(start.pose.joints);
         let turns = joint_turns(model, delta);
         // Body k hangs from joint k - 1; the base (body 0) stays.
-        let rates: [f64; BODIES] =
+        let rates: [f64; MAX_BODIES] =
             std::array::from_fn(|body| body.checked_sub(1).map_or(0.0, |joint| turns[joint]));
         let allowance = |s: f64| {
             let pose = model.pose_near(&(theta + delta * s), &near.get());
@@ -258,9 +267,9 @@ impl ArmGeometry {
     }
 }
 
-/// The pairs of bodies (0 the base, 1–6 the links) that may touch: not neighbours in the
-/// chain, and apart at the zero pose.
-pub(crate) fn contact_pairs(model: &ArmModel, bodies: &[Elements; BODIES]) -> Vec<(usize, usize)> {
+/// The pairs of bodies (0 the base, then one per joint; `bodies` their elements) that may
+/// touch: not neighbours in the chain, and apart at the zero pose.
+pub(crate) fn contact_pairs(model: &ArmModel, bodies: &[Elements]) -> Vec<(usize, usize)> {
     let links = model.link_frames(&Joints::zeros(model.dof()));
     let frame = |k: usize| match k {
         0 => Isometry3::identity(),
@@ -277,8 +286,8 @@ pub(crate) fn contact_pairs(model: &ArmModel, bodies: &[Elements; BODIES]) -> Ve
         })
     };
     let mut pairs = Vec::new();
-    for i in 0..BODIES {
-        for j in i + 2..BODIES {
+    for i in 0..bodies.len() {
+        for j in i + 2..bodies.len() {
             if !bodies[i].is_empty() && !bodies[j].is_empty() && !touch(i, j) {
                 pairs.push((i, j));
             }
@@ -300,14 +309,8 @@ fn part((pose, shape): &(Isometry3<f64>, Shape)) -> Part {
         Shape::Cylinder { radius, length } | Shape::Capsule { radius, length } => {
             (along(0.5 * length, Vector3::z()), radius)
         }
-        Shape::Cuboid(size) => {
-            let long = size.imax();
-            let across = (size.norm_squared() - size[long] * size[long]).sqrt();
-            (
-                along(0.5 * size[long], Vector3::ith(long, 1.0)),
-                0.5 * across,
-            )
-        }
+        Shape::Cuboid(size) => box_capsule(pose, &Vector3::zeros(), &size),
+        Shape::Hull { centre, size, .. } => box_capsule(pose, &centre, &size),
     };
     let (pose, shape) = parts(pose, shape);
     Part {
@@ -315,6 +318,25 @@ fn part((pose, shape): &(Isometry3<f64>, Shape)) -> Part {
         shape,
         capsule: Capsule { ends, radius },
     }
+}
+
+/// The capsule holding a box of sides `size` centred at `centre` in the frame at `pose`:
+/// its longest axis, as wide as the box's other two sides' diagonal.
+fn box_capsule(
+    pose: &Isometry3<f64>,
+    centre: &Vector3<f64>,
+    size: &Vector3<f64>,
+) -> ([Point3<f64>; 2], f64) {
+    let long = size.imax();
+    let across = (size.norm_squared() - size[long] * size[long]).sqrt();
+    let half = Vector3::ith(long, 0.5 * size[long]);
+    (
+        [
+            pose * Point3::from(centre - half),
+            pose * Point3::from(centre + half),
+        ],
+        0.5 * across,
+    )
 }
 
 /// The exact distance between parts `a` and `b` of bodies at `at_a` and `at_b`.
@@ -492,7 +514,7 @@ mod tests {
             assert!(!geometry.pairs.contains(&pair), "{pair:?}");
         }
         let q = model.full_pose(&Controlled::new(0.2, 0.4, 1.9));
-        let rates = [1.0; BODIES];
+        let rates = [1.0; MAX_BODIES];
         assert!(geometry.allowance(&model, &q, &rates, &[]) > 0.0);
         let at = |k: usize| model.link_frames(&q)[k - 1];
         for &(i, j) in geometry.pairs.iter().filter(|(i, _)| *i > 0) {

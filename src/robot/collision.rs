@@ -3,7 +3,7 @@
 //! how low they reach — the floor rule both simulators share.
 
 use super::{ArmModel, ArmPose, Controlled, Frames, Joints, Shape, MAX_JOINTS};
-use nalgebra::{Isometry3, Unit, Vector3};
+use nalgebra::{Isometry3, Translation3, Unit, Vector3};
 
 /// Shapes never get shorter than this when a link is shortened (m).
 const MIN_SIZE: f64 = 1e-3;
@@ -29,9 +29,11 @@ pub(crate) fn body_elements(model: &ArmModel, k: usize) -> Elements {
     if k == model.dof() {
         parts.push((model.camera_mount(), &links[k + 1]));
     }
-    let elements = parts
-        .iter()
-        .flat_map(|(at, link)| link.collisions.iter().map(move |(p, s)| (*at * p, *s)));
+    let elements = parts.iter().flat_map(|(at, link)| {
+        link.collisions
+            .iter()
+            .map(move |(p, s)| (*at * p, s.clone()))
+    });
     match stretch_of(model, k) {
         Some((direction, stretch)) => elements
             .map(|(pose, shape)| stretched(&pose, &shape, &direction, stretch))
@@ -107,6 +109,7 @@ pub(crate) fn reaches(model: &ArmModel, bodies: &[Elements]) -> [f64; MAX_JOINTS
                 Shape::Cylinder { radius, length } | Shape::Capsule { radius, length } => {
                     radius + 0.5 * length
                 }
+                Shape::Hull { centre, size, .. } => centre.norm() + 0.5 * size.norm(),
             }
     };
     let shapes = bodies.iter().flatten().map(extent).fold(0.0, f64::max);
@@ -226,6 +229,9 @@ fn lowest_z(pose: &Isometry3<f64>, shape: &Shape) -> f64 {
         }
         Shape::Cylinder { radius, length } => centre - 0.5 * length * axis_z - radius * across,
         Shape::Capsule { radius, length } => centre - 0.5 * length * axis_z - radius,
+        Shape::Hull { centre, size, .. } => {
+            lowest_z(&(pose * Translation3::from(centre)), &Shape::Cuboid(size))
+        }
     }
 }
 
@@ -267,9 +273,9 @@ pub(crate) fn stretched(
                 size[k] = longer(size[k]);
                 (shifted(), Shape::Cuboid(size))
             }
-            None => (*pose, *shape),
+            None => (*pose, shape.clone()),
         },
-        _ => (*pose, *shape),
+        _ => (*pose, shape.clone()),
     }
 }
 

@@ -1,6 +1,8 @@
 //! The parts of the URDF the simulators use: revolute joints and link bodies.
 
-use nalgebra::{Isometry3, Matrix3, Unit, Vector3};
+use super::description::TriangleMesh;
+use nalgebra::{Isometry3, Matrix3, Point3, Unit, Vector3};
+use std::sync::Arc;
 
 /// A revolute joint of the arm, as its URDF element gives it (SI units).
 #[derive(Debug, Clone, PartialEq)]
@@ -69,8 +71,8 @@ pub struct LinkBody {
     pub collisions: Vec<(Isometry3<f64>, Shape)>,
 }
 
-/// A collision shape of a link (the URDF geometries a physics engine builds directly).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// A collision shape of a link: the URDF's primitives, or a collision mesh's convex hull.
+#[derive(Debug, Clone, PartialEq)]
 pub enum Shape {
     /// A box with these full side lengths (m).
     Cuboid(Vector3<f64>),
@@ -93,4 +95,41 @@ pub enum Shape {
         /// Radius (m).
         radius: f64,
     },
+    /// A collision mesh's convex hull, for contacts and the camera; the floor rule and the
+    /// contact rule's cheap bounds see it as its bounding box.
+    Hull {
+        /// The hull, a closed convex mesh in the element's frame (m).
+        mesh: Arc<TriangleMesh>,
+        /// The centre of its bounding box in the element's frame (m).
+        centre: Vector3<f64>,
+        /// The bounding box's side lengths (m).
+        size: Vector3<f64>,
+    },
+}
+
+impl Shape {
+    /// The convex hull `mesh` (closed, convex, in the element's frame) with its bounding box.
+    pub fn hull(mesh: Arc<TriangleMesh>) -> Shape {
+        let (low, high) = mesh.vertices.iter().fold(
+            (
+                Point3::from([f64::INFINITY; 3]),
+                Point3::from([f64::NEG_INFINITY; 3]),
+            ),
+            |(low, high), p| (low.inf(p), high.sup(p)),
+        );
+        Shape::Hull {
+            centre: nalgebra::center(&low, &high).coords,
+            size: high - low,
+            mesh,
+        }
+    }
+
+    /// The shape the floor rule and the cheap contact bounds see: a hull as its bounding
+    /// box (moved to the box's centre by the returned offset), any other shape as it is.
+    pub fn bounded(&self) -> (Vector3<f64>, Shape) {
+        match self {
+            Shape::Hull { centre, size, .. } => (*centre, Shape::Cuboid(*size)),
+            other => (Vector3::zeros(), other.clone()),
+        }
+    }
 }

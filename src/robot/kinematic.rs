@@ -16,7 +16,7 @@ use rapier3d_f64::parry::shape::SharedShape;
 /// Bisection steps that find where the wrist angle meets its limit (1e-12 of a move).
 const WRIST_LIMIT_BISECTIONS: usize = 40;
 
-/// The OSCAR-6 moved by forward kinematics alone.
+/// An arm moved by forward kinematics alone.
 #[derive(Debug, Clone)]
 pub struct KinematicSim {
     model: ArmModel,
@@ -27,7 +27,8 @@ pub struct KinematicSim {
     /// joint, for the floor.
     collision: Vec<Elements>,
     reaches: [f64; MAX_JOINTS],
-    /// The bodies a camera sees (base, links 1–5) as parry shapes, for [`WorldView`].
+    /// The bodies a camera sees (the base and every joint's body but the last) as parry
+    /// shapes, for [`WorldView`].
     seen_shapes: [Option<SharedShape>; SEEN_BODIES],
     /// The obstacle boxes in the world.
     obstacles: Vec<Obstacle>,
@@ -73,9 +74,11 @@ impl KinematicSim {
             .collect();
         self.reaches = reaches(&self.model, &self.collision);
         self.geometry = ArmGeometry::new(&self.model);
+        let seen = self.model.dof();
         self.seen_shapes = std::array::from_fn(|k| {
             let base;
             let elements = match k {
+                _ if k >= seen => return None,
                 0 => {
                     base = body_elements(&self.model, 0);
                     &base
@@ -255,7 +258,7 @@ impl KinematicSim {
         let frames = self.model.link_frames(q);
         let poses = std::array::from_fn(|k| match k {
             0 => Isometry3::identity(),
-            _ => frames[k - 1],
+            _ => frames.iter().nth(k - 1).copied().unwrap_or_default(),
         });
         WorldView {
             floor_z: self.settings.floor_z,

@@ -4,15 +4,17 @@
 //! placed by forward kinematics, the dynamic one from its Rapier collider set as simulated.
 
 use super::dynamic::{to_pose, to_vector};
+use super::MAX_JOINTS;
 use nalgebra::{Point3, Vector3};
 use rapier3d_f64::math::Pose;
 use rapier3d_f64::parry::bounding_volume::{Aabb, BoundingVolume};
 use rapier3d_f64::parry::query::{Ray, RayCast};
 use rapier3d_f64::parry::shape::{Cuboid, SharedShape};
 
-/// The arm's bodies a camera can see: the base and links 1–5. Link 6 carries the camera,
-/// whose rays leave from its front face, and lies behind it.
-pub const SEEN_BODIES: usize = 6;
+/// The most bodies of an arm a camera can see: the base and every joint's body but the
+/// last (the OSCAR-6's base and links 1–5). The last carries the camera, whose rays leave
+/// from its front face, and lies behind it.
+pub const SEEN_BODIES: usize = MAX_JOINTS;
 
 /// A box standing in the world (m, world frame, sides along the axes).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -47,7 +49,7 @@ pub enum Surface {
     Floor,
     /// Obstacle `i` (0-based, in the config's order).
     Obstacle(usize),
-    /// Body `k` of the arm (0 the base, 1–5 the links).
+    /// Body `k` of the arm (0 the base, then one per joint).
     Body(usize),
 }
 

@@ -1,14 +1,14 @@
-//! The OSCAR-6 built into a Rapier world: the URDF's links become rigid bodies with their
-//! inertials and colliders, its six revolute joints one multibody (reduced coordinates) on
-//! a fixed base, each joint with its limits and a position motor. The fixed camera joint is
-//! merged away: the camera link's mass and collider ride on link 6.
+//! An arm built into a Rapier world: its bodies (the base and one per joint, each with the
+//! links merged into it) become rigid bodies with their inertials and colliders, its
+//! revolute joints one multibody (reduced coordinates) on a fixed base, each joint with its
+//! limits, damping and a position motor. The camera link rides on the last body.
 
 use super::body_parts::body_parts;
 use super::colliders::collider;
 use super::convert::to_pose;
 use super::inertia::Inertial;
 use super::settings::DynamicSettings;
-use crate::robot::{ArmModel, Joints};
+use crate::robot::{ArmModel, Joints, MAX_JOINTS};
 use nalgebra::{Isometry3, Unit, UnitQuaternion, Vector3};
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::prelude::{
@@ -25,21 +25,23 @@ pub(super) struct Arm {
     pub(super) world: PhysicsWorld,
     /// The arm's multibody.
     pub(super) multibody: MultibodyIndex,
-    /// Multibody link ids of links 1–6.
-    pub(super) link_ids: [usize; 6],
-    /// Rigid bodies of the base and links 1–6.
-    pub(super) bodies: [RigidBodyHandle; 7],
+    /// How many joints (and moving bodies) the arm has.
+    pub(super) dof: usize,
+    /// Multibody link ids of the moving bodies, joint 1's first (the first `dof` are used).
+    pub(super) link_ids: [usize; MAX_JOINTS],
+    /// Rigid bodies of the base and of each joint's body.
+    pub(super) bodies: Vec<RigidBodyHandle>,
     /// Each body's collider, base first (none for a body without collision elements).
-    pub(super) colliders: [Option<ColliderHandle>; 7],
-    /// Mass properties of links 1–6 as simulated (the camera in link 6, a stretched link
-    /// as stretched).
-    pub(super) inertials: [Inertial; 6],
+    pub(super) colliders: Vec<Option<ColliderHandle>>,
+    /// Mass properties of the moving bodies as simulated (the camera in the last, a
+    /// stretched link as stretched, a massless body given [`Inertial::MIN_MASS`]).
+    pub(super) inertials: Vec<Inertial>,
 }
 
 impl std::fmt::Debug for Arm {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Arm")
-            .field("link_ids", &self.link_ids)
+            .field("link_ids", &&self.link_ids[..self.dof])
             .field("inertials", &self.inertials)
             .finish_non_exhaustive()
     }
@@ -52,11 +54,12 @@ impl Arm {
         world.gravity = Vector::new(0.0, 0.0, -GRAVITY);
         world.integration_parameters.dt = settings.dt;
         world.integration_parameters.num_solver_iterations = settings.solver_iterations;
-        let frames = model.link_frames(&Joints::zeros(model.dof()));
-        let mut bodies = Vec::with_capacity(7);
-        let mut colliders = Vec::with_capacity(7);
-        let mut inertials = Vec::with_capacity(6);
-        for k in 0..7 {
+        let dof = model.dof();
+        let frames = model.link_frames(&Joints::zeros(dof));
+        let mut bodies = Vec::with_capacity(dof + 1);
+        let mut colliders = Vec::with_capacity(dof + 1);
+        let mut inertials = Vec::with_capacity(dof);
+        for k in 0..=dof {
             let (inertial, elements) = body_parts(model, k);
             let (builder, frame) = match k {
                 0 => (RigidBodyBuilder::fixed(), Isometry3::identity()),
@@ -103,7 +106,10 @@ impl Arm {
                 .expect("every link body is in the multibody")
         };
         let multibody = link_of(bodies[1]).multibody;
-        let link_ids = std::array::from_fn(|i| link_of(bodies[i + 1]).id);
+        let mut link_ids = [0; MAX_JOINTS];
+        for (i, id) in link_ids.iter_mut().enumerate().take(dof) {
+            *id = link_of(bodies[i + 1]).id;
+        }
         if let Some(mb) = world.multibody_joints.get_multibody_mut(multibody) {
             // Rapier gives every joint a damping of its own; the URDF's is the one to use.
             mb.damping_mut().fill(0.0);
@@ -116,10 +122,11 @@ impl Arm {
         let mut arm = Arm {
             world,
             multibody,
+            dof,
             link_ids,
-            bodies: bodies.try_into().expect("seven bodies"),
-            colliders: colliders.try_into().expect("seven bodies"),
-            inertials: inertials.try_into().expect("six links"),
+            bodies,
+            colliders,
+            inertials,
         };
         arm.add_world(model, settings.moves.floor_z);
         arm

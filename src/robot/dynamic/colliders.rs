@@ -1,6 +1,8 @@
-//! Rapier colliders from the URDF's collision geometry.
+//! Rapier colliders from the URDF's collision geometry: primitives, and the convex hulls of
+//! collision meshes.
 
-use super::convert::to_pose;
+use super::convert::{to_pose, to_vector};
+use crate::robot::description::TriangleMesh;
 use crate::robot::Shape;
 use nalgebra::{Isometry3, UnitQuaternion, Vector3};
 use rapier3d_f64::prelude::{ColliderBuilder, SharedShape};
@@ -47,7 +49,17 @@ pub(in crate::robot) fn parts(
             (to_pose(pose), SharedShape::capsule_z(0.5 * length, radius))
         }
         Shape::Sphere { radius } => (to_pose(pose), SharedShape::ball(radius)),
+        Shape::Hull { ref mesh, .. } => (to_pose(pose), convex(mesh)),
     }
+}
+
+/// A closed convex mesh as a parry convex polyhedron; its vertices' hull should parry not
+/// take the triangles as they are.
+fn convex(mesh: &TriangleMesh) -> SharedShape {
+    let points: Vec<_> = mesh.vertices.iter().map(|p| to_vector(&p.coords)).collect();
+    SharedShape::convex_mesh(points.clone(), &mesh.triangles)
+        .or_else(|| SharedShape::convex_hull(&points))
+        .unwrap_or_else(|| SharedShape::ball(0.0))
 }
 
 #[cfg(test)]

@@ -7,7 +7,7 @@
 use super::builder::Arm;
 use crate::robot::clearance::contact_pairs;
 use crate::robot::collision::body_elements;
-use crate::robot::{ArmModel, Obstacle};
+use crate::robot::{ArmModel, Obstacle, MAX_JOINTS};
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::prelude::nalgebra::Unit;
 use rapier3d_f64::prelude::{
@@ -17,19 +17,19 @@ use rapier3d_f64::prelude::{
 /// A contact deeper than this (m) stops a move; shallower ones are the servo's error
 /// around a pose that just touches.
 pub(super) const CONTACT_DEPTH: f64 = 5e-4;
-/// The floor's interaction group (bodies take groups 0–6).
-const FLOOR: u32 = 7;
+/// The floor's interaction group (bodies take groups 0 to [`MAX_JOINTS`]).
+const FLOOR: u32 = MAX_JOINTS as u32 + 1;
 
 impl Arm {
     /// Adds the floor at height `floor_z` (m; none when not finite) and turns on contacts
     /// between the links that may meet.
     pub(super) fn add_world(&mut self, model: &ArmModel, floor_z: f64) {
-        // Links meet the floor and obstacles (group 7), and the bodies the shared rule lets
-        // touch (robot/clearance.rs).
-        let mut filters = [Group::from_bits_retain(1 << FLOOR); 8];
+        // Links meet the floor and obstacles (group FLOOR), and the bodies the shared rule
+        // lets touch (robot/clearance.rs).
+        let mut filters = [Group::from_bits_retain(1 << FLOOR); FLOOR as usize + 1];
         filters[FLOOR as usize] = Group::ALL;
         filters[0] = Group::empty();
-        let elements = std::array::from_fn(|k| body_elements(model, k));
+        let elements: Vec<_> = (0..=model.dof()).map(|k| body_elements(model, k)).collect();
         for (i, j) in contact_pairs(model, &elements) {
             filters[i].insert(Group::from_bits_retain(1 << j));
             filters[j].insert(Group::from_bits_retain(1 << i));

@@ -6,7 +6,7 @@
 
 use super::builder::{Arm, GRAVITY};
 use super::convert::to_vector;
-use crate::robot::{ArmModel, Joints};
+use crate::robot::{ArmModel, Joints, MAX_JOINTS};
 use nalgebra::Vector3;
 
 impl Arm {
@@ -16,15 +16,19 @@ impl Arm {
         &self,
         model: &ArmModel,
         q: &Joints,
-    ) -> ([f64; 6], [Vector3<f64>; 6]) {
+    ) -> (Joints, [Vector3<f64>; MAX_JOINTS]) {
         let frames = model.link_frames(q);
         let joints = model.joints();
-        let axes: [Vector3<f64>; 6] =
-            std::array::from_fn(|i| frames[i].rotation * joints[i].axis.into_inner());
-        let mut torques = [0.0; 6];
-        // Weight and its moment about the world origin of links i..6, summed from the tip.
+        let n = self.dof;
+        let mut axes = [Vector3::zeros(); MAX_JOINTS];
+        for (i, axis) in axes.iter_mut().enumerate().take(n) {
+            *axis = frames[i].rotation * joints[i].axis.into_inner();
+        }
+        let mut torques = Joints::zeros(n);
+        // Weight and its moment about the world origin of the bodies from i out, summed
+        // from the tip.
         let (mut weight, mut moment) = (Vector3::zeros(), Vector3::zeros());
-        for i in (0..6).rev() {
+        for i in (0..n).rev() {
             let (mass, com) = (self.inertials[i].mass, self.inertials[i].com);
             let force = Vector3::new(0.0, 0.0, -GRAVITY * mass);
             weight += force;
@@ -39,14 +43,14 @@ impl Arm {
 
     /// Applies the weight-holding torques of pose `q` (each bounded by its joint's effort)
     /// and returns the effort left to each joint's servo (N·m).
-    pub(super) fn hold_weight(&mut self, model: &ArmModel, q: &Joints) -> [f64; 6] {
+    pub(super) fn hold_weight(&mut self, model: &ArmModel, q: &Joints) -> Joints {
         let (torques, axes) = self.weight_torques(model, q);
         let joints = model.joints();
-        let held: [f64; 6] =
-            std::array::from_fn(|i| torques[i].clamp(-joints[i].effort, joints[i].effort));
-        for k in 0..6 {
+        let n = self.dof;
+        let held = Joints::from_fn(n, |i| torques[i].clamp(-joints[i].effort, joints[i].effort));
+        for k in 0..n {
             let mut torque = axes[k] * held[k];
-            if k + 1 < 6 {
+            if k + 1 < n {
                 torque -= axes[k + 1] * held[k + 1];
             }
             if let Some(rb) = self.world.bodies.get_mut(self.bodies[k + 1]) {
@@ -54,7 +58,7 @@ impl Arm {
                 rb.add_torque(to_vector(&torque), false);
             }
         }
-        std::array::from_fn(|i| joints[i].effort - held[i].abs())
+        Joints::from_fn(n, |i| joints[i].effort - held[i].abs())
     }
 }
 

@@ -32,6 +32,26 @@ impl Inertial {
         }
     }
 
+    /// The mass (kg) a body without mass (its URDF links all massless) is given, so that
+    /// the multibody's mass matrix stays invertible: a gram.
+    pub(super) const MIN_MASS: f64 = 1e-3;
+    /// The inertia (kg·m²) it is given about each axis: a gram spread over a 2 cm ball.
+    const MIN_MOMENT: f64 = 0.4 * Self::MIN_MASS * 0.02 * 0.02;
+
+    /// This body, or for a body without mass (or with a mass the parts' sum made not a
+    /// number) a small ball of [`MIN_MASS`](Self::MIN_MASS) at the frame's origin: Rapier
+    /// cannot move a massless link of a multibody.
+    pub(super) fn at_least_minimal(self) -> Inertial {
+        if self.mass > 0.0 {
+            return self;
+        }
+        Inertial {
+            mass: Self::MIN_MASS,
+            com: Vector3::zeros(),
+            tensor: Matrix3::identity() * Self::MIN_MOMENT,
+        }
+    }
+
     /// The parts as one body: masses add, the centre of mass is their weighted mean, the
     /// tensors move to it by the parallel-axis rule.
     pub(super) fn sum(parts: &[Inertial]) -> Inertial {

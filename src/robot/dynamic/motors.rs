@@ -25,10 +25,10 @@ impl Arm {
             .expect("the arm's multibody is never removed")
     }
 
-    /// The joint sensors: all six angles (rad).
+    /// The joint sensors: every joint's angle (rad).
     pub(super) fn joints(&self) -> Joints {
         let mb = self.multibody();
-        Joints::from_fn(self.link_ids.len(), |i| {
+        Joints::from_fn(self.dof, |i| {
             mb.link(self.link_ids[i])
                 .map_or(0.0, |link| link.joint().coords()[ANGLE])
         })
@@ -37,7 +37,7 @@ impl Arm {
     /// The joints' speeds (rad/s).
     pub(super) fn speeds(&self) -> Joints {
         let mb = self.multibody();
-        Joints::from_fn(self.link_ids.len(), |i| {
+        Joints::from_fn(self.dof, |i| {
             mb.link(self.link_ids[i])
                 .map_or(0.0, |link| mb.joint_velocity(link)[0])
         })
@@ -48,12 +48,12 @@ impl Arm {
         &mut self,
         target: &Joints,
         speed: &Joints,
-        max_force: &[f64; 6],
+        max_force: &Joints,
         settings: &DynamicSettings,
     ) {
-        let ids = self.link_ids;
+        let (ids, n) = (self.link_ids, self.dof);
         let mb = self.multibody_mut();
-        for (i, id) in ids.into_iter().enumerate() {
+        for (i, &id) in ids[..n].iter().enumerate() {
             if let Some(link) = mb.link_mut(id) {
                 link.joint
                     .data
@@ -72,9 +72,9 @@ impl Arm {
     /// Turns every servo off (no force at all) and the gravity feed-forward with it;
     /// without `limits` the joints turn freely past their URDF limits.
     pub(super) fn release(&mut self, limits: bool) {
-        let ids = self.link_ids;
+        let (ids, n) = (self.link_ids, self.dof);
         let mb = self.multibody_mut();
-        for id in ids {
+        for &id in &ids[..n] {
             if let Some(link) = mb.link_mut(id) {
                 let joint = &mut link.joint.data;
                 joint
@@ -95,14 +95,14 @@ impl Arm {
     /// Puts the arm at `q` at rest at once (no physics involved).
     pub(super) fn teleport(&mut self, q: &Joints) {
         let now = self.joints();
-        let ids = self.link_ids;
+        let (ids, n) = (self.link_ids, self.dof);
         let mb = self
             .world
             .multibody_joints
             .get_multibody_mut(self.multibody)
             .expect("the arm's multibody is never removed");
         let mut displacement = DVector::zeros(mb.ndofs());
-        for (i, id) in ids.into_iter().enumerate() {
+        for (i, &id) in ids[..n].iter().enumerate() {
             if let Some(link) = mb.link(id) {
                 displacement[link.assembly_id()] = q[i] - now[i];
             }

@@ -26,12 +26,12 @@ impl DynamicSim {
         self.model().controlled_of(&self.plan.joints())
     }
 
-    /// The joint limits of θ1..θ3 (rad): lower and upper.
+    /// The limits of the learned joints (rad): lower and upper.
     fn plan_limits(&self) -> (Controlled, Controlled) {
-        let joints = self.model().joints();
+        let (joints, learned) = (self.model().joints(), self.model().learned());
         (
-            Controlled::from_fn(|i, _| joints[i].lower),
-            Controlled::from_fn(|i, _| joints[i].upper),
+            Controlled::from_fn(|i, _| joints[learned[i]].lower),
+            Controlled::from_fn(|i, _| joints[learned[i]].upper),
         )
     }
 
@@ -73,7 +73,7 @@ impl DynamicSim {
         let dt = self.settings.dt;
         let lead = self.acceleration_lead();
         let from = self.tracker().point();
-        let last = self.full_set_point(&from);
+        let last = self.full_set_point(&from, &self.arm.joints());
         let (lower, upper) = self.plan_limits();
         let tracker = self.tracker();
         tracker.step(dt);
@@ -82,8 +82,8 @@ impl DynamicSim {
         let next_theta = tracker.point();
         ahead.step(dt);
         ahead.keep_within(&lower, &upper);
-        let next = self.full_set_point(&next_theta);
-        let after = self.full_set_point(&ahead.point());
+        let next = self.full_set_point(&next_theta, &last);
+        let after = self.full_set_point(&ahead.point(), &next);
         let accelerated = next + (after - 2.0 * next + last) * lead;
         self.tick(&accelerated, &((after - next) / dt));
         if !self.arm.in_contact() {

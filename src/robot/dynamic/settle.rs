@@ -17,19 +17,33 @@ impl DynamicSim {
         }
     }
 
-    /// The set-point of the line from `start` (θ1..θ3) along `delta` at `fraction`:
-    /// θ5 keeps the camera vertical (inside its limits), θ4 = θ6 = 0.
-    fn set_point(&self, start: &Controlled, delta: &Controlled, fraction: f64) -> Joints {
-        self.full_set_point(&(start + delta * fraction))
+    /// The set-point of the line from `start` (the learned angles) along `delta` at
+    /// `fraction`, the wrist solved from the joints `near` (the last set-point).
+    fn set_point(
+        &self,
+        start: &Controlled,
+        delta: &Controlled,
+        fraction: f64,
+        near: &Joints,
+    ) -> Joints {
+        self.full_set_point(&(start + delta * fraction), near)
     }
 
-    /// The servos' set-point for θ1..θ3 = `theta`: θ5 keeps the camera vertical (inside
-    /// its limits), θ4 = θ6 = 0.
-    pub(super) fn full_set_point(&self, theta: &Controlled) -> Joints {
+    /// The servos' set-point for the learned angles `theta`: the other joints where the
+    /// model's wrist solver puts them, starting from their angles in `near` (the last
+    /// set-point, as the kinematic simulator warm-starts from its last pose), or held at
+    /// them where it finds no solution; each kept inside its limits.
+    pub(super) fn full_set_point(&self, theta: &Controlled, near: &Joints) -> Joints {
         let model = self.model();
-        let mut q = model.full_pose(theta);
-        let wrist = &model.joints()[4];
-        q[4] = q[4].clamp(wrist.lower, wrist.upper);
+        let pose = model.pose_near(theta, near);
+        let mut q = pose.joints;
+        let learned = model.learned();
+        for (i, joint) in model.joints().iter().enumerate() {
+            if !learned.contains(&i) {
+                let angle = if pose.wrist_found { q[i] } else { near[i] };
+                q[i] = angle.clamp(joint.lower, joint.upper);
+            }
+        }
         q
     }
 
@@ -47,12 +61,10 @@ impl DynamicSim {
         let ticks = (profile.duration() / dt).ceil() as usize;
         let from = self.model().controlled_of(start);
         let at = |k: usize| profile.fraction_at(k as f64 * dt);
-        let (mut now, mut next) = (
-            self.set_point(&from, delta, 0.0),
-            self.set_point(&from, delta, at(1)),
-        );
+        let now = self.set_point(&from, delta, 0.0, start);
+        let (mut now, mut next) = (now, self.set_point(&from, delta, at(1), &now));
         for k in 0..ticks {
-            let after = self.set_point(&from, delta, at(k + 2));
+            let after = self.set_point(&from, delta, at(k + 2), &next);
             let accelerated = next + (after - 2.0 * next + now) * lead;
             self.tick(&accelerated, &((after - next) / dt));
             if self.arm.in_contact() {

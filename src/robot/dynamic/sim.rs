@@ -94,7 +94,8 @@ impl SimCounters {
     }
 }
 
-/// The OSCAR-6 as a Rapier multibody with gravity, joint limits and position servos.
+/// An arm (the OSCAR-6, or any chain of revolute joints) as a Rapier multibody with
+/// gravity, joint limits and position servos.
 #[derive(Debug)]
 pub struct DynamicSim {
     /// The set-point: the kinematic simulator's pose is where the servos are sent.
@@ -144,7 +145,7 @@ impl DynamicSim {
 
     /// The joint torques (N·m) the gravity feed-forward gives at pose `q`: what holds the
     /// arm's weight there, from the links' mass properties as simulated.
-    pub fn holding_torques(&self, q: &Joints) -> [f64; 6] {
+    pub fn holding_torques(&self, q: &Joints) -> Joints {
         self.arm.weight_torques(self.plan.model(), q).0
     }
 
@@ -164,7 +165,7 @@ impl Simulator for DynamicSim {
         let (torques, _) = self.arm.weight_torques(self.model(), &q);
         let joints = self.model().joints();
         if let Some(i) =
-            (0..6).find(|&i| torques[i].is_nan() || torques[i].abs() > joints[i].effort)
+            (0..joints.len()).find(|&i| torques[i].is_nan() || torques[i].abs() > joints[i].effort)
         {
             return Err(RobotError::CannotHold {
                 joint: i + 1,
@@ -213,7 +214,7 @@ impl Simulator for DynamicSim {
     }
 
     fn camera_pose(&self) -> Isometry3<f64> {
-        self.arm.link_pose(6).map_or_else(
+        self.arm.link_pose(self.arm.dof).map_or_else(
             || self.model().camera_pose(&self.joints()),
             |flange| flange * self.model().camera_mount(),
         )
@@ -270,6 +271,9 @@ impl Simulator for DynamicSim {
         let colliders = &self.arm.world.colliders;
         WorldView {
             bodies: std::array::from_fn(|k: usize| {
+                if k >= self.arm.dof {
+                    return None; // the last body carries the camera, behind its lens
+                }
                 let collider = colliders.get(self.arm.colliders[k]?)?;
                 Some((*collider.position(), collider.shared_shape()))
             }),
@@ -289,13 +293,14 @@ impl Simulator for DynamicSim {
 }
 
 impl Arm {
-    /// The pose of link `k` (1–6) in the world, as simulated.
+    /// The pose of body `k` (1 for joint 1's) in the world, as simulated.
     fn link_pose(&self, k: usize) -> Option<Isometry3<f64>> {
         let body = self.world.bodies.get(*self.bodies.get(k)?)?;
         Some(to_isometry(body.position()))
     }
 
-    /// Gives link `k` (1–6) new mass properties, for the gravity feed-forward too.
+    /// Gives body `k` (1 for joint 1's) new mass properties, for the gravity feed-forward
+    /// too.
     fn set_inertial(&mut self, k: usize, inertial: Inertial) {
         self.inertials[k - 1] = inertial;
         if let Some(body) = self.world.bodies.get_mut(self.bodies[k]) {

@@ -8,7 +8,8 @@ use crate::robot::description::{
 };
 use crate::robot::joint::{LinkBody, RevoluteJoint, Shape};
 use crate::robot::MAX_JOINTS;
-use nalgebra::{Isometry3, Point3, Translation3, Vector3};
+use nalgebra::{Isometry3, Translation3, Vector3};
+use std::sync::Arc;
 
 /// Which part of a robot description is the arm, and where its camera sits.
 #[derive(Debug, Clone, PartialEq)]
@@ -38,8 +39,8 @@ impl ArmModel {
     /// The arm `settings` pick out of `description`: every moving joint on the chain to the
     /// camera link (revolute or continuous, at most [`MAX_JOINTS`]), each body's links
     /// merged, the camera link and the links fixed below it a body of their own at the
-    /// camera mount (last in the link list), meshes seen by the floor rule as their
-    /// bounding boxes.
+    /// camera mount (last in the link list), the links held off the chain (fingers) in the
+    /// body they hang from, collision meshes as their convex hulls.
     pub fn from_description(
         description: &RobotDescription,
         settings: &ArmSettings,
@@ -85,7 +86,8 @@ impl ArmModel {
             .map(|(k, body)| {
                 let on_camera =
                     |link: usize| k == last && camera_part.iter().any(|(l, _)| *l == link);
-                let kept = body.links.iter().filter(|(link, _)| !on_camera(*link));
+                let merged = with_held_links(description, &chain, body);
+                let kept = merged.iter().filter(|(link, _)| !on_camera(*link));
                 link_body(description, body.links[0].0, kept)
             })
             .collect();
@@ -131,8 +133,7 @@ fn camera_part(
 }
 
 /// A body of the arm named after description link `name`: the `links` at their poses in
-/// its frame, their mass properties joined, their collision elements as the floor rule
-/// sees them.
+/// its frame, their mass properties joined, their collision elements.
 fn link_body<'a>(
     description: &RobotDescription,
     name: usize,
@@ -151,47 +152,54 @@ fn link_body<'a>(
                 description.links[*link]
                     .collisions
                     .iter()
-                    .map(move |element| floor_shape(pose, element))
+                    .map(move |element| collision_shape(pose, element))
             })
             .collect(),
     }
 }
 
-/// A collision element as the floor rule sees it, posed in its body: primitives as they
-/// are, a mesh as the bounding box of its convex hull.
-fn floor_shape(pose: &Isometry3<f64>, element: &GeometryElement) -> (Isometry3<f64>, Shape) {
-    let at = pose * element.origin;
-    match &element.geometry {
-        Geometry::Box { size } => (at, Shape::Cuboid(*size)),
-        Geometry::Cylinder { radius, length } => (
-            at,
-            Shape::Cylinder {
-                radius: *radius,
-                length: *length,
-            },
-        ),
-        Geometry::Capsule { radius, length } => (
-            at,
-            Shape::Capsule {
-                radius: *radius,
-                length: *length,
-            },
-        ),
-        Geometry::Sphere { radius } => (at, Shape::Sphere { radius: *radius }),
-        Geometry::Mesh(mesh) => {
-            let points = &mesh.hull.as_ref().unwrap_or(&mesh.mesh).vertices;
-            let (low, high) = points.iter().fold(
-                (
-                    Point3::from([f64::INFINITY; 3]),
-                    Point3::from([f64::NEG_INFINITY; 3]),
-                ),
-                |(low, high), p| (low.inf(p), high.sup(p)),
-            );
-            let centre = nalgebra::center(&low, &high);
-            (
-                at * Translation3::from(centre.coords),
-                Shape::Cuboid(high - low),
-            )
+/// The links of `body` with their poses in its frame, followed by every link that hangs
+/// from them through joints off the chain held at their positions (the Panda's fingers)
+/// and the links fixed to those: all ride on the body.
+fn with_held_links(
+    description: &RobotDescription,
+    chain: &Chain,
+    body: &ChainBody,
+) -> Vec<(usize, Isometry3<f64>)> {
+    let mut links = body.links.clone();
+    let mut next = 0;
+    while let Some(&(link, pose)) = links.get(next) {
+        for &j in &description.links[link].child_joints {
+            let joint = &description.joints[j];
+            let position = match chain.held.iter().find(|held| held.joint == j) {
+                Some(held) => held.position,
+                None if joint.kind == JointKind::Fixed => 0.0,
+                None => continue,
+            };
+            if links.iter().all(|(l, _)| *l != joint.child) {
+                links.push((joint.child, pose * joint.transform(position)));
+            }
         }
+        next += 1;
     }
+    links
+}
+
+/// A collision element posed in its body: primitives as they are, a mesh as its convex hull.
+fn collision_shape(pose: &Isometry3<f64>, element: &GeometryElement) -> (Isometry3<f64>, Shape) {
+    let at = pose * element.origin;
+    let shape = match &element.geometry {
+        Geometry::Box { size } => Shape::Cuboid(*size),
+        Geometry::Cylinder { radius, length } => Shape::Cylinder {
+            radius: *radius,
+            length: *length,
+        },
+        Geometry::Capsule { radius, length } => Shape::Capsule {
+            radius: *radius,
+            length: *length,
+        },
+        Geometry::Sphere { radius } => Shape::Sphere { radius: *radius },
+        Geometry::Mesh(mesh) => Shape::hull(Arc::clone(mesh.hull.as_ref().unwrap_or(&mesh.mesh))),
+    };
+    (at, shape)
 }

@@ -5,7 +5,7 @@
 
 mod mujoco;
 
-use eyehand::robot::{ArmModel, DynamicSettings, DynamicSim, Joints, Simulator};
+use eyehand::robot::{ArmModel, DynamicSettings, DynamicSim, Simulator};
 use mujoco::{acceleration_gaps, gap_at, joints, relative, rows, swing_gaps};
 
 /// Accelerations agree to this, relative to the pose's largest.

@@ -535,4 +535,62 @@ mod tests {
             }
         }
     }
+
+    /// The exact distance between bodies `i` and `j` with the links placed at `links`.
+    fn body_gap(geometry: &ArmGeometry, links: &Frames, i: usize, j: usize) -> f64 {
+        let frame = |k: usize| match k {
+            0 => Isometry3::identity(),
+            _ => links[k - 1],
+        };
+        let (at_i, at_j) = (frame(i), frame(j));
+        geometry.bodies[i]
+            .iter()
+            .flat_map(|a| {
+                geometry.bodies[j]
+                    .iter()
+                    .map(move |b| parts_distance(a, &at_i, b, &at_j))
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    #[test]
+    fn the_pandas_hand_touching_its_own_arm_is_a_contact() {
+        use crate::robot::{ArmSettings, DescriptionOptions, RobotDescription};
+        use rand::{Rng, SeedableRng};
+        let path =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/panda/panda.urdf");
+        let description = RobotDescription::load(&path, &DescriptionOptions::default()).unwrap();
+        let settings = ArmSettings {
+            camera_link: "panda_hand".into(),
+            camera_offset: Vector3::zeros(),
+            learned_joints: ["panda_joint1", "panda_joint2", "panda_joint4"].map(String::from),
+        };
+        let model = ArmModel::from_description(&description, &settings).unwrap();
+        let geometry = ArmGeometry::new(&model);
+        // The hand (with the camera and the held fingers) is the seventh link, body 7: it
+        // may meet the base and links 1–4.
+        let hand = model.dof();
+        assert_eq!(hand, 7);
+        for i in 0..=4 {
+            assert!(geometry.pairs.contains(&(i, hand)), "{:?}", geometry.pairs);
+        }
+        // No move that keeps the camera looking down folds the hand onto the arm within
+        // the Panda's limits, so any pose will do: the first of seeded random poses where
+        // the hand, and only the hand, touches another link.
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+        let touching = (0..20_000).find_map(|_| {
+            let q = Joints::from_fn(model.dof(), |i| {
+                let (low, high) = model.joints()[i].one_turn();
+                rng.random_range(low..high)
+            });
+            let links = model.link_frames(&q);
+            let touches = |&&(i, j): &&(usize, usize)| body_gap(&geometry, &links, i, j) <= 0.0;
+            let (with_hand, others): (Vec<_>, Vec<_>) =
+                geometry.pairs.iter().partition(|(_, j)| *j == hand);
+            (with_hand.iter().any(touches) && !others.iter().any(touches)).then_some(q)
+        });
+        let q = touching.expect("a pose where the hand touches the arm");
+        let still = [0.0; MAX_BODIES];
+        assert_eq!(geometry.allowance(&model, &q, &still, &[]), 0.0);
+    }
 }

@@ -3,12 +3,13 @@
 //! of the camera pose takes per call, next to `ArmModel`'s for the OSCAR-6. Prints the
 //! markdown table of docs/ARMS.md. Then each arm as an `ArmModel` (its wrist solved):
 //! the reach space, a pose with the wrist solved, and lin5 run for 20,000 trials on the
-//! kinematic simulator (seed 1): the second table of docs/ARMS.md.
+//! kinematic simulator (seed 1): the second table of docs/ARMS.md. Last, lin5 for 2,000
+//! trials on the dynamic simulator per arm (seed 1): the third table.
 //!
 //! `cargo bench --bench arms` (20 loads, 1,000,000 poses per row, seed 1).
 
 use eyehand::experiment::setup::{load_arm, reach_space};
-use eyehand::experiment::{reachable_points, run, Config, RunOptions, REACH_SAMPLES};
+use eyehand::experiment::{reachable_points, run, Config, RunOptions, RunSummary, REACH_SAMPLES};
 use eyehand::robot::description::{Chain, DescriptionOptions, RobotDescription};
 use eyehand::robot::{ArmModel, Controlled, Joints};
 use nalgebra::Isometry3;
@@ -26,6 +27,8 @@ const SEED: u64 = 1;
 const TRIALS: usize = 20_000;
 /// Poses per wrist-solving row.
 const POSES: usize = 200_000;
+/// Trials of each lin5 run on the dynamic simulator.
+const DYNAMIC_TRIALS: usize = 2_000;
 
 /// An arm of the second table: its URDF (`None`: the shipped OSCAR-6) and the `--set`s
 /// that pick it out (the boundaries of θ2 and θ3 as `eyehand reach` suggests them).
@@ -94,6 +97,34 @@ fn wrist_costs(model: &ArmModel) -> (f64, f64) {
     (path, rest_start.elapsed().as_nanos() as f64 / POSES as f64)
 }
 
+/// `arm`'s config for a run of `trials` lin5 trials (seed 1) on simulator `sim`, and its
+/// URDF.
+fn arm_config(
+    root: &std::path::Path,
+    arm: &LearningArm,
+    trials: usize,
+    sim: &str,
+) -> (Config, Option<PathBuf>) {
+    let mut config = Config::default_config();
+    for (name, value) in arm.sets.iter().chain([&("sim", sim)]) {
+        config.assign(name, value).expect("a valid entry");
+    }
+    config.trials = trials;
+    config.seed = SEED;
+    config.check().expect("a valid config");
+    (config, arm.urdf.map(|file| root.join(file)))
+}
+
+/// The run's mean distances after steps 1..5 (mm), as a table cell.
+fn mean_distances(summary: &RunSummary) -> String {
+    let means: Vec<String> = summary
+        .mean_distance_mm
+        .iter()
+        .map(|m| m.map_or("-".into(), |m| format!("{m:.3}")))
+        .collect();
+    means.join(" / ")
+}
+
 /// The second table: each arm's reach space, wrist cost and lin5 run.
 fn learning_table(root: &std::path::Path) {
     println!();
@@ -101,14 +132,7 @@ fn learning_table(root: &std::path::Path) {
     println!("|---|---|---|---|---|---|---|---|---|---|");
     let data = tempfile::tempdir().expect("a scratch folder");
     for arm in LEARNING_ARMS {
-        let mut config = Config::default_config();
-        for (name, value) in arm.sets {
-            config.assign(name, value).expect("a valid entry");
-        }
-        config.trials = TRIALS;
-        config.seed = SEED;
-        config.check().expect("a valid config");
-        let urdf = arm.urdf.map(|file| root.join(file));
+        let (config, urdf) = arm_config(root, &arm, TRIALS, "kinematic");
         let model = load_arm(&config, urdf.as_deref())
             .expect("the arm loads")
             .model;
@@ -126,11 +150,6 @@ fn learning_table(root: &std::path::Path) {
         };
         let result = run(&options).expect("the run runs");
         let summary = &result.summary;
-        let means: Vec<String> = summary
-            .mean_distance_mm
-            .iter()
-            .map(|m| m.map_or("-".into(), |m| format!("{m:.3}")))
-            .collect();
         println!(
             "| {} | {} | {wrist} | {:.1}–{:.1}, {:.1}–{:.1} | {:.1}% | {warm:.0} | {cold:.0} | {} | {} | {:.0} |",
             arm.name,
@@ -140,9 +159,35 @@ fn learning_table(root: &std::path::Path) {
             reach.z_min * 100.0,
             reach.z_max * 100.0,
             covered * 100.0,
-            means.join(" / "),
+            mean_distances(summary),
             summary.failures,
             summary.trials_per_second
+        );
+    }
+}
+
+/// The third table: each arm on the dynamic simulator, lin5 for `DYNAMIC_TRIALS` trials.
+fn dynamic_table(root: &std::path::Path) {
+    println!();
+    println!("| arm | lin5 mean distance after steps 1..5 (mm) | failures | trials/s | physics steps/trial | settle time-outs | contact stops |");
+    println!("|---|---|---|---|---|---|---|");
+    let data = tempfile::tempdir().expect("a scratch folder");
+    for arm in LEARNING_ARMS {
+        let (config, urdf) = arm_config(root, &arm, DYNAMIC_TRIALS, "dynamic");
+        let options = RunOptions {
+            urdf,
+            ..RunOptions::new(config, data.path())
+        };
+        let summary = run(&options).expect("the run runs").summary;
+        println!(
+            "| {} | {} | {} | {:.0} | {:.1} | {} | {} |",
+            arm.name,
+            mean_distances(&summary),
+            summary.failures,
+            summary.trials_per_second,
+            summary.physics_steps_per_trial,
+            summary.settle_timeouts,
+            summary.stopped_by_contact
         );
     }
 }
@@ -211,4 +256,5 @@ fn main() {
         }
     }
     learning_table(&root);
+    dynamic_table(&root);
 }

@@ -6,8 +6,9 @@
 //! touch at the zero pose (the wrist's three links share its centre). Every link but the
 //! base may touch an obstacle.
 //!
-//! Cheap first: each collision element is held by a capsule (a cylinder or capsule by its
-//! own segment, a box by its longest axis, a ball by its centre), and the distance between
+//! A collision mesh's hull is measured as its bounding box. Cheap first: each collision
+//! element is held by a capsule (a cylinder or capsule by its own segment, a box by its
+//! longest axis, a ball by its centre), and the distance between
 //! capsules, or between a link's and an obstacle's bounding boxes, bounds the true distance
 //! from below. Only a pair whose bound is under [`NEAR`] is measured exactly (parry). A
 //! move is marched in steps no pair can close its gap in, from the turns of the joints
@@ -18,7 +19,7 @@ use super::collision::{body_elements, joint_turns, Elements, MoveStart};
 use super::dynamic::{parts, to_pose};
 use super::world::Obstacle;
 use super::{ArmModel, Controlled, Frames, Joints, Shape, MAX_JOINTS};
-use nalgebra::{Isometry3, Point3, Vector3};
+use nalgebra::{Isometry3, Point3, Translation3, Vector3};
 use rapier3d_f64::math::Pose;
 use rapier3d_f64::parry::query::{distance, intersection_test};
 use rapier3d_f64::parry::shape::SharedShape;
@@ -278,8 +279,8 @@ pub(crate) fn contact_pairs(model: &ArmModel, bodies: &[Elements]) -> Vec<(usize
     let touch = |i: usize, j: usize| {
         bodies[i].iter().any(|(p, s)| {
             bodies[j].iter().any(|(q, t)| {
-                let (a, shape_a) = parts(&(frame(i) * p), s);
-                let (b, shape_b) = parts(&(frame(j) * q), t);
+                let (a, shape_a) = measured(&(frame(i) * p), s);
+                let (b, shape_b) = measured(&(frame(j) * q), t);
                 intersection_test(&a, shape_a.as_ref(), &b, shape_b.as_ref())
                     .map_or(true, |hit| hit.intersecting)
             })
@@ -312,11 +313,24 @@ fn part((pose, shape): &(Isometry3<f64>, Shape)) -> Part {
         Shape::Cuboid(size) => box_capsule(pose, &Vector3::zeros(), &size),
         Shape::Hull { centre, size, .. } => box_capsule(pose, &centre, &size),
     };
-    let (pose, shape) = parts(pose, shape);
+    let (pose, shape) = measured(pose, shape);
     Part {
         pose,
         shape,
         capsule: Capsule { ends, radius },
+    }
+}
+
+/// The parry pose and shape the rule measures an element by: a hull by its bounding box
+/// (never nearer than the hull, so the rule stops a move no later than the physics'
+/// contacts would; and a box's distances are far cheaper than a many-sided hull's), any
+/// other shape as it is.
+fn measured(pose: &Isometry3<f64>, shape: &Shape) -> (Pose, SharedShape) {
+    match shape {
+        Shape::Hull { centre, size, .. } => {
+            parts(&(pose * Translation3::from(*centre)), &Shape::Cuboid(*size))
+        }
+        other => parts(pose, other),
     }
 }
 

@@ -95,8 +95,8 @@ pub enum Shape {
         /// Radius (m).
         radius: f64,
     },
-    /// A collision mesh's convex hull, for contacts and the camera; the floor rule and the
-    /// contact rule's cheap bounds see it as its bounding box.
+    /// A collision mesh's convex hull, for the physics' contacts and the camera; the floor
+    /// and contact rules see it as its bounding box.
     Hull {
         /// The hull, a closed convex mesh in the element's frame (m).
         mesh: Arc<TriangleMesh>,
@@ -121,15 +121,6 @@ impl Shape {
             centre: nalgebra::center(&low, &high).coords,
             size: high - low,
             mesh,
-        }
-    }
-
-    /// The shape the floor rule and the cheap contact bounds see: a hull as its bounding
-    /// box (moved to the box's centre by the returned offset), any other shape as it is.
-    pub fn bounded(&self) -> (Vector3<f64>, Shape) {
-        match self {
-            Shape::Hull { centre, size, .. } => (*centre, Shape::Cuboid(*size)),
-            other => (Vector3::zeros(), other.clone()),
         }
     }
 }

@@ -4,7 +4,7 @@
 use super::convert::{to_pose, to_vector};
 use crate::robot::description::TriangleMesh;
 use crate::robot::Shape;
-use nalgebra::{Isometry3, UnitQuaternion, Vector3};
+use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 use rapier3d_f64::prelude::{ColliderBuilder, SharedShape};
 use std::f64::consts::FRAC_PI_2;
 
@@ -49,17 +49,23 @@ pub(in crate::robot) fn parts(
             (to_pose(pose), SharedShape::capsule_z(0.5 * length, radius))
         }
         Shape::Sphere { radius } => (to_pose(pose), SharedShape::ball(radius)),
-        Shape::Hull { ref mesh, .. } => (to_pose(pose), convex(mesh)),
+        Shape::Hull {
+            ref mesh,
+            centre,
+            size,
+        } => match convex(mesh) {
+            Some(hull) => (to_pose(pose), hull),
+            None => parts(&(pose * Translation3::from(centre)), &Shape::Cuboid(size)),
+        },
     }
 }
 
-/// A closed convex mesh as a parry convex polyhedron; its vertices' hull should parry not
-/// take the triangles as they are.
-fn convex(mesh: &TriangleMesh) -> SharedShape {
+/// A closed convex mesh as a parry convex polyhedron (its vertices' hull should parry not
+/// take the triangles as they are); `None` for a flat one, which the description refuses.
+fn convex(mesh: &TriangleMesh) -> Option<SharedShape> {
     let points: Vec<_> = mesh.vertices.iter().map(|p| to_vector(&p.coords)).collect();
     SharedShape::convex_mesh(points.clone(), &mesh.triangles)
         .or_else(|| SharedShape::convex_hull(&points))
-        .unwrap_or_else(|| SharedShape::ball(0.0))
 }
 
 #[cfg(test)]
@@ -76,5 +82,26 @@ mod tests {
         let top = pose.transform_point(rapier3d_f64::math::Vector::new(0.0, 0.25, 0.0));
         assert!((top.z - 0.25).abs() < 1e-12 && top.y.abs() < 1e-12);
         assert!(shared.as_cylinder().is_some());
+    }
+
+    #[test]
+    fn a_hull_collides_as_a_convex_polyhedron() {
+        let corner = |x: f64, y: f64, z: f64| nalgebra::Point3::new(x, y, z);
+        // A tetrahedron with a corner at the origin and its faces turned outwards.
+        let tetrahedron = TriangleMesh {
+            vertices: vec![
+                corner(0.0, 0.0, 0.0),
+                corner(0.1, 0.0, 0.0),
+                corner(0.0, 0.1, 0.0),
+                corner(0.0, 0.0, 0.1),
+            ],
+            triangles: vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+        };
+        let (_, shape) = parts(
+            &Isometry3::identity(),
+            &Shape::hull(std::sync::Arc::new(tetrahedron)),
+        );
+        let polyhedron = shape.as_convex_polyhedron().expect("a convex polyhedron");
+        assert_eq!(polyhedron.points().len(), 4);
     }
 }

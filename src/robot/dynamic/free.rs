@@ -26,7 +26,7 @@ pub struct FreeArm {
 }
 
 impl FreeArm {
-    /// The arm of `model` at rest at `start` (all six angles, rad), stepped with
+    /// The arm of `model` at rest at `start` (every joint's angle, rad), stepped with
     /// `settings` (sanitised as the dynamic simulator does); with `limits` false the
     /// joints turn past their URDF limits, with `contacts` false the links pass through
     /// the floor and each other. Fails when a start angle is not finite, or outside its
@@ -97,12 +97,12 @@ impl FreeArm {
         self.settings.dt
     }
 
-    /// The six joint angles (rad).
+    /// The joint angles (rad).
     pub fn joints(&self) -> Joints {
         self.arm.joints()
     }
 
-    /// The six joint speeds (rad/s).
+    /// The joint speeds (rad/s).
     pub fn speeds(&self) -> Joints {
         self.arm.speeds()
     }

@@ -1,5 +1,6 @@
-//! The dynamic simulator: the OSCAR-6 as a Rapier multibody under gravity, moved by
-//! position servos that follow each move's trapezoidal profile, then settle.
+//! The dynamic simulator: an arm (the OSCAR-6 or any chain) as a Rapier multibody under
+//! gravity, moved by position servos that follow each move's trapezoidal profile, then
+//! settle.
 
 mod body_parts;
 mod builder;

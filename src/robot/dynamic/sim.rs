@@ -6,8 +6,8 @@
 //! `cargo bench --bench dynamic`; they drift, so none are copied here):
 //! - A move's trapezoidal profile (`robot_speed`, `robot_accel`) is sampled every `dt`
 //!   along the straight joint-space line; each tick sends every servo the set-point, its
-//!   speed and its acceleration (velocity and acceleration feed-forward), θ5 from the
-//!   vertical-wrist rule, θ4 = θ6 = 0. After
+//!   speed and its acceleration (velocity and acceleration feed-forward), the wrist joints
+//!   from the model's wrist solution (θ5 on the OSCAR-6, θ4 = θ6 = 0). After
 //!   the profile the arm steps until every joint is within `settle_position_tol` of its
 //!   set-point and slower than `settle_speed_tol`, or `settle_timeout` passes (reported in
 //!   the move's [`MoveReport`] and counted, not fatal).
@@ -35,7 +35,7 @@
 //!   move where a link or the camera would go below the floor (the kinematic rule); a
 //!   contact deeper than 0.5 mm during a move stops it where the arm is, reported and
 //!   counted. Each body has one massless compound collider of its URDF shapes, which
-//!   follows a stretched link. The camera link is merged into link 6; turning the camera
+//!   follows a stretched link. The camera link is merged into the last body; turning the camera
 //!   turns the model's mount, not its collider.
 
 use super::body_parts::body_parts;

@@ -35,8 +35,8 @@
 //!   move where a link or the camera would go below the floor (the kinematic rule); a
 //!   contact deeper than 0.5 mm during a move stops it where the arm is, reported and
 //!   counted. Each body has one massless compound collider of its URDF shapes, which
-//!   follows a stretched link. The camera link is merged into the last body; turning the camera
-//!   turns the model's mount, not its collider.
+//!   follows a stretched link. The camera link is merged into the last body; turning the
+//!   camera turns the model's mount, not its collider.
 
 use super::body_parts::body_parts;
 use super::builder::{joint_frame, Arm};

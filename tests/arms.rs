@@ -153,8 +153,9 @@ fn the_camera_link_and_what_is_fixed_below_it_ride_with_the_camera() {
     assert_eq!((links[6].mass, links[7].mass), (0.5, 0.3));
     assert_eq!(links[7].name, "camera_link");
     assert_eq!(links[7].collisions.len(), 1);
-    // The Panda with the camera on its hand: the hand (0.81 kg) rides with the camera, links
-    // 7 and 8 stay the last body; a camera offset leaves the hand where it is.
+    // The Panda with the camera on its hand: the hand (0.81 kg) and the fingers held on it
+    // (0.1 kg each) ride with the camera, links 7 and 8 stay the last body; a camera offset
+    // leaves the hand where it is.
     let at = |offset_cm: [f64; 3]| {
         let description =
             RobotDescription::load(&PANDA.urdf(), &DescriptionOptions::default()).unwrap();
@@ -169,7 +170,7 @@ fn the_camera_link_and_what_is_fixed_below_it_ride_with_the_camera() {
     let links = plain.links();
     assert_eq!(links.len(), 9);
     assert!((links[7].mass - 0.2).abs() < 1e-12, "{}", links[7].mass);
-    assert!((links[8].mass - 0.81).abs() < 1e-12, "{}", links[8].mass);
+    assert!((links[8].mass - 1.01).abs() < 1e-12, "{}", links[8].mass);
     assert_eq!(links[8].name, "panda_hand");
     let hand = |model: &ArmModel| -> Vec<Isometry3<f64>> {
         let camera = &model.links()[8];
@@ -183,7 +184,7 @@ fn the_camera_link_and_what_is_fixed_below_it_ride_with_the_camera() {
         poses
     };
     let (a, b) = (hand(&plain), hand(&offset));
-    assert_eq!(a.len(), 2);
+    assert_eq!(a.len(), 4, "the hand's and the fingers' collision meshes");
     for (a, b) in a.iter().zip(&b) {
         assert!((a.to_homogeneous() - b.to_homogeneous()).amax() < 1e-12);
     }

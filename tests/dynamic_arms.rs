@@ -46,12 +46,12 @@ fn ur_style() -> ArmModel {
     )
 }
 
-/// The Panda without its hand's collision shapes (the seventh body): what the contact
-/// rule saw before it checked every body.
+/// The Panda without the shapes of its hand and fingers (riding with the camera on the
+/// seventh body): what the contact rule saw before it checked every body.
 fn panda_without_hand_shapes() -> ArmModel {
     let model = panda();
     let mut links = model.links().to_vec();
-    links[model.dof()].collisions.clear();
+    links[model.dof() + 1].collisions.clear();
     ArmModel::from_parts(
         model.name().to_string(),
         model.joints().to_vec(),

@@ -107,9 +107,12 @@ impl Inertial {
         )
     }
 
-    /// As Rapier mass properties, built from the principal frame found here.
+    /// As Rapier mass properties, built from the principal frame found here; a principal
+    /// moment below [`MIN_MOMENT`](Self::MIN_MOMENT) (a point mass, a thin rod about its
+    /// axis) is raised to it, so that no joint turns a body of no inertia.
     pub(super) fn mass_properties(&self) -> MassProperties {
         let (moments, axes) = self.principal();
+        let moments = moments.map(|m| m.max(Self::MIN_MOMENT));
         let q = axes.quaternion();
         MassProperties::with_principal_inertia_frame(
             to_vector(&self.com),

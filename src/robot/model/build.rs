@@ -77,7 +77,11 @@ impl ArmModel {
                 friction: joint.dynamics.friction,
             });
         }
-        let camera_part = camera_part(description, &chain, &settings.camera_offset);
+        let camera_part = with_held_links(
+            description,
+            &chain,
+            camera_part(description, &chain, &settings.camera_offset),
+        );
         let last = chain.bodies.len() - 1;
         let mut links: Vec<LinkBody> = chain
             .bodies
@@ -86,7 +90,7 @@ impl ArmModel {
             .map(|(k, body)| {
                 let on_camera =
                     |link: usize| k == last && camera_part.iter().any(|(l, _)| *l == link);
-                let merged = with_held_links(description, &chain, body);
+                let merged = with_held_links(description, &chain, body.links.clone());
                 let kept = merged.iter().filter(|(link, _)| !on_camera(*link));
                 link_body(description, body.links[0].0, kept)
             })
@@ -158,15 +162,14 @@ fn link_body<'a>(
     }
 }
 
-/// The links of `body` with their poses in its frame, followed by every link that hangs
-/// from them through joints off the chain held at their positions (the Panda's fingers)
-/// and the links fixed to those: all ride on the body.
+/// `links` (with their poses in one frame), followed by every link that hangs from them
+/// through joints off the chain held at their positions (the Panda's fingers) and the links
+/// fixed to those: all ride together.
 fn with_held_links(
     description: &RobotDescription,
     chain: &Chain,
-    body: &ChainBody,
+    mut links: Vec<(usize, Isometry3<f64>)>,
 ) -> Vec<(usize, Isometry3<f64>)> {
-    let mut links = body.links.clone();
     let mut next = 0;
     while let Some(&(link, pose)) = links.get(next) {
         for &j in &description.links[link].child_joints {

@@ -71,7 +71,8 @@ pub struct LinkBody {
     pub collisions: Vec<(Isometry3<f64>, Shape)>,
 }
 
-/// A collision shape of a link: the URDF's primitives, or a collision mesh's convex hull.
+/// A collision shape of a link: the URDF's primitives, or a collision mesh with its convex
+/// hull.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Shape {
     /// A box with these full side lengths (m).
@@ -95,10 +96,12 @@ pub enum Shape {
         /// Radius (m).
         radius: f64,
     },
-    /// A collision mesh's convex hull, for the physics' contacts and the camera; the floor
-    /// and contact rules see it as its bounding box.
+    /// A collision mesh: the ray-cast camera sees its triangles, the physics' contacts its
+    /// convex hull, the floor and contact rules the hull's bounding box.
     Hull {
-        /// The hull, a closed convex mesh in the element's frame (m).
+        /// The mesh's own triangles in the element's frame (m).
+        triangles: Arc<TriangleMesh>,
+        /// Their hull, a closed convex mesh in the element's frame (m).
         mesh: Arc<TriangleMesh>,
         /// The centre of its bounding box in the element's frame (m).
         centre: Vector3<f64>,
@@ -108,8 +111,9 @@ pub enum Shape {
 }
 
 impl Shape {
-    /// The convex hull `mesh` (closed, convex, in the element's frame) with its bounding box.
-    pub fn hull(mesh: Arc<TriangleMesh>) -> Shape {
+    /// The collision mesh `triangles` with its convex hull `mesh` (closed, convex, in the
+    /// element's frame) and the hull's bounding box.
+    pub fn hull(triangles: Arc<TriangleMesh>, mesh: Arc<TriangleMesh>) -> Shape {
         let (low, high) = mesh.vertices.iter().fold(
             (
                 Point3::from([f64::INFINITY; 3]),
@@ -120,6 +124,7 @@ impl Shape {
         Shape::Hull {
             centre: nalgebra::center(&low, &high).coords,
             size: high - low,
+            triangles,
             mesh,
         }
     }

@@ -7,13 +7,14 @@ use super::body_parts::body_parts;
 use super::colliders::collider;
 use super::convert::to_pose;
 use super::inertia::Inertial;
+use super::seen::compound;
 use super::settings::DynamicSettings;
 use crate::robot::{ArmModel, Joints, MAX_JOINTS};
 use nalgebra::{Isometry3, Unit, UnitQuaternion, Vector3};
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::prelude::{
     ColliderHandle, GenericJointBuilder, JointAxesMask, JointAxis, MotorModel, MultibodyIndex,
-    PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
+    PhysicsWorld, RigidBodyBuilder, RigidBodyHandle, SharedShape,
 };
 
 /// Standard gravity (m/s²), pulling along −z.
@@ -33,6 +34,9 @@ pub(super) struct Arm {
     pub(super) bodies: Vec<RigidBodyHandle>,
     /// Each body's collider, base first (none for a body without collision elements).
     pub(super) colliders: Vec<Option<ColliderHandle>>,
+    /// Each body's shape as the camera sees it (meshes as their triangles), base first,
+    /// placed where the body's collider is (none for a body without collision elements).
+    pub(super) seen: Vec<Option<SharedShape>>,
     /// Mass properties of the moving bodies as simulated (the camera in the last, a
     /// stretched link as stretched, a massless body given [`Inertial::MIN_MASS`]).
     pub(super) inertials: Vec<Inertial>,
@@ -58,6 +62,7 @@ impl Arm {
         let frames = model.link_frames(&Joints::zeros(dof));
         let mut bodies = Vec::with_capacity(dof + 1);
         let mut colliders = Vec::with_capacity(dof + 1);
+        let mut seen = Vec::with_capacity(dof + 1);
         let mut inertials = Vec::with_capacity(dof);
         for k in 0..=dof {
             let (inertial, elements) = body_parts(model, k);
@@ -78,6 +83,7 @@ impl Arm {
                 .then(|| world.insert_collider(collider(&elements), Some(body)));
             bodies.push(body);
             colliders.push(own);
+            seen.push((!elements.is_empty()).then(|| compound(&elements)));
         }
         for (i, joint) in model.joints().iter().enumerate() {
             let data = GenericJointBuilder::new(JointAxesMask::LOCKED_REVOLUTE_AXES)
@@ -126,6 +132,7 @@ impl Arm {
             link_ids,
             bodies,
             colliders,
+            seen,
             inertials,
         };
         arm.add_world(model, settings.moves.floor_z);

@@ -1,5 +1,5 @@
 //! Rapier colliders from the URDF's collision geometry: primitives, and the convex hulls of
-//! collision meshes.
+//! collision meshes (the contacts' shapes; the camera's are in `seen.rs`).
 
 use super::convert::{to_pose, to_vector};
 use crate::robot::description::TriangleMesh;
@@ -14,11 +14,11 @@ use std::f64::consts::FRAC_PI_2;
 /// were given (adding a massless collider elsewhere makes it diagonalise the tensor again,
 /// and lose the axes of a repeated moment).
 pub(super) fn collider(elements: &[(Isometry3<f64>, Shape)]) -> ColliderBuilder {
-    ColliderBuilder::new(compound(elements)).density(0.0)
+    ColliderBuilder::new(contact_compound(elements)).density(0.0)
 }
 
-/// The collision elements as one shape.
-pub(in crate::robot) fn compound(elements: &[(Isometry3<f64>, Shape)]) -> SharedShape {
+/// The collision elements as one shape for contacts: a mesh as its convex hull.
+pub(super) fn contact_compound(elements: &[(Isometry3<f64>, Shape)]) -> SharedShape {
     SharedShape::compound(
         elements
             .iter()
@@ -53,6 +53,7 @@ pub(in crate::robot) fn parts(
             ref mesh,
             centre,
             size,
+            ..
         } => match convex(mesh) {
             Some(hull) => (to_pose(pose), hull),
             None => parts(&(pose * Translation3::from(centre)), &Shape::Cuboid(size)),
@@ -99,7 +100,7 @@ mod tests {
         };
         let (_, shape) = parts(
             &Isometry3::identity(),
-            &Shape::hull(std::sync::Arc::new(tetrahedron)),
+            &Shape::hull(tetrahedron.clone().into(), tetrahedron.into()),
         );
         let polyhedron = shape.as_convex_polyhedron().expect("a convex polyhedron");
         assert_eq!(polyhedron.points().len(), 4);

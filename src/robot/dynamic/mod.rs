@@ -11,13 +11,15 @@ mod free;
 mod gravity;
 mod inertia;
 mod motors;
+mod seen;
 mod servo;
 mod settings;
 mod settle;
 mod sim;
 
-pub(super) use colliders::{compound, parts};
+pub(super) use colliders::parts;
 pub(super) use convert::{to_pose, to_vector};
 pub use free::{Drive, FreeArm};
+pub(super) use seen::compound;
 pub use settings::DynamicSettings;
 pub use sim::{DynamicSim, SimCounters};

@@ -35,14 +35,16 @@
 //!   move where a link or the camera would go below the floor (the kinematic rule); a
 //!   contact deeper than 0.5 mm during a move stops it where the arm is, reported and
 //!   counted. Each body has one massless compound collider of its URDF shapes, which
-//!   follows a stretched link. The camera link is merged into the last body; turning the
+//!   follows a stretched link; the camera sees a body's collision meshes as their own
+//!   triangles (built with the arm), the contacts as their hulls. The camera link is merged into the last body; turning the
 //!   camera turns the model's mount, not its collider.
 
 use super::body_parts::body_parts;
 use super::builder::{joint_frame, Arm};
-use super::colliders::compound;
+use super::colliders::contact_compound;
 use super::convert::{to_isometry, to_pose};
 use super::inertia::Inertial;
+use super::seen::compound;
 use super::settings::DynamicSettings;
 use crate::robot::{
     ArmModel, Controlled, Joints, KinematicSim, MoveReport, Obstacle, RobotError, SetPointTracker,
@@ -232,8 +234,9 @@ impl Simulator for DynamicSim {
         if let Some(collider) =
             self.arm.colliders[link].and_then(|handle| self.arm.world.colliders.get_mut(handle))
         {
-            collider.set_shape(compound(&elements));
+            collider.set_shape(contact_compound(&elements));
         }
+        self.arm.seen[link] = (!elements.is_empty()).then(|| compound(&elements));
         self.arm.refresh_bodies();
         self.settle();
         Ok(())
@@ -275,7 +278,7 @@ impl Simulator for DynamicSim {
                     return None; // the last body carries the camera, behind its lens
                 }
                 let collider = colliders.get(self.arm.colliders[k]?)?;
-                Some((*collider.position(), collider.shared_shape()))
+                Some((*collider.position(), self.arm.seen[k].as_ref()?))
             }),
             ..plan
         }

@@ -188,7 +188,7 @@ fn with_held_links(
     links
 }
 
-/// A collision element posed in its body: primitives as they are, a mesh as its convex hull.
+/// A collision element posed in its body: primitives as they are, a mesh with its convex hull.
 fn collision_shape(pose: &Isometry3<f64>, element: &GeometryElement) -> (Isometry3<f64>, Shape) {
     let at = pose * element.origin;
     let shape = match &element.geometry {
@@ -202,7 +202,10 @@ fn collision_shape(pose: &Isometry3<f64>, element: &GeometryElement) -> (Isometr
             length: *length,
         },
         Geometry::Sphere { radius } => Shape::Sphere { radius: *radius },
-        Geometry::Mesh(mesh) => Shape::hull(Arc::clone(mesh.hull.as_ref().unwrap_or(&mesh.mesh))),
+        Geometry::Mesh(mesh) => Shape::hull(
+            Arc::clone(&mesh.mesh),
+            Arc::clone(mesh.hull.as_ref().unwrap_or(&mesh.mesh)),
+        ),
     };
     (at, shape)
 }

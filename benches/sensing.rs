@@ -16,8 +16,11 @@ mod common;
 use common::run_in_process;
 use eyehand::experiment::{CameraKind, Config, RunSummary};
 use eyehand::learn::Method;
-use eyehand::robot::{ArmModel, KinematicSim, MoveSettings, Obstacle, Simulator};
-use nalgebra::{Point3, Vector3};
+use eyehand::robot::{
+    ArmModel, ArmSettings, DescriptionOptions, KinematicSim, MoveSettings, Obstacle, ReachSpace,
+    RobotDescription, Simulator,
+};
+use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use std::time::Instant;
 
 const TRIALS: usize = 20_000;
@@ -102,14 +105,24 @@ fn micros_per_read(camera: &dyn Camera) -> f64 {
 /// Microseconds per read of `camera` in the world of `sim` (the world lent anew for each
 /// read, as the trial loop does), looking from the arm's camera at `objects` in turn.
 fn micros_per_read_in(camera: &dyn Camera, sim: &KinematicSim, objects: &[Point3<f64>]) -> f64 {
-    let pose = sim.camera_pose();
+    micros_per_read_from(camera, sim, &sim.camera_pose(), objects)
+}
+
+/// Microseconds per read of `camera` at `pose` in the world of `sim`, looking at `objects`
+/// in turn.
+fn micros_per_read_from(
+    camera: &dyn Camera,
+    sim: &KinematicSim,
+    pose: &Isometry3<f64>,
+    objects: &[Point3<f64>],
+) -> f64 {
     let reads = 3_000;
     let started = Instant::now();
     let mut sink = 0.0;
     for k in 0..reads {
         let object = &objects[k % objects.len()];
         sink += camera
-            .read_in(&pose, object, &sim.world())
+            .read_in(pose, object, &sim.world())
             .map_or(0.0, |c| c.x);
     }
     std::hint::black_box(sink);
@@ -154,6 +167,60 @@ fn world_read_rows(model: CameraModel) {
     );
 }
 
+/// The Panda of tests/data (camera on its hand; joints 1, 2 and 4 learned) at the
+/// pre-learning pose of its fitted reach space.
+fn panda_at_rest() -> KinematicSim {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/panda/panda.urdf");
+    let description = RobotDescription::load(path.as_ref(), &DescriptionOptions::default())
+        .expect("the Panda loads");
+    let settings = ArmSettings {
+        camera_link: "panda_hand".into(),
+        camera_offset: Vector3::zeros(),
+        learned_joints: ["panda_joint1", "panda_joint2", "panda_joint4"].map(String::from),
+    };
+    let arm = ArmModel::from_description(&description, &settings).expect("the Panda's arm");
+    let space = ReachSpace::fit(&arm, -0.22, 0.22)
+        .expect("a reach space")
+        .space;
+    let theta = arm
+        .solve_camera_position(&space.prelearning_goal())
+        .expect("in reach");
+    let mut sim = KinematicSim::new(arm, MoveSettings::from_degrees(90.0, 180.0));
+    sim.place(&theta).expect("inside the limits");
+    sim
+}
+
+/// The read costs on the Panda, whose collision meshes the camera sees as triangles: its
+/// own camera at the pre-learning pose (links behind the lens, as in a trial), and a camera
+/// 30 cm beside its fourth link (the elbow) looking along +y at a target 30 cm behind it,
+/// every ray near the target meeting the link's mesh.
+fn panda_read_rows(model: CameraModel) {
+    let sim = panda_at_rest();
+    let rays = RaycastCamera::new(model, 256);
+    let at = sim.camera_pose().translation.vector;
+    let below = |depth: f64, dx: f64| Point3::new(at.x + dx, at.y, at.z - depth);
+    let objects = [below(0.2, 0.0), below(0.25, 0.02), below(0.4, -0.05)];
+    println!(
+        "| raycast 256, Panda at its pre-learning pose (arm, floor) | {:.1} |",
+        micros_per_read_in(&rays, &sim, &objects)
+    );
+    let world = sim.world();
+    let (pose, shape) = world.bodies[4].expect("the Panda's link 4 has meshes");
+    let aabb = shape.compute_aabb(&pose);
+    let centre = (aabb.mins + aabb.maxs) * 0.5;
+    let look_along_y =
+        UnitQuaternion::rotation_between(&Vector3::z(), &Vector3::y()).expect("a quarter turn");
+    let beside = Isometry3::from_parts(
+        Translation3::new(centre.x, centre.y - 0.3, centre.z),
+        look_along_y,
+    );
+    let behind = [Point3::new(centre.x, centre.y + 0.3, centre.z)];
+    println!(
+        "| raycast 256, Panda's link 4 mesh between camera and target | {:.1} |",
+        micros_per_read_from(&rays, &sim, &beside, &behind)
+    );
+}
+
 fn read_cost_table() {
     let model = CameraModel::default();
     println!("| camera | µs per read |");
@@ -173,6 +240,7 @@ fn read_cost_table() {
         );
     }
     world_read_rows(model);
+    panda_read_rows(model);
 }
 
 fn main() {

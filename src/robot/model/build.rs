@@ -40,7 +40,7 @@ impl ArmModel {
     /// camera link (revolute or continuous, at most [`MAX_JOINTS`]), each body's links
     /// merged, the camera link and the links fixed below it a body of their own at the
     /// camera mount (last in the link list), the links held off the chain (fingers) in the
-    /// body they hang from, collision meshes as their convex hulls.
+    /// body they hang from, collision meshes with their convex hulls.
     pub fn from_description(
         description: &RobotDescription,
         settings: &ArmSettings,

@@ -23,7 +23,8 @@ pub struct RevoluteJoint {
     pub velocity: f64,
     /// Viscous damping (N·m·s/rad), the URDF `<dynamics damping>`; 0 when absent.
     pub damping: f64,
-    /// Dry friction (N·m), the URDF `<dynamics friction>`; 0 when absent (read, not simulated).
+    /// Dry (Coulomb) friction (N·m), the URDF `<dynamics friction>`; 0 when absent: the
+    /// dynamic simulator's joint resists turning with up to this torque.
     pub friction: f64,
 }
 

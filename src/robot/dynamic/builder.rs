@@ -1,7 +1,7 @@
 //! An arm built into a Rapier world: its bodies (the base and one per joint, each with the
 //! links merged into it) become rigid bodies with their inertials and colliders, its
 //! revolute joints one multibody (reduced coordinates) on a fixed base, each joint with its
-//! limits, damping and a position motor. The camera link rides on the last body.
+//! limits, damping, dry friction and a position motor. The camera link rides on the last body.
 
 use super::body_parts::body_parts;
 use super::colliders::collider;
@@ -117,11 +117,15 @@ impl Arm {
             *id = link_of(bodies[i + 1]).id;
         }
         if let Some(mb) = world.multibody_joints.get_multibody_mut(multibody) {
-            // Rapier gives every joint a damping of its own; the URDF's is the one to use.
+            // Rapier gives every joint a damping of its own; the URDF's is the one to use,
+            // with its dry friction (a torque bound on a zero-speed constraint, apart from
+            // the servo's motor).
             mb.damping_mut().fill(0.0);
+            mb.frictions_mut().fill(0.0);
             for (joint, &id) in model.joints().iter().zip(&link_ids) {
                 if let Some(at) = mb.link(id).map(|link| link.assembly_id()) {
                     mb.damping_mut()[at] = joint.damping;
+                    mb.frictions_mut()[at] = joint.friction;
                 }
             }
         }

@@ -120,3 +120,65 @@ impl FreeArm {
         Ok(arm.speeds() / arm.dt())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Solver iterations per step for the friction test: Rapier solves dry friction as a
+    /// bounded zero-speed constraint among the others, and with one iteration (the
+    /// simulator's default) a joint held by friction beside other held joints creeps
+    /// (0.0096 rad in 0.2 s here, a twentieth of the free fall); with 64 it creeps 1.5e-4.
+    const ITERATIONS: usize = 64;
+
+    /// The shoulder's travel (rad) in 0.2 s of a passive OSCAR-6 released at rest at `q`,
+    /// its shoulder's dry friction `shoulder` (N·m), every other joint held by a friction
+    /// far above any torque it meets.
+    fn shoulder_travel(q: &Joints, shoulder: f64) -> f64 {
+        let oscar6 = ArmModel::oscar6();
+        let mut joints = oscar6.joints().to_vec();
+        for (i, joint) in joints.iter_mut().enumerate() {
+            joint.friction = if i == 1 { shoulder } else { 1e4 };
+        }
+        let model = ArmModel::from_parts(
+            oscar6.name().to_string(),
+            joints,
+            oscar6.learned(),
+            oscar6.camera_mount(),
+            oscar6.links().to_vec(),
+        )
+        .unwrap();
+        let settings = DynamicSettings {
+            solver_iterations: ITERATIONS,
+            ..DynamicSettings::default()
+        };
+        let mut arm = FreeArm::new(model, q, settings, Drive::Passive, false, false).unwrap();
+        while arm.time() < 0.2 - 1e-9 {
+            arm.step();
+        }
+        arm.joints()[1] - q[1]
+    }
+
+    #[test]
+    fn joint_friction_holds_the_weight_below_its_torque_and_slips_above_it() {
+        let q = Joints::from_slice(&[0.0, 0.6, -0.3, 0.0, 0.5, 0.0]);
+        let oscar6 = ArmModel::oscar6();
+        let arm = Arm::build(&oscar6, &DynamicSettings::default().sanitized());
+        // The threshold: the weight's torque about the shoulder (121 N·m), from the
+        // model's masses and kinematics, not from the physics.
+        let weight = arm.weight_torques(&oscar6, &q).0[1].abs();
+        assert!(weight > 1.0, "{weight}");
+        let free = shoulder_travel(&q, 0.0);
+        assert!(free.abs() > 0.1, "{free}");
+        // Above the threshold the shoulder sticks (but for the solver's creep, the same
+        // whatever the bound); 2% below it, it slips with 2% of the free acceleration;
+        // half of it halves the acceleration (the travel from rest is ½·a·t²).
+        let stuck = shoulder_travel(&q, 1.02 * weight);
+        assert!((stuck / free).abs() < 1e-3, "{stuck} {free}");
+        assert_eq!(shoulder_travel(&q, 2.0 * weight), stuck);
+        let slip = shoulder_travel(&q, 0.98 * weight) / free;
+        assert!((slip - 0.02).abs() < 0.002, "{slip}");
+        let half = shoulder_travel(&q, 0.5 * weight) / free;
+        assert!((half - 0.5).abs() < 0.002, "{half}");
+    }
+}

@@ -4,7 +4,7 @@
 //! written here from the URDF spec.
 
 use eyehand::robot::description::{
-    Chain, DescriptionOptions, DescriptionWarning, Geometry, JointKind, RobotDescription,
+    Chain, DescriptionOptions, DescriptionWarning, JointKind, RobotDescription, Shape,
 };
 use eyehand::robot::{ArmModel, Joints, DEFAULT_URDF};
 use nalgebra::{Isometry3, Matrix3, Matrix4, Translation3, UnitQuaternion, Vector3};
@@ -147,7 +147,7 @@ fn the_panda_loads_with_its_collision_meshes_and_warns_of_its_missing_visual_one
     assert!(missing.iter().all(|f| f.contains("/visual/")));
     for link in &panda.links {
         for element in &link.collisions {
-            let Geometry::Mesh(mesh) = &element.geometry else {
+            let Shape::Mesh { mesh, .. } = &element.geometry else {
                 panic!("{}: a mesh", link.name)
             };
             let hull = mesh.hull.as_ref().expect("collision meshes have hulls");
@@ -162,7 +162,7 @@ fn the_panda_loads_with_its_collision_meshes_and_warns_of_its_missing_visual_one
         panda.link_index("panda_leftfinger"),
         panda.link_index("panda_rightfinger"),
     ];
-    let [Geometry::Mesh(left), Geometry::Mesh(right)] =
+    let [Shape::Mesh { mesh: left, .. }, Shape::Mesh { mesh: right, .. }] =
         fingers.map(|l| &panda.links[l.unwrap()].collisions[0].geometry)
     else {
         panic!("finger meshes")

@@ -3,8 +3,8 @@
 //! go on; tests match on the kinds.
 
 use eyehand::robot::description::{
-    Chain, DescriptionErrorKind as Kind, DescriptionOptions, DescriptionWarning, Geometry,
-    RobotDescription,
+    Chain, DescriptionErrorKind as Kind, DescriptionOptions, DescriptionWarning, RobotDescription,
+    Shape,
 };
 use nalgebra::{Isometry3, Vector3};
 use std::path::{Path, PathBuf};
@@ -297,7 +297,7 @@ fn a_missing_collision_mesh_becomes_a_capsule_with_a_warning() {
     let stand_in = &arm.links[1].collisions[0];
     assert_eq!(
         stand_in.geometry,
-        Geometry::Capsule {
+        Shape::Capsule {
             radius: 0.05,
             length: 0.5
         }
@@ -315,13 +315,13 @@ fn a_missing_collision_mesh_becomes_a_capsule_with_a_warning() {
     )
     .unwrap();
     assert!(arm.warnings.is_empty(), "{:?}", arm.warnings);
-    let Geometry::Mesh(mesh) = &arm.links[1].collisions[0].geometry else {
+    let Shape::Mesh { mesh, .. } = &arm.links[1].collisions[0].geometry else {
         panic!("a mesh")
     };
     assert_eq!(mesh.scale, Vector3::new(1.0, 1.0, 2.0));
     assert!(mesh.mesh.vertices.iter().any(|p| p.z == 2.0));
     assert_eq!(mesh.hull.as_ref().unwrap().triangles.len(), 4);
-    let Geometry::Mesh(visual) = &arm.links[1].visuals[0].geometry else {
+    let Shape::Mesh { mesh: visual, .. } = &arm.links[1].visuals[0].geometry else {
         panic!("a mesh")
     };
     assert!(visual.hull.is_none() && visual.mesh.vertices.iter().all(|p| p.z <= 1.0));

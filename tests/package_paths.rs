@@ -54,7 +54,7 @@ fn package_meshes_load_with_the_search_paths_and_warn_without() {
     assert_eq!(found.warnings, Vec::<String>::new());
     assert!(matches!(
         found.model.links()[5].collisions.as_slice(),
-        [(_, Shape::Hull { .. })]
+        [(_, Shape::Mesh { .. })]
     ));
 
     for (value, tried) in [

@@ -311,7 +311,7 @@ fn part((pose, shape): &(Isometry3<f64>, Shape)) -> Part {
             (along(0.5 * length, Vector3::z()), radius)
         }
         Shape::Cuboid(size) => box_capsule(pose, &Vector3::zeros(), &size),
-        Shape::Hull { centre, size, .. } => box_capsule(pose, &centre, &size),
+        Shape::Mesh { centre, size, .. } => box_capsule(pose, &centre, &size),
     };
     let (pose, shape) = measured(pose, shape);
     Part {
@@ -327,7 +327,7 @@ fn part((pose, shape): &(Isometry3<f64>, Shape)) -> Part {
 /// other shape as it is.
 fn measured(pose: &Isometry3<f64>, shape: &Shape) -> (Pose, SharedShape) {
     match shape {
-        Shape::Hull { centre, size, .. } => {
+        Shape::Mesh { centre, size, .. } => {
             parts(&(pose * Translation3::from(*centre)), &Shape::Cuboid(*size))
         }
         other => parts(pose, other),

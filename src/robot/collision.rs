@@ -109,7 +109,7 @@ pub(crate) fn reaches(model: &ArmModel, bodies: &[Elements]) -> [f64; MAX_JOINTS
                 Shape::Cylinder { radius, length } | Shape::Capsule { radius, length } => {
                     radius + 0.5 * length
                 }
-                Shape::Hull { centre, size, .. } => centre.norm() + 0.5 * size.norm(),
+                Shape::Mesh { centre, size, .. } => centre.norm() + 0.5 * size.norm(),
             }
     };
     let shapes = bodies.iter().flatten().map(extent).fold(0.0, f64::max);
@@ -229,7 +229,7 @@ fn lowest_z(pose: &Isometry3<f64>, shape: &Shape) -> f64 {
         }
         Shape::Cylinder { radius, length } => centre - 0.5 * length * axis_z - radius * across,
         Shape::Capsule { radius, length } => centre - 0.5 * length * axis_z - radius,
-        Shape::Hull { centre, size, .. } => {
+        Shape::Mesh { centre, size, .. } => {
             lowest_z(&(pose * Translation3::from(centre)), &Shape::Cuboid(size))
         }
     }

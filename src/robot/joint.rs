@@ -1,8 +1,7 @@
 //! The parts of the URDF the simulators use: revolute joints and link bodies.
 
-use super::description::TriangleMesh;
-use nalgebra::{Isometry3, Matrix3, Point3, Unit, Vector3};
-use std::sync::Arc;
+use super::description::Shape;
+use nalgebra::{Isometry3, Matrix3, Unit, Vector3};
 
 /// A revolute joint of the arm, as its URDF element gives it (SI units).
 #[derive(Debug, Clone, PartialEq)]
@@ -70,63 +69,4 @@ pub struct LinkBody {
     pub inertia: Matrix3<f64>,
     /// Collision shapes with their poses in the link frame.
     pub collisions: Vec<(Isometry3<f64>, Shape)>,
-}
-
-/// A collision shape of a link: the URDF's primitives, or a collision mesh with its convex
-/// hull.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Shape {
-    /// A box with these full side lengths (m).
-    Cuboid(Vector3<f64>),
-    /// A cylinder along the local z axis.
-    Cylinder {
-        /// Radius (m).
-        radius: f64,
-        /// Length (m).
-        length: f64,
-    },
-    /// A capsule along the local z axis.
-    Capsule {
-        /// Radius (m).
-        radius: f64,
-        /// Length of the cylindrical part (m).
-        length: f64,
-    },
-    /// A ball.
-    Sphere {
-        /// Radius (m).
-        radius: f64,
-    },
-    /// A collision mesh: the ray-cast camera sees its triangles, the physics' contacts its
-    /// convex hull, the floor and contact rules the hull's bounding box.
-    Hull {
-        /// The mesh's own triangles in the element's frame (m).
-        triangles: Arc<TriangleMesh>,
-        /// Their hull, a closed convex mesh in the element's frame (m).
-        mesh: Arc<TriangleMesh>,
-        /// The centre of its bounding box in the element's frame (m).
-        centre: Vector3<f64>,
-        /// The bounding box's side lengths (m).
-        size: Vector3<f64>,
-    },
-}
-
-impl Shape {
-    /// The collision mesh `triangles` with its convex hull `mesh` (closed, convex, in the
-    /// element's frame) and the hull's bounding box.
-    pub fn hull(triangles: Arc<TriangleMesh>, mesh: Arc<TriangleMesh>) -> Shape {
-        let (low, high) = mesh.vertices.iter().fold(
-            (
-                Point3::from([f64::INFINITY; 3]),
-                Point3::from([f64::NEG_INFINITY; 3]),
-            ),
-            |(low, high), p| (low.inf(p), high.sup(p)),
-        );
-        Shape::Hull {
-            centre: nalgebra::center(&low, &high).coords,
-            size: high - low,
-            triangles,
-            mesh,
-        }
-    }
 }

@@ -21,10 +21,10 @@ mod urdf;
 mod world;
 
 pub use collision::DEFAULT_FLOOR_Z;
-pub use description::{Chain, DescriptionError, DescriptionOptions, RobotDescription};
+pub use description::{Chain, DescriptionError, DescriptionOptions, RobotDescription, Shape};
 pub use dynamic::{Drive, DynamicSettings, DynamicSim, FreeArm, SimCounters};
 pub use error::RobotError;
-pub use joint::{LinkBody, RevoluteJoint, Shape};
+pub use joint::{LinkBody, RevoluteJoint};
 pub use joint_vector::{Joints, MAX_JOINTS};
 pub use kinematic::KinematicSim;
 pub use model::{ArmModel, ArmPose, ArmSettings, Controlled, Frames, Wrist};

@@ -11,14 +11,12 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-/// A shape in a geometry element's frame (m).
+/// A shape in a geometry element's frame (m): the one shape type of eyehand, the
+/// description's visual and collision elements and the arm model's collision shapes.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Geometry {
-    /// A box with these full side lengths.
-    Box {
-        /// Side lengths along x, y, z.
-        size: Vector3<f64>,
-    },
+pub enum Shape {
+    /// A box with these full side lengths along x, y, z.
+    Cuboid(Vector3<f64>),
     /// A cylinder along z, centred on the origin.
     Cylinder {
         /// Radius.
@@ -38,8 +36,36 @@ pub enum Geometry {
         /// Radius.
         radius: f64,
     },
-    /// A triangle mesh read from a file.
-    Mesh(MeshGeometry),
+    /// A triangle mesh read from a file. As a collision element the ray-cast camera sees
+    /// its triangles, the physics' contacts its convex hull, the floor and contact rules
+    /// the hull's bounding box.
+    Mesh {
+        /// The mesh as read, with its hull.
+        mesh: Arc<MeshGeometry>,
+        /// The centre of the bounding box of its hull (of the mesh itself when it has no
+        /// hull).
+        centre: Vector3<f64>,
+        /// That box's side lengths.
+        size: Vector3<f64>,
+    },
+}
+
+impl Shape {
+    /// The shape of `mesh`, with the bounding box of its hull (of the mesh without one).
+    pub fn mesh(mesh: MeshGeometry) -> Shape {
+        let (low, high) = mesh.hull_or_mesh().vertices.iter().fold(
+            (
+                Point3::from([f64::INFINITY; 3]),
+                Point3::from([f64::NEG_INFINITY; 3]),
+            ),
+            |(low, high), p| (low.inf(p), high.sup(p)),
+        );
+        Shape::Mesh {
+            centre: nalgebra::center(&low, &high).coords,
+            size: high - low,
+            mesh: Arc::new(mesh),
+        }
+    }
 }
 
 /// A mesh read from an OBJ or STL file, already scaled.
@@ -57,13 +83,20 @@ pub struct MeshGeometry {
     pub hull: Option<Arc<TriangleMesh>>,
 }
 
+impl MeshGeometry {
+    /// The hull, or the mesh itself when it has none (a visual mesh).
+    pub fn hull_or_mesh(&self) -> &Arc<TriangleMesh> {
+        self.hull.as_ref().unwrap_or(&self.mesh)
+    }
+}
+
 /// A shape placed in a link.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GeometryElement {
     /// The shape's frame in the link frame.
     pub origin: Isometry3<f64>,
     /// The shape.
-    pub geometry: Geometry,
+    pub geometry: Shape,
 }
 
 /// Reads the geometry of a robot's links, sharing meshes and collecting warnings.
@@ -107,7 +140,7 @@ impl<'a> GeometryReader<'a> {
             let geometry = match &visual.geometry {
                 urdf_rs::Geometry::Mesh { filename, scale } => {
                     match self.mesh(&link.name, filename, scale.as_ref(), false)? {
-                        Some(mesh) => Geometry::Mesh(mesh),
+                        Some(mesh) => Shape::mesh(mesh),
                         None => continue,
                     }
                 }
@@ -136,7 +169,7 @@ impl<'a> GeometryReader<'a> {
                     match self.mesh(&link.name, filename, scale.as_ref(), true)? {
                         Some(mesh) => GeometryElement {
                             origin,
-                            geometry: Geometry::Mesh(mesh),
+                            geometry: Shape::mesh(mesh),
                         },
                         None => self.stand_in(&link.name, filename, child_origins),
                     }
@@ -241,33 +274,27 @@ impl<'a> GeometryReader<'a> {
         };
         GeometryElement {
             origin: Isometry3::from_parts(Translation3::from(far / 2.0), turn),
-            geometry: Geometry::Capsule { radius, length },
+            geometry: Shape::Capsule { radius, length },
         }
     }
 }
 
-fn primitive_shape(geometry: &urdf_rs::Geometry, link: &str) -> Result<Geometry, Kind> {
+fn primitive_shape(geometry: &urdf_rs::Geometry, link: &str) -> Result<Shape, Kind> {
     let (shape, name, sizes) = match *geometry {
-        urdf_rs::Geometry::Box { size } => (
-            Geometry::Box {
-                size: Vector3::from(size.0),
-            },
-            "box",
-            size.0.to_vec(),
-        ),
+        urdf_rs::Geometry::Box { size } => {
+            (Shape::Cuboid(Vector3::from(size.0)), "box", size.0.to_vec())
+        }
         urdf_rs::Geometry::Cylinder { radius, length } => (
-            Geometry::Cylinder { radius, length },
+            Shape::Cylinder { radius, length },
             "cylinder",
             vec![radius, length],
         ),
         urdf_rs::Geometry::Capsule { radius, length } => (
-            Geometry::Capsule { radius, length },
+            Shape::Capsule { radius, length },
             "capsule",
             vec![radius, length],
         ),
-        urdf_rs::Geometry::Sphere { radius } => {
-            (Geometry::Sphere { radius }, "sphere", vec![radius])
-        }
+        urdf_rs::Geometry::Sphere { radius } => (Shape::Sphere { radius }, "sphere", vec![radius]),
         urdf_rs::Geometry::Mesh { .. } => unreachable!("meshes are read by GeometryReader::mesh"),
     };
     if sizes.iter().all(|s| s.is_finite() && *s > 0.0) {

@@ -17,7 +17,7 @@ mod warning;
 
 pub use chain::{Chain, ChainBody, ChainJoint, HeldJoint};
 pub use error::{DescriptionError, DescriptionErrorKind};
-pub use geometry::{Geometry, GeometryElement, MeshGeometry};
+pub use geometry::{GeometryElement, MeshGeometry, Shape};
 pub use inertia::Inertial;
 pub use joint::{Joint, JointDynamics, JointKind, JointLimits};
 pub use link::Link;

@@ -49,12 +49,11 @@ pub(in crate::robot) fn parts(
             (to_pose(pose), SharedShape::capsule_z(0.5 * length, radius))
         }
         Shape::Sphere { radius } => (to_pose(pose), SharedShape::ball(radius)),
-        Shape::Hull {
+        Shape::Mesh {
             ref mesh,
             centre,
             size,
-            ..
-        } => match convex(mesh) {
+        } => match convex(mesh.hull_or_mesh()) {
             Some(hull) => (to_pose(pose), hull),
             None => parts(&(pose * Translation3::from(centre)), &Shape::Cuboid(size)),
         },
@@ -72,6 +71,7 @@ fn convex(mesh: &TriangleMesh) -> Option<SharedShape> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::robot::description::MeshGeometry;
 
     #[test]
     fn urdf_cylinders_lie_along_their_z_axis() {
@@ -100,7 +100,13 @@ mod tests {
         };
         let (_, shape) = parts(
             &Isometry3::identity(),
-            &Shape::hull(tetrahedron.clone().into(), tetrahedron.into()),
+            &Shape::mesh(MeshGeometry {
+                filename: "tetrahedron.obj".into(),
+                path: "tetrahedron.obj".into(),
+                scale: Vector3::repeat(1.0),
+                mesh: tetrahedron.clone().into(),
+                hull: Some(tetrahedron.into()),
+            }),
         );
         let polyhedron = shape.as_convex_polyhedron().expect("a convex polyhedron");
         assert_eq!(polyhedron.points().len(), 4);

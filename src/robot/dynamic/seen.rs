@@ -25,22 +25,22 @@ type Triangles = (Vec<Vector>, Vec<[u32; 3]>);
 pub(in crate::robot) fn compound(elements: &[(Isometry3<f64>, Shape)]) -> SharedShape {
     if !elements
         .iter()
-        .any(|(_, shape)| matches!(shape, Shape::Hull { .. }))
+        .any(|(_, shape)| matches!(shape, Shape::Mesh { .. }))
     {
         return contact_compound(elements);
     }
     let (mut vertices, mut indices): Triangles = (Vec::new(), Vec::new());
     for (pose, shape) in elements {
         let (at, (points, triangles)) = match shape {
-            Shape::Hull { triangles, .. } => (
+            Shape::Mesh { mesh, .. } => (
                 to_pose(pose),
                 (
-                    triangles
+                    mesh.mesh
                         .vertices
                         .iter()
                         .map(|p| to_vector(&p.coords))
                         .collect(),
-                    triangles.triangles.clone(),
+                    mesh.mesh.triangles.clone(),
                 ),
             ),
             primitive => {
@@ -75,7 +75,7 @@ fn triangulate(shape: &SharedShape) -> Triangles {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::robot::description::{MeshFormat, TriangleMesh};
+    use crate::robot::description::{MeshFormat, MeshGeometry, TriangleMesh};
     use crate::robot::{WorldView, SEEN_BODIES};
     use nalgebra::{Point3, Vector3};
     use rapier3d_f64::math::Pose;
@@ -87,14 +87,19 @@ mod tests {
     /// contacts do.
     fn u_block() -> (SharedShape, SharedShape) {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/concave/u_block.obj");
-        let mesh = TriangleMesh::read(&path, MeshFormat::Obj, &Vector3::repeat(1.0)).unwrap();
+        let scale = Vector3::repeat(1.0);
+        let mesh = TriangleMesh::read(&path, MeshFormat::Obj, &scale).unwrap();
         let hull = mesh.convex_hull().unwrap();
+        let u_block = MeshGeometry {
+            filename: "u_block.obj".into(),
+            path,
+            scale,
+            mesh: Arc::new(mesh),
+            hull: Some(Arc::new(hull)),
+        };
         let ball = Isometry3::translation(-0.2, 0.05, 0.1);
         let elements = [
-            (
-                Isometry3::identity(),
-                Shape::hull(Arc::new(mesh), Arc::new(hull)),
-            ),
+            (Isometry3::identity(), Shape::mesh(u_block)),
             (ball, Shape::Sphere { radius: 0.05 }),
         ];
         (compound(&elements), contact_compound(&elements))

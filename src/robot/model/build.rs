@@ -3,13 +3,13 @@
 
 use super::ArmModel;
 use crate::robot::description::{
-    Chain, ChainBody, DescriptionError, DescriptionErrorKind as Kind, Geometry, GeometryElement,
-    Inertial, JointKind, RobotDescription,
+    Chain, ChainBody, DescriptionError, DescriptionErrorKind as Kind, GeometryElement, Inertial,
+    JointKind, RobotDescription,
 };
-use crate::robot::joint::{LinkBody, RevoluteJoint, Shape};
+use crate::robot::joint::{LinkBody, RevoluteJoint};
+use crate::robot::Shape;
 use crate::robot::MAX_JOINTS;
 use nalgebra::{Isometry3, Translation3, Vector3};
-use std::sync::Arc;
 
 /// Which part of a robot description is the arm, and where its camera sits.
 #[derive(Debug, Clone, PartialEq)]
@@ -188,24 +188,7 @@ fn with_held_links(
     links
 }
 
-/// A collision element posed in its body: primitives as they are, a mesh with its convex hull.
+/// A collision element posed in its body.
 fn collision_shape(pose: &Isometry3<f64>, element: &GeometryElement) -> (Isometry3<f64>, Shape) {
-    let at = pose * element.origin;
-    let shape = match &element.geometry {
-        Geometry::Box { size } => Shape::Cuboid(*size),
-        Geometry::Cylinder { radius, length } => Shape::Cylinder {
-            radius: *radius,
-            length: *length,
-        },
-        Geometry::Capsule { radius, length } => Shape::Capsule {
-            radius: *radius,
-            length: *length,
-        },
-        Geometry::Sphere { radius } => Shape::Sphere { radius: *radius },
-        Geometry::Mesh(mesh) => Shape::hull(
-            Arc::clone(&mesh.mesh),
-            Arc::clone(mesh.hull.as_ref().unwrap_or(&mesh.mesh)),
-        ),
-    };
-    (at, shape)
+    (pose * element.origin, element.geometry.clone())
 }

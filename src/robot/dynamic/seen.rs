@@ -1,7 +1,7 @@
 //! What the ray-cast camera's rays meet of a body: its collision elements with each
 //! collision mesh as its own triangles, where the physics' contacts take the mesh's convex
-//! hull. A ray through a concavity of a link (between the Panda's fingers, inside the
-//! hull but outside the mesh) passes.
+//! hull. A ray through a concavity of a link (a notch: inside the hull, outside the
+//! mesh) passes.
 
 use super::colliders::{contact_compound, parts};
 use super::convert::{to_pose, to_vector};

@@ -17,6 +17,8 @@ pub const DEFAULT_FLOOR_Z: f64 = -0.22;
 const MIN_MARCH: f64 = 1e-3;
 /// Bisection steps that find where a move meets the floor (1e-12 of a move).
 const FLOOR_BISECTIONS: usize = 40;
+/// The room (m) the bound of a whole move must leave above the floor to skip the march.
+const FLOOR_MARGIN: f64 = 1e-9;
 
 /// Collision elements of a body: shapes and their poses in the body's frame.
 pub(crate) type Elements = Vec<(Isometry3<f64>, Shape)>;
@@ -63,7 +65,15 @@ fn lowest_of(frames: &Frames, bodies: &[Elements]) -> f64 {
     frames
         .iter()
         .zip(bodies)
-        .flat_map(|(frame, elements)| elements.iter().map(move |(p, s)| lowest_z(&(frame * p), s)))
+        .map(|(frame, elements)| lowest_of_link(frame, elements))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The lowest z (m) of a link's collision `elements` with the link placed at `frame`.
+fn lowest_of_link(frame: &Isometry3<f64>, elements: &Elements) -> f64 {
+    elements
+        .iter()
+        .map(|(p, s)| lowest_z(&(frame * p), s))
         .fold(f64::INFINITY, f64::min)
 }
 
@@ -97,10 +107,29 @@ impl MoveStart {
     }
 }
 
-/// How far any point of the arm beyond each joint can be from that joint's axis (m): the
-/// later joint origins, the camera mount and the largest collision element's reach added up.
-/// A turn of joint j by δ rad moves no point of the arm by more than `reaches[j]` times δ.
-pub(crate) fn reaches(model: &ArmModel, bodies: &[Elements]) -> [f64; MAX_JOINTS] {
+/// How far points of the arm can be from the joints' axes (m), for the floor rule's bounds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Reaches {
+    /// `joint[j]`: any point beyond joint j — the later joint origins, the camera mount and
+    /// the largest collision element's reach added up. A turn of joint j by δ rad moves no
+    /// point of the arm by more than `joint[j]` times δ.
+    pub joint: [f64; MAX_JOINTS],
+    /// `body[j][k]` (j < k): any point of link k (`bodies[k - 1]`) — the joint origins
+    /// from joint j + 1 to joint k - 1 and link k's own farthest element.
+    pub body: [[f64; MAX_JOINTS + 1]; MAX_JOINTS],
+}
+
+impl Default for Reaches {
+    fn default() -> Reaches {
+        Reaches {
+            joint: [0.0; MAX_JOINTS],
+            body: [[0.0; MAX_JOINTS + 1]; MAX_JOINTS],
+        }
+    }
+}
+
+/// How far any point of the arm, and of each link, can be from each joint's axis (m).
+pub(crate) fn reaches(model: &ArmModel, bodies: &[Elements]) -> Reaches {
     let extent = |(pose, shape): &(Isometry3<f64>, Shape)| {
         pose.translation.vector.norm()
             + match *shape {
@@ -119,7 +148,17 @@ pub(crate) fn reaches(model: &ArmModel, bodies: &[Elements]) -> [f64; MAX_JOINTS
         .iter()
         .map(|j| j.origin.translation.vector.norm());
     let origins: Vec<f64> = origins.collect();
-    std::array::from_fn(|j| origins.iter().skip(j + 1).sum::<f64>() + tail)
+    let own = |k: usize| bodies[k - 1].iter().map(extent).fold(0.0, f64::max);
+    let mut body = [[0.0; MAX_JOINTS + 1]; MAX_JOINTS];
+    for k in 1..=bodies.len() {
+        for (j, row) in body.iter_mut().enumerate().take(k) {
+            row[k] = origins[j + 1..k].iter().sum::<f64>() + own(k);
+        }
+    }
+    Reaches {
+        joint: std::array::from_fn(|j| origins.iter().skip(j + 1).sum::<f64>() + tail),
+        body,
+    }
 }
 
 /// How far (rad) each joint of the chain can turn in the move by `delta`: the learned joints
@@ -140,8 +179,19 @@ pub(crate) fn joint_turns(model: &ArmModel, delta: &Controlled) -> [f64; MAX_JOI
 /// each joint's turn ([`joint_turns`]) times its reach. The first joint's axis is fixed in
 /// the world: a turn about it lowers a point by at most its reach times the sine of the
 /// axis's angle to the vertical (nothing for a base yaw).
-fn sinking_speed(model: &ArmModel, reaches: &[f64; MAX_JOINTS], delta: &Controlled) -> f64 {
-    let turns = joint_turns(model, delta);
+fn sinking_speed(model: &ArmModel, reaches: &Reaches, delta: &Controlled) -> f64 {
+    sinking_speeds(model, &joint_turns(model, delta), |joint| {
+        reaches.joint[joint]
+    })
+}
+
+/// How fast (m per unit fraction of the move) points as far as `reach(j)` from each joint
+/// j's axis can sink when the joints turn by `turns` (see [`sinking_speed`]).
+fn sinking_speeds(
+    model: &ArmModel,
+    turns: &[f64; MAX_JOINTS],
+    reach: impl Fn(usize) -> f64,
+) -> f64 {
     let first = &model.joints()[0];
     let first_tilt = (first.origin.rotation * first.axis.into_inner())
         .cross(&Vector3::z())
@@ -149,9 +199,41 @@ fn sinking_speed(model: &ArmModel, reaches: &[f64; MAX_JOINTS], delta: &Controll
     (0..model.dof())
         .map(|joint| {
             let tilt = if joint == 0 { first_tilt } else { 1.0 };
-            turns[joint] * reaches[joint] * tilt
+            turns[joint] * reach(joint) * tilt
         })
         .sum()
+}
+
+/// Whether no link can get below `floor` (m) anywhere in the move by `delta` up to
+/// fraction `up_to`, judged at once from the start: each link's lowest point there less how
+/// far that link can sink over the move (its joints' turns times its own reaches), with
+/// [`FLOOR_MARGIN`] to spare. The march finds no crossing where this holds.
+fn clear_of_floor(
+    model: &ArmModel,
+    bodies: &[Elements],
+    reaches: &Reaches,
+    start: &MoveStart,
+    delta: &Controlled,
+    up_to: f64,
+    floor: f64,
+) -> bool {
+    let turns = joint_turns(model, delta);
+    start
+        .frames
+        .iter()
+        .zip(bodies)
+        .enumerate()
+        .all(|(i, (frame, elements))| {
+            let k = i + 1;
+            let sinking = sinking_speeds(model, &turns, |joint| {
+                if joint < k {
+                    reaches.body[joint][k]
+                } else {
+                    0.0
+                }
+            });
+            lowest_of_link(frame, elements) - sinking * up_to - floor > FLOOR_MARGIN
+        })
 }
 
 /// How far along the controlled move from every joint at `start` by `delta`
@@ -163,7 +245,7 @@ fn sinking_speed(model: &ArmModel, reaches: &[f64; MAX_JOINTS], delta: &Controll
 pub(crate) fn floor_stop(
     model: &ArmModel,
     bodies: &[Elements],
-    reaches: &[f64; MAX_JOINTS],
+    reaches: &Reaches,
     start: &MoveStart,
     delta: &Controlled,
     up_to: f64,
@@ -181,6 +263,10 @@ pub(crate) fn floor_stop(
             f64::NAN
         }
     };
+    if start.pose.wrist_found && clear_of_floor(model, bodies, reaches, start, delta, up_to, floor)
+    {
+        return up_to;
+    }
     let speed = sinking_speed(model, reaches, delta);
     let mut s = 0.0;
     let mut gap = if start.pose.wrist_found {
@@ -353,7 +439,7 @@ mod tests {
     }
 
     #[test]
-    fn no_point_of_the_arm_sinks_faster_than_the_march_assumes() {
+    fn no_point_of_the_arm_or_of_a_link_sinks_faster_than_the_bounds_assume() {
         use rand::{Rng, SeedableRng};
         let model = ArmModel::oscar6();
         let bodies: Vec<_> = (1..=6).map(|k| body_elements(&model, k)).collect();
@@ -371,19 +457,34 @@ mod tests {
         for _ in 0..200 {
             let (from, to) = (draw(), draw());
             let delta = to - from;
-            let speed = sinking_speed(&model, &reaches, &delta);
-            let lowest =
-                |s: f64| lowest_point(&model, &bodies, &model.pose_of(&(from + delta * s)).joints);
+            let turns = joint_turns(&model, &delta);
+            // The whole arm's bound, then each link's own (link k: `bodies[k - 1]`).
+            let mut speeds = vec![sinking_speed(&model, &reaches, &delta)];
+            speeds.extend((1..=6).map(|k| {
+                sinking_speeds(
+                    &model,
+                    &turns,
+                    |j| if j < k { reaches.body[j][k] } else { 0.0 },
+                )
+            }));
+            let lowest = |s: f64| {
+                let frames = model.link_frames(&model.pose_of(&(from + delta * s)).joints);
+                let mut lows = vec![lowest_of(&frames, &bodies)];
+                lows.extend((0..6).map(|k| lowest_of_link(&frames[k], &bodies[k])));
+                lows
+            };
             let steps = 200;
             let mut before = lowest(0.0);
             for k in 1..=steps {
                 let now = lowest(k as f64 / steps as f64);
-                assert!(
-                    before - now <= speed / steps as f64 + 1e-12,
-                    "from {from:?} by {delta:?}: sank {} m in a step, bound {}",
-                    before - now,
-                    speed / steps as f64
-                );
+                for (i, speed) in speeds.iter().enumerate() {
+                    assert!(
+                        before[i] - now[i] <= speed / steps as f64 + 1e-12,
+                        "from {from:?} by {delta:?}: part {i} sank {} m in a step, bound {}",
+                        before[i] - now[i],
+                        speed / steps as f64
+                    );
+                }
                 before = now;
             }
         }

@@ -2,14 +2,14 @@
 //! is instant in wall time; its simulated duration follows the trapezoidal profile.
 
 use super::clearance::ArmGeometry;
-use super::collision::{body_elements, floor_stop, reaches, Elements, MoveStart};
+use super::collision::{body_elements, floor_stop, reaches, Elements, MoveStart, Reaches};
 use super::dynamic::compound;
 use super::model::{ArmModel, Controlled};
 use super::motion::{limit_stop_fraction, TrapezoidProfile};
 use super::simulator::{MoveReport, MoveSettings, SimWork, Simulator};
 use super::world::{Obstacle, WorldView, SEEN_BODIES};
+use super::Joints;
 use super::RobotError;
-use super::{Joints, MAX_JOINTS};
 use nalgebra::{Isometry3, Vector3};
 use rapier3d_f64::parry::shape::SharedShape;
 
@@ -26,7 +26,7 @@ pub struct KinematicSim {
     /// Each link's collision elements (link 1 first) and how far the arm reaches beyond each
     /// joint, for the floor.
     collision: Vec<Elements>,
-    reaches: [f64; MAX_JOINTS],
+    reaches: Reaches,
     /// The bodies a camera sees (the base and every joint's body but the last) as parry
     /// shapes, for [`WorldView`].
     seen_shapes: [Option<SharedShape>; SEEN_BODIES],
@@ -51,7 +51,7 @@ impl KinematicSim {
             joints: pose.joints,
             camera: pose.camera,
             collision: Default::default(),
-            reaches: [0.0; MAX_JOINTS],
+            reaches: Reaches::default(),
             seen_shapes: Default::default(),
             obstacles: Vec::new(),
             geometry: ArmGeometry::default(),

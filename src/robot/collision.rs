@@ -78,31 +78,25 @@ fn lowest_of_link(frame: &Isometry3<f64>, elements: &Elements) -> f64 {
 }
 
 /// The arm where a move starts, as the floor and contact rules first look at it: the
-/// controlled angles, the pose solved from them (as at fraction 0 of the move, warm-started
-/// from the joints the arm is at) and its link frames — worked out once for both rules.
+/// controlled angles, the pose solved from them and its link frames — worked out once, when
+/// the arm got there (the kinematic simulator keeps them between moves).
 #[derive(Debug, Clone)]
 pub(crate) struct MoveStart {
-    /// The joints the arm is at.
-    pub joints: Joints,
     /// Its controlled (learned) angles.
     pub theta: Controlled,
-    /// The pose at fraction 0 of the move.
+    /// The pose (every joint, the camera).
     pub pose: ArmPose,
     /// That pose's link frames.
     pub frames: Frames,
 }
 
 impl MoveStart {
-    /// The start of the move by `delta` from `joints`.
-    pub(crate) fn new(model: &ArmModel, joints: &Joints, delta: &Controlled) -> MoveStart {
-        let theta = model.controlled_of(joints);
-        let pose = model.pose_near(&(theta + delta * 0.0), joints);
-        let frames = model.link_frames(&pose.joints);
+    /// The arm at `pose`, which `model` solved for its controlled angles.
+    pub(crate) fn at(model: &ArmModel, pose: ArmPose) -> MoveStart {
         MoveStart {
-            joints: *joints,
-            theta,
+            theta: model.controlled_of(&pose.joints),
+            frames: model.link_frames(&pose.joints),
             pose,
-            frames,
         }
     }
 }
@@ -253,7 +247,7 @@ pub(crate) fn floor_stop(
 ) -> f64 {
     let theta = &start.theta;
     // A numerical wrist starts from the last pose looked at.
-    let near = std::cell::Cell::new(start.joints);
+    let near = std::cell::Cell::new(start.pose.joints);
     let clearance = |s: f64| {
         let pose = model.pose_near(&(theta + delta * s), &near.get());
         if pose.wrist_found {

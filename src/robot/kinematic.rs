@@ -4,7 +4,7 @@
 use super::clearance::ArmGeometry;
 use super::collision::{body_elements, floor_stop, reaches, Elements, MoveStart, Reaches};
 use super::dynamic::compound;
-use super::model::{ArmModel, Controlled};
+use super::model::{ArmModel, Controlled, Frames};
 use super::motion::{limit_stop_fraction, TrapezoidProfile};
 use super::simulator::{MoveReport, MoveSettings, SimWork, Simulator};
 use super::world::{Obstacle, WorldView, SEEN_BODIES};
@@ -21,8 +21,8 @@ const WRIST_LIMIT_BISECTIONS: usize = 40;
 pub struct KinematicSim {
     model: ArmModel,
     settings: MoveSettings,
-    theta: Controlled,
-    joints: Joints,
+    /// The arm as it is now: its angles, pose and link frames, where the next move starts.
+    here: MoveStart,
     /// Each link's collision elements (link 1 first) and how far the arm reaches beyond each
     /// joint, for the floor.
     collision: Vec<Elements>,
@@ -35,21 +35,17 @@ pub struct KinematicSim {
     /// The bodies for the self-collision and obstacle rule.
     geometry: ArmGeometry,
     work: SimWork,
-    /// The camera's pose at `joints`, kept with them.
-    camera: Isometry3<f64>,
 }
 
 impl KinematicSim {
     /// A simulator of `model`, resting at the pose closest to zero inside the limits.
     pub fn new(model: ArmModel, settings: MoveSettings) -> KinematicSim {
         let theta = model.controlled_of(&model.rest());
-        let pose = model.pose_of(&theta);
+        let here = MoveStart::at(&model, model.pose_of(&theta));
         let mut sim = KinematicSim {
             model,
             settings,
-            theta,
-            joints: pose.joints,
-            camera: pose.camera,
+            here,
             collision: Default::default(),
             reaches: Reaches::default(),
             seen_shapes: Default::default(),
@@ -91,10 +87,8 @@ impl KinematicSim {
 
     /// Puts the arm at `theta` (inside the limits).
     fn set_pose(&mut self, theta: Controlled) {
-        let pose = self.model.pose_near(&theta, &self.joints);
-        self.theta = theta;
-        self.joints = pose.joints;
-        self.camera = pose.camera;
+        let pose = self.model.pose_near(&theta, &self.here.pose.joints);
+        self.here = MoveStart::at(&self.model, pose);
     }
 
     fn limits(&self) -> (Vector3<f64>, Vector3<f64>) {
@@ -114,7 +108,7 @@ impl KinematicSim {
             let middle = 0.5 * (inside + outside);
             let pose = self
                 .model
-                .pose_near(&(self.theta + delta * middle), &self.joints);
+                .pose_near(&(self.here.theta + delta * middle), &self.here.pose.joints);
             if self.model.wrist_fits(&pose) {
                 inside = middle;
             } else {
@@ -140,9 +134,7 @@ impl Simulator for KinematicSim {
         {
             return Err(RobotError::InsideObstacle { link, obstacle });
         }
-        self.joints = joints;
-        self.theta = *theta;
-        self.camera = pose.camera;
+        self.here = MoveStart::at(&self.model, pose);
         Ok(())
     }
 
@@ -159,34 +151,34 @@ impl Simulator for KinematicSim {
             return report;
         }
         let (lower, upper) = self.limits();
-        let mut fraction = limit_stop_fraction(&self.theta, delta, &lower, &upper);
+        let theta = self.here.theta;
+        let mut fraction = limit_stop_fraction(&theta, delta, &lower, &upper);
         if fraction < 1.0 {
             report.stopped_by_limit = (0..3)
                 .find(|&i| {
-                    let end = self.theta[i] + delta[i] * fraction;
+                    let end = theta[i] + delta[i] * fraction;
                     (end - lower[i]).abs() < 1e-12 || (end - upper[i]).abs() < 1e-12
                 })
                 .map(|i| self.model.learned()[i]);
         }
-        let end = self.theta + delta * fraction;
-        let mut end_pose = self.model.pose_near(&end, &self.joints);
+        let end = theta + delta * fraction;
+        let mut end_pose = self.model.pose_near(&end, &self.here.pose.joints);
         if !self.model.wrist_fits(&end_pose) {
             report.stopped_by_limit = Some(self.model.wrist_joint_at_fault(&end_pose));
             fraction = self.wrist_stop(delta, fraction);
         }
-        let start = MoveStart::new(&self.model, &self.joints, delta);
         let floor = floor_stop(
             &self.model,
             &self.collision,
             &self.reaches,
-            &start,
+            &self.here,
             delta,
             fraction,
             self.settings.floor_z,
         );
         let touch = self.geometry.contact_stop(
             &self.model,
-            &start,
+            &self.here,
             delta,
             floor.min(fraction),
             &self.obstacles,
@@ -197,20 +189,17 @@ impl Simulator for KinematicSim {
             report.stopped_by_contact = true;
             self.work.contact_stops += 1;
         }
-        let before = self.theta;
-        let after = (self.theta + delta * fraction).sup(&lower).inf(&upper);
+        let after = (theta + delta * fraction).sup(&lower).inf(&upper);
         // (Bit for bit: a zero's sign could change the pose's last bits.)
         if after
             .iter()
             .zip(end.iter())
             .any(|(a, b)| a.to_bits() != b.to_bits())
         {
-            end_pose = self.model.pose_near(&after, &self.joints);
+            end_pose = self.model.pose_near(&after, &self.here.pose.joints);
         }
-        self.theta = after;
-        self.joints = end_pose.joints;
-        self.camera = end_pose.camera;
-        let executed = self.theta - before;
+        self.here = MoveStart::at(&self.model, end_pose);
+        let executed = after - theta;
         report.executed = executed;
         report.duration =
             TrapezoidProfile::new(executed.amax(), self.settings.speed, self.settings.accel)
@@ -221,16 +210,16 @@ impl Simulator for KinematicSim {
     }
 
     fn joints(&self) -> Joints {
-        self.joints
+        self.here.pose.joints
     }
 
     fn camera_pose(&self) -> Isometry3<f64> {
-        self.camera
+        self.here.pose.camera
     }
 
     fn stretch_link(&mut self, link: usize, delta_m: f64) -> Result<(), RobotError> {
         self.model.stretch_link(link, delta_m)?;
-        self.set_pose(self.theta);
+        self.set_pose(self.here.theta);
         self.refresh_collision();
         Ok(())
     }
@@ -238,7 +227,7 @@ impl Simulator for KinematicSim {
     fn rotate_camera(&mut self, angle: f64) {
         if angle.is_finite() {
             self.model.rotate_camera(angle);
-            self.set_pose(self.theta);
+            self.set_pose(self.here.theta);
             self.refresh_collision();
         }
     }
@@ -248,14 +237,18 @@ impl Simulator for KinematicSim {
     }
 
     fn world(&self) -> WorldView<'_> {
-        self.world_at(&self.joints)
+        self.world_placed(&self.here.frames)
     }
 }
 
 impl KinematicSim {
     /// The world as the camera sees it (see [`Simulator::world`]) with the arm at pose `q`.
     pub fn world_at(&self, q: &Joints) -> WorldView<'_> {
-        let frames = self.model.link_frames(q);
+        self.world_placed(&self.model.link_frames(q))
+    }
+
+    /// The world as the camera sees it with the links placed at `frames`.
+    fn world_placed(&self, frames: &Frames) -> WorldView<'_> {
         let poses = std::array::from_fn(|k| match k {
             0 => Isometry3::identity(),
             _ => frames.iter().nth(k - 1).copied().unwrap_or_default(),

@@ -332,7 +332,7 @@ impl TrialLoop {
             let object = goal - Vector3::z() * model.standoff;
             let inside = |o: &crate::robot::Obstacle| o.overlaps_ball(&object, model.object_radius);
             if self.sim.model().solve_camera_position(&goal).is_ok()
-                && !self.sim.world().obstacles.iter().any(inside)
+                && !self.sim.obstacles().iter().any(inside)
             {
                 return Ok(object);
             }

@@ -239,6 +239,10 @@ impl Simulator for KinematicSim {
     fn world(&self) -> WorldView<'_> {
         self.world_placed(&self.here.frames)
     }
+
+    fn obstacles(&self) -> &[Obstacle] {
+        &self.obstacles
+    }
 }
 
 impl KinematicSim {

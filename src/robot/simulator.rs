@@ -2,7 +2,7 @@
 //! or dynamic.
 
 use super::model::{ArmModel, Controlled};
-use super::{Joints, RobotError, WorldView, DEFAULT_FLOOR_Z};
+use super::{Joints, Obstacle, RobotError, WorldView, DEFAULT_FLOOR_Z};
 use nalgebra::Isometry3;
 
 /// How commanded moves are executed.
@@ -121,6 +121,10 @@ pub trait Simulator: std::fmt::Debug {
     /// The world around the arm as it is now, as the camera sees it: the floor, the
     /// obstacles and the arm's bodies (but link 6 and the camera) where they are.
     fn world(&self) -> WorldView<'_>;
+
+    /// The obstacles standing in the world: [`world`](Self::world)'s, without placing the
+    /// arm's bodies.
+    fn obstacles(&self) -> &[Obstacle];
 
     /// Starts (`true`) or stops keeping the joint angles of every physics tick, for a
     /// recording of the run; a simulator without physics ticks keeps none.

@@ -5,7 +5,7 @@
 
 use crate::camera::{Camera, CameraModel, NotSeen, Scene};
 use crate::robot::{
-    ArmModel, Controlled, Joints, MoveReport, RobotError, SimWork, Simulator, WorldView,
+    ArmModel, Controlled, Joints, MoveReport, Obstacle, RobotError, SimWork, Simulator, WorldView,
 };
 use nalgebra::{Isometry3, Point3, Vector3};
 use std::cell::RefCell;
@@ -131,6 +131,10 @@ impl Simulator for WatchedSim {
 
     fn world(&self) -> WorldView<'_> {
         self.inner.world()
+    }
+
+    fn obstacles(&self) -> &[Obstacle] {
+        self.inner.obstacles()
     }
 
     fn keep_ticks(&mut self, keep: bool) {

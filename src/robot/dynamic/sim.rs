@@ -284,6 +284,10 @@ impl Simulator for DynamicSim {
         }
     }
 
+    fn obstacles(&self) -> &[Obstacle] {
+        self.plan.obstacles()
+    }
+
     fn keep_ticks(&mut self, keep: bool) {
         self.kept_ticks = keep.then(Vec::new);
     }

@@ -148,8 +148,10 @@ impl ArmGeometry {
             };
             take(gap, speed(i, j));
         }
-        for (k, at) in links.iter().enumerate() {
-            take(self.allowance_of(k + 1, at, obstacles, rates), 1.0);
+        if !obstacles.is_empty() {
+            for (k, at) in links.iter().enumerate() {
+                take(self.allowance_of(k + 1, at, obstacles, rates), 1.0);
+            }
         }
         allow
     }

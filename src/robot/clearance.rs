@@ -30,6 +30,9 @@ const NEAR: f64 = 0.01;
 const MIN_MARCH: f64 = 1e-3;
 /// Bisection steps that find where a move meets contact (1e-12 of a move).
 const BISECTIONS: usize = 40;
+/// The room (m) a known distance bound must leave over what a move can close for the
+/// move to go unmeasured.
+const KNOWN_GAP_MARGIN: f64 = 1e-9;
 /// The most bodies an arm has: the base and one per joint (the camera on the last).
 const MAX_BODIES: usize = MAX_JOINTS + 1;
 
@@ -104,25 +107,25 @@ impl ArmGeometry {
         rates: &[f64; MAX_BODIES],
         obstacles: &[Obstacle],
     ) -> f64 {
-        self.allowance_at(&model.link_frames(q), rates, obstacles)
+        self.allowance_at(&model.link_frames(q), rates, obstacles).0
     }
 
-    /// [`allowance`](Self::allowance) with the links placed at `links`.
+    /// [`allowance`](Self::allowance) with the links placed at `links`, and the smallest
+    /// distance measured between two bodies (m; infinite without pairs).
     fn allowance_at(
         &self,
         links: &Frames,
         rates: &[f64; MAX_BODIES],
         obstacles: &[Obstacle],
-    ) -> f64 {
+    ) -> (f64, f64) {
         let frame = |k: usize| match k {
             0 => Isometry3::identity(),
             _ => links[k - 1],
         };
-        let speed =
-            |i: usize, j: usize| -> f64 { (i + 1..=j).map(|k| rates[k] * self.reach[k][j]).sum() };
         let placed: [Option<Capsule>; MAX_BODIES] =
             std::array::from_fn(|k| self.hulls[k].map(|h| h.placed(&frame(k))));
         let mut allow = f64::INFINITY;
+        let mut nearest = f64::INFINITY;
         let mut take = |gap: f64, speed: f64| {
             if gap.is_nan() || gap <= 0.0 {
                 allow = 0.0;
@@ -146,14 +149,36 @@ impl ArmGeometry {
                 });
                 parts.fold(f64::INFINITY, f64::min)
             };
-            take(gap, speed(i, j));
+            nearest = nearest.min(gap);
+            take(gap, self.pair_speed(rates, i, j));
         }
         if !obstacles.is_empty() {
             for (k, at) in links.iter().enumerate() {
                 take(self.allowance_of(k + 1, at, obstacles, rates), 1.0);
             }
         }
-        allow
+        (allow, nearest)
+    }
+
+    /// How fast (m per move) the joints turning at `rates` can bring bodies `i` < `j`
+    /// together: the turns of the joints between them times how far body j reaches from
+    /// their axes.
+    fn pair_speed(&self, rates: &[f64; MAX_BODIES], i: usize, j: usize) -> f64 {
+        (i + 1..=j).map(|k| rates[k] * self.reach[k][j]).sum()
+    }
+
+    /// The most the move by `delta` can bring any pair of bodies together (m): what the
+    /// bodies' distance bound at the start, less this, still bounds at its end.
+    pub(crate) fn closing(&self, model: &ArmModel, delta: &Controlled) -> f64 {
+        self.closing_at(&body_rates(model, delta))
+    }
+
+    /// [`closing`](Self::closing) with the bodies' joints turning at `rates`.
+    fn closing_at(&self, rates: &[f64; MAX_BODIES]) -> f64 {
+        self.pairs
+            .iter()
+            .map(|&(i, j)| self.pair_speed(rates, i, j))
+            .fold(0.0, f64::max)
     }
 
     /// What [`allowance`](Self::allowance) gives for body `k` placed at `at` against
@@ -222,6 +247,11 @@ impl ArmGeometry {
     /// than the turns of the joints between them times its reach from their axes; the
     /// learned joints turn by their share of the move, a wrist joint by at most θ2's and
     /// θ3's turns together (θ5 on the OSCAR-6), the other joints stay.
+    ///
+    /// `nearest` is a lower bound (m) on every pair's distance at the start, 0 when none is
+    /// known: where it exceeds what the whole move can close and there are no obstacles,
+    /// nothing is measured (the march would return `up_to` at its first look). Otherwise it
+    /// becomes the smallest distance measured there.
     pub(crate) fn contact_stop(
         &self,
         model: &ArmModel,
@@ -229,20 +259,26 @@ impl ArmGeometry {
         delta: &Controlled,
         up_to: f64,
         obstacles: &[Obstacle],
+        nearest: &mut f64,
     ) -> f64 {
         let theta = &start.theta;
         // A numerical wrist starts from the last pose looked at.
         let near = std::cell::Cell::new(start.pose.joints);
-        let turns = joint_turns(model, delta);
-        // Body k hangs from joint k - 1; the base (body 0) stays.
-        let rates: [f64; MAX_BODIES] =
-            std::array::from_fn(|body| body.checked_sub(1).map_or(0.0, |joint| turns[joint]));
+        let rates = body_rates(model, delta);
+        if obstacles.is_empty()
+            && *nearest > 0.0
+            && *nearest > self.closing_at(&rates) * up_to + KNOWN_GAP_MARGIN
+        {
+            return up_to;
+        }
         let allowance = |s: f64| {
             let pose = model.pose_near(&(theta + delta * s), &near.get());
             near.set(pose.joints);
             self.allowance(model, &pose.joints, &rates, obstacles)
         };
-        let (mut s, mut now) = (0.0, self.allowance_at(&start.frames, &rates, obstacles));
+        let (mut s, (mut now, measured)) =
+            (0.0, self.allowance_at(&start.frames, &rates, obstacles));
+        *nearest = measured.max(0.0);
         if now <= 0.0 {
             return up_to;
         }
@@ -268,6 +304,13 @@ impl ArmGeometry {
         }
         up_to
     }
+}
+
+/// How fast (rad per move) each body's own joint turns in the move by `delta` (see
+/// [`joint_turns`]): body k hangs from joint k - 1; the base (body 0) stays.
+fn body_rates(model: &ArmModel, delta: &Controlled) -> [f64; MAX_BODIES] {
+    let turns = joint_turns(model, delta);
+    std::array::from_fn(|body| body.checked_sub(1).map_or(0.0, |joint| turns[joint]))
 }
 
 /// The pairs of bodies (0 the base, then one per joint; `bodies` their elements) that may
@@ -474,6 +517,44 @@ fn segment_distance(p: &Point3<f64>, q: &Point3<f64>, r: &Point3<f64>, s: &Point
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_carried_distance_bound_gives_the_stops_a_fresh_look_gives() {
+        use crate::robot::collision::MoveStart;
+        use rand::{Rng, SeedableRng};
+        let model = ArmModel::oscar6();
+        let geometry = ArmGeometry::new(&model);
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
+        let (lower, upper): (Vec<f64>, Vec<f64>) = model
+            .learned()
+            .iter()
+            .map(|&j| (model.joints()[j].lower, model.joints()[j].upper))
+            .unzip();
+        let mut theta = Controlled::from_fn(|i, _| 0.5 * (lower[i] + upper[i]));
+        let (mut carried, mut skipped, mut stops) = (0.0, 0, 0);
+        for _ in 0..400 {
+            let goal = Controlled::from_fn(|i, _| rng.random_range(lower[i]..upper[i]));
+            // Large moves and small corrections, as a trial makes them.
+            let delta = (goal - theta) * [1.0, 0.01, 0.001][rng.random_range(0..3)];
+            let start = MoveStart::at(&model, model.pose_of(&theta));
+            skipped += usize::from(carried > geometry.closing(&model, &delta) + KNOWN_GAP_MARGIN);
+            let fresh = geometry.contact_stop(&model, &start, &delta, 1.0, &[], &mut 0.0);
+            let kept = geometry.contact_stop(&model, &start, &delta, 1.0, &[], &mut carried);
+            assert_eq!(
+                fresh.to_bits(),
+                kept.to_bits(),
+                "from {theta:?} by {delta:?}"
+            );
+            stops += usize::from(fresh < 1.0);
+            let executed = delta * fresh;
+            theta += executed;
+            carried = (carried - geometry.closing(&model, &executed)).max(0.0);
+        }
+        assert!(
+            skipped > 100 && stops > 0,
+            "{skipped} moves skipped, {stops} stopped"
+        );
+    }
 
     #[test]
     fn segment_distances() {

@@ -23,6 +23,9 @@ pub struct KinematicSim {
     settings: MoveSettings,
     /// The arm as it is now: its angles, pose and link frames, where the next move starts.
     here: MoveStart,
+    /// A lower bound (m) on the distance between any two bodies that may touch, with the
+    /// arm as it is now; 0 when none is known.
+    nearest: f64,
     /// Each link's collision elements (link 1 first) and how far the arm reaches beyond each
     /// joint, for the floor.
     collision: Vec<Elements>,
@@ -46,6 +49,7 @@ impl KinematicSim {
             model,
             settings,
             here,
+            nearest: 0.0,
             collision: Default::default(),
             reaches: Reaches::default(),
             seen_shapes: Default::default(),
@@ -89,6 +93,7 @@ impl KinematicSim {
     fn set_pose(&mut self, theta: Controlled) {
         let pose = self.model.pose_near(&theta, &self.here.pose.joints);
         self.here = MoveStart::at(&self.model, pose);
+        self.nearest = 0.0;
     }
 
     fn limits(&self) -> (Vector3<f64>, Vector3<f64>) {
@@ -135,6 +140,7 @@ impl Simulator for KinematicSim {
             return Err(RobotError::InsideObstacle { link, obstacle });
         }
         self.here = MoveStart::at(&self.model, pose);
+        self.nearest = 0.0;
         Ok(())
     }
 
@@ -182,6 +188,7 @@ impl Simulator for KinematicSim {
             delta,
             floor.min(fraction),
             &self.obstacles,
+            &mut self.nearest,
         );
         if touch < fraction {
             fraction = touch;
@@ -200,6 +207,7 @@ impl Simulator for KinematicSim {
         }
         self.here = MoveStart::at(&self.model, end_pose);
         let executed = after - theta;
+        self.nearest = (self.nearest - self.geometry.closing(&self.model, &executed)).max(0.0);
         report.executed = executed;
         report.duration =
             TrapezoidProfile::new(executed.amax(), self.settings.speed, self.settings.accel)

@@ -184,3 +184,12 @@ fn points_out_of_reach_are_clear_errors() {
         assert!(err.to_string().contains("unreachable"), "{err}");
     }
 }
+
+#[test]
+fn a_solved_pose_carries_the_link_frames_of_its_joints() {
+    let model = ArmModel::oscar6();
+    for theta in poses() {
+        let pose = model.pose_of(&theta);
+        assert_eq!(pose.frames, model.link_frames(&pose.joints), "{theta:?}");
+    }
+}

@@ -97,20 +97,9 @@ impl ArmGeometry {
     }
 
     /// The fraction of a move, turning the joints at `rates` (rad per move), that surely
-    /// passes before anything touches, from the arm at `q`: each pair's distance over how
-    /// fast the joints between them can close it (distances exact under [`NEAR`], lower
-    /// bounds above it); 0 when something touches.
-    fn allowance(
-        &self,
-        model: &ArmModel,
-        q: &Joints,
-        rates: &[f64; MAX_BODIES],
-        obstacles: &[Obstacle],
-    ) -> f64 {
-        self.allowance_at(&model.link_frames(q), rates, obstacles).0
-    }
-
-    /// [`allowance`](Self::allowance) with the links placed at `links`, and the smallest
+    /// passes before anything touches, from the arm with its links placed at `links`: each
+    /// pair's distance over how fast the joints between them can close it (distances exact
+    /// under [`NEAR`], lower bounds above it); 0 when something touches. And the smallest
     /// distance measured between two bodies (m; infinite without pairs).
     fn allowance_at(
         &self,
@@ -181,7 +170,7 @@ impl ArmGeometry {
             .fold(0.0, f64::max)
     }
 
-    /// What [`allowance`](Self::allowance) gives for body `k` placed at `at` against
+    /// What [`allowance_at`](Self::allowance_at) gives for body `k` placed at `at` against
     /// `obstacles` alone.
     fn allowance_of(
         &self,
@@ -274,10 +263,12 @@ impl ArmGeometry {
         let allowance = |s: f64| {
             let pose = model.pose_near(&(theta + delta * s), &near.get());
             near.set(pose.joints);
-            self.allowance(model, &pose.joints, &rates, obstacles)
+            self.allowance_at(&pose.frames, &rates, obstacles).0
         };
-        let (mut s, (mut now, measured)) =
-            (0.0, self.allowance_at(&start.frames, &rates, obstacles));
+        let (mut s, (mut now, measured)) = (
+            0.0,
+            self.allowance_at(&start.pose.frames, &rates, obstacles),
+        );
         *nearest = measured.max(0.0);
         if now <= 0.0 {
             return up_to;
@@ -612,7 +603,7 @@ mod tests {
         }
         let q = model.full_pose(&Controlled::new(0.2, 0.4, 1.9));
         let rates = [1.0; MAX_BODIES];
-        assert!(geometry.allowance(&model, &q, &rates, &[]) > 0.0);
+        assert!(geometry.allowance_at(&model.link_frames(&q), &rates, &[]).0 > 0.0);
         let at = |k: usize| model.link_frames(&q)[k - 1];
         for &(i, j) in geometry.pairs.iter().filter(|(i, _)| *i > 0) {
             for a in &geometry.bodies[i] {
@@ -688,6 +679,9 @@ mod tests {
         });
         let q = touching.expect("a pose where the hand touches the arm");
         let still = [0.0; MAX_BODIES];
-        assert_eq!(geometry.allowance(&model, &q, &still, &[]), 0.0);
+        assert_eq!(
+            geometry.allowance_at(&model.link_frames(&q), &still, &[]).0,
+            0.0
+        );
     }
 }

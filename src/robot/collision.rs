@@ -78,16 +78,14 @@ fn lowest_of_link(frame: &Isometry3<f64>, elements: &Elements) -> f64 {
 }
 
 /// The arm where a move starts, as the floor and contact rules first look at it: the
-/// controlled angles, the pose solved from them and its link frames — worked out once, when
-/// the arm got there (the kinematic simulator keeps them between moves).
+/// controlled angles and the pose solved from them (its link frames included) — worked out
+/// once, when the arm got there (the kinematic simulator keeps them between moves).
 #[derive(Debug, Clone)]
 pub(crate) struct MoveStart {
     /// Its controlled (learned) angles.
     pub theta: Controlled,
-    /// The pose (every joint, the camera).
+    /// The pose (every joint, the camera, the link frames).
     pub pose: ArmPose,
-    /// That pose's link frames.
-    pub frames: Frames,
 }
 
 impl MoveStart {
@@ -95,7 +93,6 @@ impl MoveStart {
     pub(crate) fn at(model: &ArmModel, pose: ArmPose) -> MoveStart {
         MoveStart {
             theta: model.controlled_of(&pose.joints),
-            frames: model.link_frames(&pose.joints),
             pose,
         }
     }
@@ -213,6 +210,7 @@ fn clear_of_floor(
 ) -> bool {
     let turns = joint_turns(model, delta);
     start
+        .pose
         .frames
         .iter()
         .zip(bodies)
@@ -252,7 +250,7 @@ pub(crate) fn floor_stop(
         let pose = model.pose_near(&(theta + delta * s), &near.get());
         if pose.wrist_found {
             near.set(pose.joints);
-            lowest_point(model, bodies, &pose.joints) - floor
+            lowest_of(&pose.frames, bodies) - floor
         } else {
             f64::NAN
         }
@@ -265,7 +263,7 @@ pub(crate) fn floor_stop(
     let mut s = 0.0;
     let mut gap = if start.pose.wrist_found {
         near.set(start.pose.joints);
-        lowest_of(&start.frames, bodies) - floor
+        lowest_of(&start.pose.frames, bodies) - floor
     } else {
         f64::NAN
     };

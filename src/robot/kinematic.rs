@@ -245,7 +245,7 @@ impl Simulator for KinematicSim {
     }
 
     fn world(&self) -> WorldView<'_> {
-        self.world_placed(&self.here.frames)
+        self.world_placed(&self.here.pose.frames)
     }
 
     fn obstacles(&self) -> &[Obstacle] {

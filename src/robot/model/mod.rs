@@ -31,6 +31,8 @@ pub struct ArmPose {
     pub camera: Isometry3<f64>,
     /// The joint frames with the learned joints as asked and the others at rest.
     pub level_frames: Frames,
+    /// The joint frames of `joints` (as [`ArmModel::link_frames`] gives them).
+    pub frames: Frames,
     /// False when no wrist angles keep the camera vertical with the image x axis radial
     /// (the pose is then outside the arm's reach; `joints` holds the last attempt).
     pub wrist_found: bool,

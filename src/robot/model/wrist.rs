@@ -196,6 +196,7 @@ impl Wrist {
                     joints,
                     camera,
                     level_frames,
+                    frames: level_frames,
                     wrist_found: found,
                 }
             }
@@ -203,19 +204,21 @@ impl Wrist {
                 let angle = one_joint_angle(model, j, &level_frames);
                 joints[j] = angle;
                 // The chain again from joint j on, as `link_frames` walks it.
+                let mut frames = level_frames;
                 let mut flange = if j == 0 {
                     Isometry3::identity()
                 } else {
                     level_frames[j - 1]
                 };
-                flange *= model.joints[j].transform(angle);
-                for k in j + 1..model.dof() {
+                for k in j..model.dof() {
                     flange *= model.joints[k].transform(joints[k]);
+                    frames.set(k, flange);
                 }
                 ArmPose {
                     joints,
                     camera: flange * model.camera_mount(),
                     level_frames,
+                    frames,
                     wrist_found: angle.is_finite(),
                 }
             }
@@ -238,11 +241,13 @@ impl Wrist {
                 if found {
                     wrap_into_limits(model, self, &mut joints);
                 }
-                let flange = flange.unwrap_or_else(|| model.link_frames(&joints).last());
+                let frames = model.link_frames(&joints);
+                let flange = flange.unwrap_or_else(|| frames.last());
                 ArmPose {
                     joints,
                     camera: flange * model.camera_mount(),
                     level_frames,
+                    frames,
                     wrist_found: found,
                 }
             }

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Every test, Rust and Python: `cargo test --locked --features rerun` (the feature builds the
-# Rerun recording, whose test decodes a written .rrd; it adds most of the build time), then
-# the Python package built into a virtual environment (target/python-venv) and its pytest
-# suite (python/tests).
+# Every test, Rust and Python: `cargo test --locked`; then the Rerun recording's test
+# (tests/show.rs `recording`, which decodes a written .rrd) with the `rerun` feature, in the
+# `recording` profile, whose dependencies build unoptimised (the Rerun SDK's hundreds of
+# crates build in a fraction of the time they take optimised); then the Python package built
+# into a virtual environment (target/python-venv) and its pytest suite (python/tests).
 #
 # Needs python3 (≥ 3.9, with venv); installs maturin, gymnasium, numpy, scikit-learn and
 # pytest from PyPI into the environment. The package is built in cargo's `dev` profile so
@@ -11,7 +12,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-cargo test --locked --features rerun
+cargo test --locked
+cargo test --locked --features rerun --profile recording --test show recording
 
 venv=target/python-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"

@@ -20,6 +20,11 @@ use std::hint::black_box;
 use std::path::PathBuf;
 use std::time::Instant;
 
+#[path = "../tests/common/test_arms.rs"]
+mod test_arms;
+
+use test_arms::{TestArm, PANDA, UR_STYLE};
+
 const LOADS: u32 = 20;
 const CALLS: usize = 1_000_000;
 const SEED: u64 = 1;
@@ -30,49 +35,12 @@ const POSES: usize = 200_000;
 /// Trials of each lin5 run on the dynamic simulator.
 const DYNAMIC_TRIALS: usize = 2_000;
 
-/// An arm of the second table: its URDF (`None`: the shipped OSCAR-6) and the `--set`s
-/// that pick it out (the boundaries of θ2 and θ3 as `eyehand reach` suggests them).
-struct LearningArm {
-    name: &'static str,
-    urdf: Option<&'static str>,
-    sets: &'static [(&'static str, &'static str)],
-}
-
-const LEARNING_ARMS: [LearningArm; 3] = [
-    LearningArm {
-        name: "oscar6 (defaults)",
-        urdf: None,
-        sets: &[],
-    },
-    LearningArm {
-        name: "panda",
-        urdf: Some("tests/data/panda/panda.urdf"),
-        sets: &[
-            ("camera_link", "panda_hand"),
-            ("learned_joints", "panda_joint1,panda_joint2,panda_joint4"),
-            ("reach_space", "auto"),
-            ("boundary_0_low", "-40"),
-            ("boundary_0_high", "82"),
-            ("boundary_1_low", "-171"),
-            ("boundary_1_high", "-54"),
-        ],
-    },
-    LearningArm {
-        name: "ur_style",
-        urdf: Some("tests/data/ur_style.urdf"),
-        sets: &[
-            ("camera_link", "tool0"),
-            (
-                "learned_joints",
-                "shoulder_pan_joint,shoulder_lift_joint,elbow_joint",
-            ),
-            ("reach_space", "auto"),
-            ("boundary_0_low", "-98"),
-            ("boundary_0_high", "-16"),
-            ("boundary_1_low", "29"),
-            ("boundary_1_high", "134"),
-        ],
-    },
+/// The arms of the second and third tables: the shipped OSCAR-6 at the defaults (`None`),
+/// and the test data's Panda and UR-style arm.
+const LEARNING_ARMS: [(&str, Option<TestArm>); 3] = [
+    ("oscar6 (defaults)", None),
+    ("panda", Some(PANDA)),
+    ("ur_style", Some(UR_STYLE)),
 ];
 
 /// Nanoseconds per pose with the wrist solved, along a path of small steps (each pose
@@ -99,20 +67,16 @@ fn wrist_costs(model: &ArmModel) -> (f64, f64) {
 
 /// `arm`'s config for a run of `trials` lin5 trials (seed 1) on simulator `sim`, and its
 /// URDF.
-fn arm_config(
-    root: &std::path::Path,
-    arm: &LearningArm,
-    trials: usize,
-    sim: &str,
-) -> (Config, Option<PathBuf>) {
+fn arm_config(arm: Option<&TestArm>, trials: usize, sim: &str) -> (Config, Option<PathBuf>) {
     let mut config = Config::default_config();
-    for (name, value) in arm.sets.iter().chain([&("sim", sim)]) {
-        config.assign(name, value).expect("a valid entry");
+    for (name, value) in arm.map(TestArm::sets).unwrap_or_default() {
+        config.assign(name, &value).expect("a valid entry");
     }
+    config.assign("sim", sim).expect("a valid entry");
     config.trials = trials;
     config.seed = SEED;
     config.check().expect("a valid config");
-    (config, arm.urdf.map(|file| root.join(file)))
+    (config, arm.map(TestArm::urdf))
 }
 
 /// The run's mean distances after steps 1..5 (mm), as a table cell.
@@ -126,13 +90,13 @@ fn mean_distances(summary: &RunSummary) -> String {
 }
 
 /// The second table: each arm's reach space, wrist cost and lin5 run.
-fn learning_table(root: &std::path::Path) {
+fn learning_table() {
     println!();
     println!("| arm | joints | wrist | reach space r, z (cm) | covered | pose, warm (ns) | pose, from rest (ns) | lin5 mean distance after steps 1..5 (mm) | failures | trials/s |");
     println!("|---|---|---|---|---|---|---|---|---|---|");
     let data = tempfile::tempdir().expect("a scratch folder");
-    for arm in LEARNING_ARMS {
-        let (config, urdf) = arm_config(root, &arm, TRIALS, "kinematic");
+    for (name, arm) in LEARNING_ARMS {
+        let (config, urdf) = arm_config(arm.as_ref(), TRIALS, "kinematic");
         let model = load_arm(&config, urdf.as_deref())
             .expect("the arm loads")
             .model;
@@ -152,7 +116,7 @@ fn learning_table(root: &std::path::Path) {
         let summary = &result.summary;
         println!(
             "| {} | {} | {wrist} | {:.1}–{:.1}, {:.1}–{:.1} | {:.1}% | {warm:.0} | {cold:.0} | {} | {} | {:.0} |",
-            arm.name,
+            name,
             model.dof(),
             reach.r_min * 100.0,
             reach.r_max * 100.0,
@@ -167,13 +131,13 @@ fn learning_table(root: &std::path::Path) {
 }
 
 /// The third table: each arm on the dynamic simulator, lin5 for `DYNAMIC_TRIALS` trials.
-fn dynamic_table(root: &std::path::Path) {
+fn dynamic_table() {
     println!();
     println!("| arm | lin5 mean distance after steps 1..5 (mm) | failures | trials/s | physics steps/trial | settle time-outs | contact stops |");
     println!("|---|---|---|---|---|---|---|");
     let data = tempfile::tempdir().expect("a scratch folder");
-    for arm in LEARNING_ARMS {
-        let (config, urdf) = arm_config(root, &arm, DYNAMIC_TRIALS, "dynamic");
+    for (name, arm) in LEARNING_ARMS {
+        let (config, urdf) = arm_config(arm.as_ref(), DYNAMIC_TRIALS, "dynamic");
         let options = RunOptions {
             urdf,
             ..RunOptions::new(config, data.path())
@@ -181,7 +145,7 @@ fn dynamic_table(root: &std::path::Path) {
         let summary = run(&options).expect("the run runs").summary;
         println!(
             "| {} | {} | {} | {:.0} | {:.1} | {} | {} |",
-            arm.name,
+            name,
             mean_distances(&summary),
             summary.failures,
             summary.trials_per_second,
@@ -255,6 +219,6 @@ fn main() {
             println!("| oscar6 (`ArmModel`) | `camera_link` | 6 | - | - | {ns:.0} |");
         }
     }
-    learning_table(&root);
-    dynamic_table(&root);
+    learning_table();
+    dynamic_table();
 }

@@ -11,64 +11,13 @@ use eyehand::robot::{
 use nalgebra::{Isometry3, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
-/// An arm of the test data: its URDF, camera link, learned joints and the learner's
-/// boundaries for θ2 and θ3 (degrees; `eyehand reach` suggests them).
-struct TestArm {
-    file: &'static str,
-    camera_link: &'static str,
-    learned: [&'static str; 3],
-    boundaries: [f64; 4],
-}
+#[path = "common/test_arms.rs"]
+mod test_arms;
 
-const PANDA: TestArm = TestArm {
-    file: "panda/panda.urdf",
-    camera_link: "panda_hand",
-    learned: ["panda_joint1", "panda_joint2", "panda_joint4"],
-    boundaries: [-40.0, 82.0, -171.0, -54.0],
-};
-
-const UR_STYLE: TestArm = TestArm {
-    file: "ur_style.urdf",
-    camera_link: "tool0",
-    learned: ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint"],
-    boundaries: [-98.0, -16.0, 29.0, 134.0],
-};
-
-impl TestArm {
-    fn urdf(&self) -> PathBuf {
-        Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("tests/data")
-            .join(self.file)
-    }
-
-    fn model(&self) -> ArmModel {
-        let description =
-            RobotDescription::load(&self.urdf(), &DescriptionOptions::default()).unwrap();
-        let settings = ArmSettings {
-            camera_link: self.camera_link.into(),
-            camera_offset: Vector3::zeros(),
-            learned_joints: self.learned.map(String::from),
-        };
-        ArmModel::from_description(&description, &settings).unwrap()
-    }
-
-    /// The `--set`s of a run on this arm.
-    fn sets(&self) -> Vec<(&'static str, String)> {
-        let [b0l, b0h, b1l, b1h] = self.boundaries.map(|v| v.to_string());
-        vec![
-            ("camera_link", self.camera_link.into()),
-            ("learned_joints", self.learned.join(",")),
-            ("reach_space", "auto".into()),
-            ("boundary_0_low", b0l),
-            ("boundary_0_high", b0h),
-            ("boundary_1_low", b1l),
-            ("boundary_1_high", b1h),
-        ]
-    }
-}
+use test_arms::{PANDA, UR_STYLE};
 
 /// How far (degrees) the camera's optical axis is from straight down, and its image x
 /// axis from the radial direction.

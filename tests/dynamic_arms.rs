@@ -8,42 +8,24 @@
 
 use eyehand::experiment::{run, Config, RunOptions};
 use eyehand::robot::{
-    ArmModel, ArmSettings, DescriptionOptions, Drive, DynamicSettings, DynamicSim, FreeArm, Joints,
-    KinematicSim, Obstacle, ReachSpace, RobotDescription, Simulator,
+    ArmModel, Drive, DynamicSettings, DynamicSim, FreeArm, Joints, KinematicSim, Obstacle,
+    ReachSpace, Simulator,
 };
 use nalgebra::{Point3, Vector3};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
-use std::path::PathBuf;
 
-/// The Panda (camera on its hand; joints 1, 2 and 4 learned) or the UR-style arm.
-fn arm(file: &str, camera_link: &str, learned: [&str; 3]) -> ArmModel {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data")
-        .join(file);
-    let description = RobotDescription::load(&path, &DescriptionOptions::default()).unwrap();
-    let settings = ArmSettings {
-        camera_link: camera_link.into(),
-        camera_offset: Vector3::zeros(),
-        learned_joints: learned.map(String::from),
-    };
-    ArmModel::from_description(&description, &settings).unwrap()
-}
+#[path = "common/test_arms.rs"]
+mod test_arms;
+
+use test_arms::{PANDA, UR_STYLE};
 
 fn panda() -> ArmModel {
-    arm(
-        "panda/panda.urdf",
-        "panda_hand",
-        ["panda_joint1", "panda_joint2", "panda_joint4"],
-    )
+    PANDA.model()
 }
 
 fn ur_style() -> ArmModel {
-    arm(
-        "ur_style.urdf",
-        "tool0",
-        ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint"],
-    )
+    UR_STYLE.model()
 }
 
 /// The Panda without the shapes of its hand and fingers (riding with the camera on the
@@ -149,23 +131,15 @@ fn lin5_runs_on_the_dynamic_panda() {
     // no settle time-out, the mean distance 87.8 mm after step 1 and 2.5 mm after step 5.
     let data = tempfile::tempdir().unwrap();
     let mut config = Config::default_config();
-    for (name, value) in [
-        ("camera_link", "panda_hand"),
-        ("learned_joints", "panda_joint1,panda_joint2,panda_joint4"),
-        ("reach_space", "auto"),
-        ("boundary_0_low", "-40"),
-        ("boundary_0_high", "82"),
-        ("boundary_1_low", "-171"),
-        ("boundary_1_high", "-54"),
-        ("sim", "dynamic"),
-    ] {
-        config.assign(name, value).unwrap();
+    for (name, value) in PANDA.sets() {
+        config.assign(name, &value).unwrap();
     }
+    config.assign("sim", "dynamic").unwrap();
     config.trials = 40;
     config.seed = 1;
     config.check().unwrap();
     let options = RunOptions {
-        urdf: Some(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/panda/panda.urdf")),
+        urdf: Some(PANDA.urdf()),
         ..RunOptions::new(config, data.path())
     };
     let summary = run(&options).unwrap().summary;

@@ -224,7 +224,11 @@ fn clear_of_floor(
                     0.0
                 }
             });
-            lowest_of_link(frame, elements) - sinking * up_to - floor > FLOOR_MARGIN
+            let room = |lowest: f64| lowest - sinking * up_to - floor;
+            // No point of the link lies farther from its frame's origin than its own
+            // reach: a looser bound, checked first, spares most links the exact one.
+            let loose = frame.translation.vector.z - reaches.body[i][k];
+            room(loose) > 2.0 * FLOOR_MARGIN || room(lowest_of_link(frame, elements)) > FLOOR_MARGIN
         })
 }
 
@@ -480,5 +484,29 @@ mod tests {
                 before = now;
             }
         }
+    }
+
+    #[test]
+    fn no_link_reaches_below_its_frame_by_more_than_its_own_reach() {
+        use rand::{Rng, SeedableRng};
+        // The OSCAR-6 stretched, so a box and cylinders grown along links count too.
+        let mut model = ArmModel::oscar6();
+        model.stretch_link(2, 0.1).expect("link 2 stretches");
+        let bodies: Vec<_> = (1..=6).map(|k| body_elements(&model, k)).collect();
+        let reaches = reaches(&model, &bodies);
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(8);
+        let mut tightest = f64::INFINITY;
+        for _ in 0..2000 {
+            let q = Joints::from_fn(model.dof(), |_| rng.random_range(-3.2..3.2));
+            let frames = model.link_frames(&q);
+            for k in 1..=6 {
+                let loose = frames[k - 1].translation.vector.z - reaches.body[k - 1][k];
+                let exact = lowest_of_link(&frames[k - 1], &bodies[k - 1]);
+                assert!(loose <= exact, "link {k} at {q:?}: {loose} above {exact}");
+                tightest = tightest.min(exact - loose);
+            }
+        }
+        // The bound is not vacuous: somewhere it comes within a centimetre.
+        assert!(tightest < 0.01, "{tightest}");
     }
 }

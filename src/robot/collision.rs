@@ -195,107 +195,124 @@ fn sinking_speeds(
         .sum()
 }
 
-/// Whether no link can get below `floor` (m) anywhere in the move by `delta` up to
-/// fraction `up_to`, judged at once from the start: each link's lowest point there less how
-/// far that link can sink over the move (its joints' turns times its own reaches), with
-/// [`FLOOR_MARGIN`] to spare. The march finds no crossing where this holds.
-fn clear_of_floor(
-    model: &ArmModel,
-    bodies: &[Elements],
-    reaches: &Reaches,
-    start: &MoveStart,
-    delta: &Controlled,
-    up_to: f64,
-    floor: f64,
-) -> bool {
-    let turns = joint_turns(model, delta);
-    start
-        .pose
-        .frames
-        .iter()
-        .zip(bodies)
-        .enumerate()
-        .all(|(i, (frame, elements))| {
-            let k = i + 1;
-            let sinking = sinking_speeds(model, &turns, |joint| {
-                if joint < k {
-                    reaches.body[joint][k]
-                } else {
-                    0.0
-                }
-            });
-            let room = |lowest: f64| lowest - sinking * up_to - floor;
-            // No point of the link lies farther from its frame's origin than its own
-            // reach: a looser bound, checked first, spares most links the exact one.
-            let loose = frame.translation.vector.z - reaches.body[i][k];
-            room(loose) > 2.0 * FLOOR_MARGIN || room(lowest_of_link(frame, elements)) > FLOOR_MARGIN
-        })
+/// The floor rule both simulators share: each link's collision elements and how far the
+/// arm reaches beyond each joint, which bound how fast any link can sink in a move.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct FloorRule {
+    /// Each link's collision elements (`bodies[k - 1]` for link k).
+    pub bodies: Vec<Elements>,
+    reaches: Reaches,
 }
 
-/// How far along the controlled move from every joint at `start` by `delta`
-/// (fractions up to `up_to`)
-/// the arm gets before a link or the camera would go below `floor` (m): `up_to` when
-/// none does, or when the arm starts below it. Marches in steps that cannot skip a dip
-/// (each no longer than the clearance over the arm's sinking speed allows), then bisects the
-/// crossing.
-pub(crate) fn floor_stop(
-    model: &ArmModel,
-    bodies: &[Elements],
-    reaches: &Reaches,
-    start: &MoveStart,
-    delta: &Controlled,
-    up_to: f64,
-    floor: f64,
-) -> f64 {
-    let theta = &start.theta;
-    // A numerical wrist starts from the last pose looked at.
-    let near = std::cell::Cell::new(start.pose.joints);
-    let clearance = |s: f64| {
-        let pose = model.pose_near(&(theta + delta * s), &near.get());
-        if pose.wrist_found {
-            near.set(pose.joints);
-            lowest_of(&pose.frames, bodies) - floor
+impl FloorRule {
+    /// The rule for `model` as it is now (its stretched links and turned camera included).
+    pub(crate) fn new(model: &ArmModel) -> FloorRule {
+        let bodies: Vec<Elements> = (1..=model.dof()).map(|k| body_elements(model, k)).collect();
+        let reaches = reaches(model, &bodies);
+        FloorRule { bodies, reaches }
+    }
+
+    /// Whether no link can get below `floor` (m) anywhere in the move by `delta` up to
+    /// fraction `up_to`, judged at once from the start: each link's lowest point there less how
+    /// far that link can sink over the move (its joints' turns times its own reaches), with
+    /// [`FLOOR_MARGIN`] to spare. The march finds no crossing where this holds.
+    fn clear_of_floor(
+        &self,
+        model: &ArmModel,
+        start: &MoveStart,
+        delta: &Controlled,
+        up_to: f64,
+        floor: f64,
+    ) -> bool {
+        let (bodies, reaches) = (&self.bodies, &self.reaches);
+        let turns = joint_turns(model, delta);
+        start
+            .pose
+            .frames
+            .iter()
+            .zip(bodies)
+            .enumerate()
+            .all(|(i, (frame, elements))| {
+                let k = i + 1;
+                let sinking = sinking_speeds(model, &turns, |joint| {
+                    if joint < k {
+                        reaches.body[joint][k]
+                    } else {
+                        0.0
+                    }
+                });
+                let room = |lowest: f64| lowest - sinking * up_to - floor;
+                // No point of the link lies farther from its frame's origin than its own
+                // reach: a looser bound, checked first, spares most links the exact one.
+                let loose = frame.translation.vector.z - reaches.body[i][k];
+                room(loose) > 2.0 * FLOOR_MARGIN
+                    || room(lowest_of_link(frame, elements)) > FLOOR_MARGIN
+            })
+    }
+
+    /// How far along the controlled move from every joint at `start` by `delta` (fractions
+    /// up to `up_to`) the arm gets before a link or the camera would go below `floor` (m):
+    /// `up_to` when none does, or when the arm starts below it. Marches in steps that cannot
+    /// skip a dip (each no longer than the clearance over the arm's sinking speed allows),
+    /// then bisects the crossing.
+    pub(crate) fn stop(
+        &self,
+        model: &ArmModel,
+        start: &MoveStart,
+        delta: &Controlled,
+        up_to: f64,
+        floor: f64,
+    ) -> f64 {
+        let (bodies, reaches) = (&self.bodies, &self.reaches);
+        let theta = &start.theta;
+        // A numerical wrist starts from the last pose looked at.
+        let near = std::cell::Cell::new(start.pose.joints);
+        let clearance = |s: f64| {
+            let pose = model.pose_near(&(theta + delta * s), &near.get());
+            if pose.wrist_found {
+                near.set(pose.joints);
+                lowest_of(&pose.frames, bodies) - floor
+            } else {
+                f64::NAN
+            }
+        };
+        if start.pose.wrist_found && self.clear_of_floor(model, start, delta, up_to, floor) {
+            return up_to;
+        }
+        let speed = sinking_speed(model, reaches, delta);
+        let mut s = 0.0;
+        let mut gap = if start.pose.wrist_found {
+            near.set(start.pose.joints);
+            lowest_of(&start.pose.frames, bodies) - floor
         } else {
             f64::NAN
+        };
+        if gap.is_nan() || gap < 0.0 || speed == 0.0 {
+            return up_to;
         }
-    };
-    if start.pose.wrist_found && clear_of_floor(model, bodies, reaches, start, delta, up_to, floor)
-    {
-        return up_to;
-    }
-    let speed = sinking_speed(model, reaches, delta);
-    let mut s = 0.0;
-    let mut gap = if start.pose.wrist_found {
-        near.set(start.pose.joints);
-        lowest_of(&start.pose.frames, bodies) - floor
-    } else {
-        f64::NAN
-    };
-    if gap.is_nan() || gap < 0.0 || speed == 0.0 {
-        return up_to;
-    }
-    while s < up_to {
-        let next = s + (gap / speed).max(MIN_MARCH);
-        if next >= up_to && gap >= speed * (up_to - s) {
-            return up_to; // the rest of the move cannot reach the floor
-        }
-        let next = next.min(up_to);
-        let next_gap = clearance(next);
-        if next_gap < 0.0 {
-            let (mut above, mut below) = (s, next);
-            for _ in 0..FLOOR_BISECTIONS {
-                let middle = 0.5 * (above + below);
-                if clearance(middle) < 0.0 {
-                    below = middle;
-                } else {
-                    above = middle;
-                }
+        while s < up_to {
+            let next = s + (gap / speed).max(MIN_MARCH);
+            if next >= up_to && gap >= speed * (up_to - s) {
+                return up_to; // the rest of the move cannot reach the floor
             }
-            return above;
+            let next = next.min(up_to);
+            let next_gap = clearance(next);
+            if next_gap < 0.0 {
+                let (mut above, mut below) = (s, next);
+                for _ in 0..FLOOR_BISECTIONS {
+                    let middle = 0.5 * (above + below);
+                    if clearance(middle) < 0.0 {
+                        below = middle;
+                    } else {
+                        above = middle;
+                    }
+                }
+                return above;
+            }
+            (s, gap) = (next, next_gap);
         }
-        (s, gap) = (next, next_gap);
+        up_to
     }
-    up_to
 }
 
 /// The lowest world height (m) of `shape` at world pose `pose`.

@@ -2,7 +2,7 @@
 //! is instant in wall time; its simulated duration follows the trapezoidal profile.
 
 use super::clearance::ArmGeometry;
-use super::collision::{body_elements, floor_stop, reaches, Elements, MoveStart, Reaches};
+use super::collision::{body_elements, FloorRule, MoveStart};
 use super::dynamic::compound;
 use super::model::{ArmModel, Controlled, Frames};
 use super::motion::{limit_stop_fraction, TrapezoidProfile};
@@ -26,10 +26,8 @@ pub struct KinematicSim {
     /// A lower bound (m) on the distance between any two bodies that may touch, with the
     /// arm as it is now; 0 when none is known.
     nearest: f64,
-    /// Each link's collision elements (link 1 first) and how far the arm reaches beyond each
-    /// joint, for the floor.
-    collision: Vec<Elements>,
-    reaches: Reaches,
+    /// Each link's collision elements and how far the arm reaches beyond each joint.
+    floor: FloorRule,
     /// The bodies a camera sees (the base and every joint's body but the last) as parry
     /// shapes, for [`WorldView`].
     seen_shapes: [Option<SharedShape>; SEEN_BODIES],
@@ -50,8 +48,7 @@ impl KinematicSim {
             settings,
             here,
             nearest: 0.0,
-            collision: Default::default(),
-            reaches: Reaches::default(),
+            floor: FloorRule::default(),
             seen_shapes: Default::default(),
             obstacles: Vec::new(),
             geometry: ArmGeometry::default(),
@@ -69,10 +66,7 @@ impl KinematicSim {
 
     /// Takes the collision elements from the model as it is now.
     fn refresh_collision(&mut self) {
-        self.collision = (1..=self.model.dof())
-            .map(|k| body_elements(&self.model, k))
-            .collect();
-        self.reaches = reaches(&self.model, &self.collision);
+        self.floor = FloorRule::new(&self.model);
         self.geometry = ArmGeometry::new(&self.model);
         let seen = self.model.dof();
         self.seen_shapes = std::array::from_fn(|k| {
@@ -83,7 +77,7 @@ impl KinematicSim {
                     base = body_elements(&self.model, 0);
                     &base
                 }
-                _ => &self.collision[k - 1],
+                _ => &self.floor.bodies[k - 1],
             };
             (!elements.is_empty()).then(|| compound(elements))
         });
@@ -173,10 +167,8 @@ impl Simulator for KinematicSim {
             report.stopped_by_limit = Some(self.model.wrist_joint_at_fault(&end_pose));
             fraction = self.wrist_stop(delta, fraction);
         }
-        let floor = floor_stop(
+        let floor = self.floor.stop(
             &self.model,
-            &self.collision,
-            &self.reaches,
             &self.here,
             delta,
             fraction,

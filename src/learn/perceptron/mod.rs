@@ -2,8 +2,10 @@
 //! updated normal-equation sums, in staggered sum-sets that forget (study §4.1, §4.2.1).
 //!
 //! A pattern (input u, target Δθ) adds z zᵀ and z Δθᵀ, z = (u, 1), to the sums of every
-//! sum-set taking patterns (see [`stagger`] for which). A refit solves the
-//! current set's normal equations once for all three joints. Each set knows the sequence
+//! sum-set taking patterns (see [`stagger`] for which). A refit solves the current set's
+//! normal equations once for all three joints; between two switches of the current set,
+//! which then only gains patterns, that fit is carried by rank-one updates instead (see
+//! [`carried`]), and a refit has nothing left to do. Each set knows the sequence
 //! number of the oldest pattern in it; after a detected change of the mapping, a perceptron
 //! with a set older than the change drops all of them and starts over (the tree then gives
 //! it back the stored patterns from after the change), keeping the fit it had as its stale
@@ -13,6 +15,7 @@
 //! node's parent instead; the model never answers NaN. Inputs that queries always hold at
 //! 0 (lin8's readings after the move) may be left out of a fit while they have not varied.
 
+mod carried;
 mod lu;
 mod settings;
 mod stagger;
@@ -21,6 +24,7 @@ mod sums;
 pub use settings::PerceptronSettings;
 
 use crate::learn::tree::Approximator;
+use carried::CarriedFit;
 use nalgebra::{SMatrix, SVector, Vector3};
 use stagger::Stagger;
 use std::ops::Range;
@@ -33,6 +37,9 @@ pub struct Perceptron<const N: usize, const M: usize> {
     stagger: Stagger,
     /// The current fit: Δθ = weights · (u, 1).
     weights: Option<SMatrix<f64, 3, M>>,
+    /// While `weights` is the current set's exact fit and no input is idle: what carries
+    /// it to each pattern the set takes.
+    carried: Option<CarriedFit<M>>,
     /// Which of (u, 1) may be left out of a fit while they stay 0.
     may_idle: [bool; M],
     /// The fit before the last start-over (after a detected change).
@@ -55,6 +62,7 @@ impl<const N: usize, const M: usize> Perceptron<N, M> {
             sets: vec![NormalSums::new(); sets.max(1)],
             stagger,
             weights: None,
+            carried: None,
             may_idle: [false; M],
             stale: None,
         }
@@ -85,9 +93,17 @@ impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M> {
         let arrival = self.stagger.arrive();
         if let Some(set) = arrival.cleared {
             self.sets[set].clear();
+            // (A set is cleared when it is full and the next one takes over.)
+            self.carried = None;
         }
         for set in &mut self.sets[..arrival.receivers] {
             set.add(&zz, &zt, seq);
+        }
+        if let (Some(carried), Some(weights)) = (&mut self.carried, &mut self.weights) {
+            let current_took_it = self.stagger.current() < arrival.receivers;
+            if !(current_took_it && carried.take(weights, &z, target)) {
+                self.carried = None;
+            }
         }
     }
 
@@ -102,13 +118,21 @@ impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M> {
         if stale {
             self.sets.iter_mut().for_each(NormalSums::clear);
             self.stagger.restart();
+            self.carried = None;
             self.stale = self.weights.take().map(Box::new);
         }
         stale
     }
 
+    /// Nothing to do while the fit is carried; otherwise a full solve of the current set,
+    /// which establishes a carried fit when it answers with no idle input.
     fn refit(&mut self) {
-        self.weights = self.sets[self.stagger.current()].solve(&self.may_idle);
+        if self.carried.is_some() {
+            return;
+        }
+        let solution = self.sets[self.stagger.current()].solve(&self.may_idle);
+        self.weights = solution.as_ref().map(|s| s.weights);
+        self.carried = solution.and_then(|s| s.inverse.as_ref().map(CarriedFit::new));
     }
 
     fn answer(&self, input: &SVector<f64, N>) -> Option<Vector3<f64>> {

@@ -10,6 +10,16 @@ const MIN_RCOND: f64 = 1e-10;
 /// [−1, 1]) stays below this carries no information: it never left the box's middle.
 const IDLE: f64 = 1e-9;
 
+/// What a full solve answers: the weights and, when no input was left out as idle, the
+/// inverse of Σ z zᵀ, from which the fit can be carried (see [`super::carried`]).
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Solution<const M: usize> {
+    /// The least-squares coefficients, one row per joint.
+    pub(super) weights: SMatrix<f64, 3, M>,
+    /// (Σ z zᵀ)⁻¹, made exactly symmetric; `None` when an input was idle.
+    pub(super) inverse: Option<SMatrix<f64, M, M>>,
+}
+
 /// Σ z zᵀ and Σ z tᵀ over the patterns (z the input with a trailing 1, t the target) of
 /// one sum-set: the normal equations (Σ z zᵀ) W = Σ z tᵀ of the least-squares fit
 /// t ≈ Wᵀ z for the three joints at once. The set also knows the sequence number of the
@@ -52,16 +62,17 @@ impl<const M: usize> NormalSums<M> {
         (self.oldest != u64::MAX).then_some(self.oldest)
     }
 
-    /// The least-squares coefficients (one row per joint), or `None` when the system is
-    /// singular or ill-conditioned, or holds no pattern.
+    /// The least-squares coefficients (one row per joint) and the inverse normal matrix,
+    /// or `None` when the system is singular or ill-conditioned, or holds no pattern.
     ///
     /// An input that `may_idle` and never left the middle of the box (its root mean square
     /// is below [`IDLE`]) is idle: its coefficient is undetermined and set to 0, the
     /// least-norm choice, which answers exactly wherever that input is 0 again. The matrix
     /// of the other inputs is equilibrated to a unit diagonal; an LU decomposition with
     /// partial pivoting is made once and solved for the three joints. The ratio of its
-    /// smallest to largest pivot estimates the reciprocal condition number.
-    pub(super) fn solve(&self, may_idle: &[bool; M]) -> Option<SMatrix<f64, 3, M>> {
+    /// smallest to largest pivot estimates the reciprocal condition number. Without idle
+    /// inputs the same LU gives the equilibrated inverse, which unscaled is (Σ z zᵀ)⁻¹.
+    pub(super) fn solve(&self, may_idle: &[bool; M]) -> Option<Solution<M>> {
         // The constant's diagonal counts the patterns.
         let count = self.zz[(M - 1, M - 1)];
         let mut idle = [false; M];
@@ -98,8 +109,40 @@ impl<const M: usize> NormalSums<M> {
             }
         }
         let y = lu.solve(&rhs)?;
-        let w = SMatrix::<f64, 3, M>::from_fn(|k, r| y[r][k] * scale[r]);
-        w.iter().all(|v| v.is_finite()).then_some(w)
+        let weights = SMatrix::<f64, 3, M>::from_fn(|k, r| y[r][k] * scale[r]);
+        if !weights.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let inverse = if idle.contains(&true) {
+            None
+        } else {
+            unscaled_inverse(&lu, &scale)
+        };
+        Some(Solution { weights, inverse })
+    }
+}
+
+/// (Σ z zᵀ)⁻¹ = S E⁻¹ S from the LU of the equilibrated E = S (Σ z zᵀ) S, S = diag(`scale`),
+/// averaged with its transpose; `None` if it is not finite.
+fn unscaled_inverse<const M: usize>(
+    lu: &SmallLu<M>,
+    scale: &[f64; M],
+) -> Option<SMatrix<f64, M, M>> {
+    let identity: [[f64; M]; M] =
+        std::array::from_fn(|r| std::array::from_fn(|c| f64::from(r == c)));
+    let x = lu.solve(&identity)?;
+    let inverse = SMatrix::<f64, M, M>::from_fn(|r, c| {
+        let mean = 0.5 * (x[r][c] + x[c][r]);
+        mean * (scale[r] * scale[c])
+    });
+    inverse.iter().all(|v| v.is_finite()).then_some(inverse)
+}
+
+impl<const M: usize> NormalSums<M> {
+    /// Σ z zᵀ (tests of the carried fit measure answers over the set's patterns with it).
+    #[cfg(test)]
+    pub(super) fn normal_matrix(&self) -> &SMatrix<f64, M, M> {
+        &self.zz
     }
 }
 
@@ -184,7 +227,8 @@ mod tests {
         for _ in 0..3000 {
             let sums = awkward_sums(&mut rng);
             let may_idle = std::array::from_fn(|i| i < 5 && rng.random_bool(0.5));
-            let (ours, theirs) = (sums.solve(&may_idle), nalgebra_fit(&sums, &may_idle));
+            let ours = sums.solve(&may_idle).map(|s| s.weights);
+            let theirs = nalgebra_fit(&sums, &may_idle);
             assert_eq!(ours.is_some(), theirs.is_some());
             if let (Some(ours), Some(theirs)) = (ours, theirs) {
                 answered += 1;

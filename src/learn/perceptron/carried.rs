@@ -158,7 +158,7 @@ mod tests {
     fn drift(p: &P5) -> Option<(f64, f64)> {
         p.carried.as_ref()?;
         let carried = p.weights.expect("a carried fit has weights");
-        let set = &p.sets[p.stagger.current()];
+        let set = &p.current_set();
         let fresh = set.solve(&p.may_idle)?.weights;
         let spread =
             |w: SMatrix<f64, 3, 6>| (w * set.normal_matrix() * w.transpose()).trace().sqrt();

@@ -2,7 +2,8 @@
 //! updated normal-equation sums, in staggered sum-sets that forget (study §4.1, §4.2.1).
 //!
 //! A pattern (input u, target Δθ) adds z zᵀ and z Δθᵀ, z = (u, 1), to the sums of every
-//! sum-set taking patterns (see [`stagger`] for which). A refit solves the current set's
+//! sum-set taking patterns (see [`stagger`] for which), kept as blocks that each pattern
+//! is added to once, the sets being sums of blocks. A refit solves the current set's
 //! normal equations once for all three joints; between two switches of the current set,
 //! which then only gains patterns, that fit is carried by rank-one updates instead (see
 //! [`carried`]), and a refit has nothing left to do. Each set knows the sequence
@@ -27,13 +28,17 @@ use crate::learn::tree::Approximator;
 use carried::CarriedFit;
 use nalgebra::{SMatrix, SVector, Vector3};
 use stagger::Stagger;
+use std::collections::VecDeque;
 use std::ops::Range;
 use sums::NormalSums;
 
 /// A perceptron over `N` inputs; `M` = N + 1 (the inputs and a constant).
 #[derive(Debug, Clone)]
 pub struct Perceptron<const N: usize, const M: usize> {
-    sets: Vec<NormalSums<M>>,
+    /// The sums of the patterns since each set's (re)start, a block per start; the
+    /// current set is their sum. The front block is number `front` (see [`Stagger`]).
+    blocks: VecDeque<NormalSums<M>>,
+    front: u64,
     stagger: Stagger,
     /// The current fit: Δθ = weights · (u, 1).
     weights: Option<SMatrix<f64, 3, M>>,
@@ -59,7 +64,8 @@ impl<const N: usize, const M: usize> Perceptron<N, M> {
         } = settings;
         let stagger = Stagger::new(sets, set_size);
         Perceptron {
-            sets: vec![NormalSums::new(); sets.max(1)],
+            blocks: VecDeque::with_capacity(sets.max(1)),
+            front: 0,
             stagger,
             weights: None,
             carried: None,
@@ -91,17 +97,26 @@ impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M> {
         let zz = z * z.transpose();
         let zt = z * target.transpose();
         let arrival = self.stagger.arrive();
-        if let Some(set) = arrival.cleared {
-            self.sets[set].clear();
-            // (A set is cleared when it is full and the next one takes over.)
+        if arrival.switched {
             self.carried = None;
         }
-        for set in &mut self.sets[..arrival.receivers] {
-            set.add(&zz, &zt, seq);
+        let mut spare = None;
+        while self.front < self.stagger.first_block() {
+            spare = self.blocks.pop_front();
+            self.front += 1;
         }
+        if arrival.opens {
+            let mut block = spare.unwrap_or_else(NormalSums::new);
+            block.clear();
+            self.blocks.push_back(block);
+        }
+        // (The first pattern opens a block: there always is one.)
+        if let Some(block) = self.blocks.back_mut() {
+            block.add(&zz, &zt, seq);
+        }
+        // (The current set takes every pattern.)
         if let (Some(carried), Some(weights)) = (&mut self.carried, &mut self.weights) {
-            let current_took_it = self.stagger.current() < arrival.receivers;
-            if !(current_took_it && carried.take(weights, &z, target)) {
+            if !carried.take(weights, &z, target) {
                 self.carried = None;
             }
         }
@@ -112,11 +127,12 @@ impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M> {
     /// it had becomes its stale answer.
     fn forget_before(&mut self, cutoff: u64) -> bool {
         let stale = self
-            .sets
+            .blocks
             .iter()
-            .any(|set| set.oldest().is_some_and(|oldest| oldest < cutoff));
+            .any(|block| block.oldest().is_some_and(|oldest| oldest < cutoff));
         if stale {
-            self.sets.iter_mut().for_each(NormalSums::clear);
+            self.blocks.clear();
+            self.front = 0;
             self.stagger.restart();
             self.carried = None;
             self.stale = self.weights.take().map(Box::new);
@@ -130,7 +146,7 @@ impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M> {
         if self.carried.is_some() {
             return;
         }
-        let solution = self.sets[self.stagger.current()].solve(&self.may_idle);
+        let solution = self.current_set().solve(&self.may_idle);
         self.weights = solution.as_ref().map(|s| s.weights);
         self.carried = solution.and_then(|s| s.inverse.as_ref().map(CarriedFit::new));
     }
@@ -145,10 +161,19 @@ impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M> {
 }
 
 impl<const N: usize, const M: usize> Perceptron<N, M> {
+    /// The current set's sums: those of every block kept.
+    fn current_set(&self) -> NormalSums<M> {
+        let mut set = NormalSums::new();
+        for block in &self.blocks {
+            set.absorb(block);
+        }
+        set
+    }
+
     /// The sequence number of the oldest pattern in the set the answer is solved from.
     #[cfg(test)]
     pub(crate) fn answering_oldest(&self) -> Option<u64> {
-        self.sets[self.stagger.current()].oldest()
+        self.current_set().oldest()
     }
 }
 

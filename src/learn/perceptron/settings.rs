@@ -6,7 +6,7 @@ pub struct PerceptronSettings {
     /// Staggered sum-sets each node keeps (`nr_of_matrices`); 5 by default.
     pub sum_sets: usize,
     /// Patterns a sum-set takes before it is emptied and refilled (`max_pats_in_mat`);
-    /// 1,000 by default.
+    /// 1,000 by default; at least `sum_sets` (a smaller value counts as `sum_sets`).
     pub set_size: usize,
 }
 

@@ -6,8 +6,14 @@
 //! set is cleared, starts over with this pattern, and the next set — then holding q − s + 1
 //! patterns — becomes current. So at most q patterns are ever fitted, and s of the oldest
 //! are forgotten at a time.
+//!
+//! A set, once started, takes every pattern until it is cleared, so it always holds the
+//! patterns since its (re)start. The sums are therefore kept in blocks, a new one opened
+//! whenever a set (re)starts: each pattern goes into the newest block only, and a set is
+//! the sum of the blocks from the one it started with. The current set, the oldest, spans
+//! every block still needed.
 
-/// Which sets take the next pattern, which one is current, and how full each is.
+/// Which set is current, how full each is, and which block each started with.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub(super) struct Stagger {
     capacity: u64,
@@ -16,64 +22,100 @@ pub(super) struct Stagger {
     arrived: u64,
     current: usize,
     counts: Vec<u64>,
+    /// Blocks opened since the last clear of everything.
+    blocks: u64,
+    /// Per set: the number of the block it (re)started with (meaningful once started).
+    starts: Vec<u64>,
 }
 
 /// What the arriving pattern does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) struct Arrival {
-    /// A set to clear before the pattern is added.
-    pub(super) cleared: Option<usize>,
-    /// The pattern goes to sets `0..receivers`.
-    pub(super) receivers: usize,
+    /// The current set was full: it starts over, and the next set is current.
+    pub(super) switched: bool,
+    /// A set starts with this pattern: it opens a new block.
+    pub(super) opens: bool,
 }
 
 impl Stagger {
-    /// `sets` staggered sets (at least 1) of at most `capacity` patterns (at least 1).
+    /// `sets` staggered sets (at least 1) of at most `capacity` patterns (at least
+    /// `sets`, as the config demands: with fewer, a set other than the current one could
+    /// outgrow it and the current set would no longer be the oldest).
     pub(super) fn new(sets: usize, capacity: usize) -> Self {
         let sets = sets.max(1);
-        let capacity = capacity.max(1) as u64;
+        let capacity = capacity.max(sets) as u64;
         Stagger {
             capacity,
             stride: (capacity / sets as u64).max(1),
             arrived: 0,
             current: 0,
             counts: vec![0; sets],
+            blocks: 0,
+            starts: vec![0; sets],
         }
     }
 
-    /// Starts the schedule over, as if no pattern had arrived (every set must be cleared
+    /// Starts the schedule over, as if no pattern had arrived (every block must be dropped
     /// with it).
     pub(super) fn restart(&mut self) {
         self.arrived = 0;
         self.current = 0;
         self.counts.fill(0);
+        self.blocks = 0;
+        self.starts.fill(0);
     }
 
-    /// The set the answer is solved from.
-    pub(super) fn current(&self) -> usize {
-        self.current
+    /// The number of the block the current set (re)started with: older blocks are no
+    /// longer needed.
+    pub(super) fn first_block(&self) -> u64 {
+        self.starts[self.current]
     }
 
     /// Books one arriving pattern.
     pub(super) fn arrive(&mut self) -> Arrival {
-        let mut cleared = None;
+        let opening = self.blocks;
+        let mut arrival = Arrival {
+            switched: false,
+            opens: false,
+        };
         if self.counts[self.current] >= self.capacity {
             self.counts[self.current] = 0;
-            cleared = Some(self.current);
+            self.starts[self.current] = opening;
             self.current = (self.current + 1) % self.counts.len();
+            arrival = Arrival {
+                switched: true,
+                opens: true,
+            };
         }
+        let receivers = |arrived: u64| {
+            self.counts
+                .len()
+                .min(arrived.div_ceil(self.stride) as usize)
+        };
+        let (before, after) = (receivers(self.arrived), receivers(self.arrived + 1));
         self.arrived += 1;
-        let started = (self.arrived - 1) / self.stride + 1;
-        let receivers = self.counts.len().min(started as usize);
-        for count in &mut self.counts[..receivers] {
+        for start in &mut self.starts[before..after] {
+            *start = opening;
+            arrival.opens = true;
+        }
+        for count in &mut self.counts[..after] {
             *count += 1;
         }
-        Arrival { cleared, receivers }
+        if arrival.opens {
+            self.blocks += 1;
+        }
+        arrival
     }
 
     #[cfg(test)]
     pub(super) fn counts(&self) -> &[u64] {
         &self.counts
+    }
+
+    /// The set the answer is solved from.
+    #[cfg(test)]
+    pub(super) fn current(&self) -> usize {
+        self.current
     }
 }
 
@@ -81,7 +123,7 @@ impl Stagger {
 mod tests {
     use super::*;
 
-    /// Feeds patterns until `n` have arrived.
+    /// Feeds patterns until `n` have arrived; the last one's arrival.
     fn feed_to(s: &mut Stagger, n: u64) -> Arrival {
         let mut last = None;
         while s.arrived < n {
@@ -90,54 +132,82 @@ mod tests {
         last.expect("at least one pattern fed")
     }
 
+    const OPENS: Arrival = Arrival {
+        switched: false,
+        opens: true,
+    };
+    const SWITCHES: Arrival = Arrival {
+        switched: true,
+        opens: true,
+    };
+    const PLAIN: Arrival = Arrival {
+        switched: false,
+        opens: false,
+    };
+
     #[test]
     fn sets_switch_exactly_on_the_figure_4_3_timeline() {
         let mut s = Stagger::new(5, 1000);
-        // (a) 1–200: set 1 only.
-        assert_eq!(feed_to(&mut s, 1).receivers, 1);
-        assert_eq!(feed_to(&mut s, 200).receivers, 1);
+        // (a) 1–200: set 1 only, in block 0.
+        assert_eq!(feed_to(&mut s, 1), OPENS);
+        assert_eq!(feed_to(&mut s, 200), PLAIN);
         assert_eq!(s.counts(), [200, 0, 0, 0, 0]);
-        // (b) 201–400 to sets 1–2, 401–600 to sets 1–3.
-        assert_eq!(feed_to(&mut s, 201).receivers, 2);
-        assert_eq!(feed_to(&mut s, 401).receivers, 3);
+        // (b) 201–400 to sets 1–2 (set 2 opens block 1), 401–600 to sets 1–3.
+        assert_eq!(feed_to(&mut s, 201), OPENS);
+        assert_eq!(feed_to(&mut s, 400), PLAIN);
+        assert_eq!(feed_to(&mut s, 401), OPENS);
         assert_eq!(s.counts(), [401, 201, 1, 0, 0]);
-        // (c) 801–1000 to all five; set 1 is still current.
-        assert_eq!(feed_to(&mut s, 1000).receivers, 5);
+        // (c) 801–1000 to all five; set 1 is still current and spans blocks 0–4.
+        assert_eq!(feed_to(&mut s, 1000), PLAIN);
         assert_eq!(s.counts(), [1000, 800, 600, 400, 200]);
-        assert_eq!(s.current(), 0);
-        // (d) pattern 1001 clears set 1; set 2, with 801 patterns, is current.
-        let a = feed_to(&mut s, 1001);
-        assert_eq!(
-            a,
-            Arrival {
-                cleared: Some(0),
-                receivers: 5
-            }
-        );
-        assert_eq!(s.current(), 1);
+        assert_eq!((s.current(), s.first_block()), (0, 0));
+        // (d) pattern 1001 clears set 1, which opens block 5; set 2, with 801 patterns
+        // from block 1 on, is current.
+        assert_eq!(feed_to(&mut s, 1001), SWITCHES);
+        assert_eq!((s.current(), s.first_block()), (1, 1));
         assert_eq!(s.counts(), [1, 801, 601, 401, 201]);
         // (e) set 2 is full after 1200 and cleared at 1201; set 3 takes over.
-        assert_eq!(feed_to(&mut s, 1200).cleared, None);
+        assert_eq!(feed_to(&mut s, 1200), PLAIN);
         assert_eq!(s.current(), 1);
-        assert_eq!(feed_to(&mut s, 1201).cleared, Some(1));
-        assert_eq!(s.current(), 2);
+        assert_eq!(feed_to(&mut s, 1201), SWITCHES);
+        assert_eq!((s.current(), s.first_block()), (2, 2));
         assert_eq!(s.counts(), [201, 1, 801, 601, 401]);
-        // (f) and round again: set 1, restarted at 1001, is current from 1801.
+        // (f) and round again: set 1, restarted at 1001 in block 5, is current from 1801.
         feed_to(&mut s, 1800);
         assert_eq!(s.current(), 4);
-        assert_eq!(feed_to(&mut s, 1801).cleared, Some(4));
-        assert_eq!(s.current(), 0);
+        assert_eq!(feed_to(&mut s, 1801), SWITCHES);
+        assert_eq!((s.current(), s.first_block()), (0, 5));
         assert_eq!(s.counts()[0], 801);
-        assert_eq!(feed_to(&mut s, 2001).cleared, Some(0));
-        assert_eq!(s.current(), 1);
+        assert_eq!(feed_to(&mut s, 2001), SWITCHES);
+        assert_eq!((s.current(), s.first_block()), (1, 6));
         assert_eq!(s.counts()[1], 801);
     }
 
     #[test]
     fn one_set_forgets_everything_at_once() {
         let mut s = Stagger::new(1, 3);
-        assert_eq!(feed_to(&mut s, 3).cleared, None);
-        assert_eq!(feed_to(&mut s, 4).cleared, Some(0));
+        assert_eq!(feed_to(&mut s, 3), PLAIN);
+        assert_eq!(feed_to(&mut s, 4), SWITCHES);
         assert_eq!(s.counts(), [1]);
+        assert_eq!(s.first_block(), 1);
+    }
+
+    #[test]
+    fn a_set_holds_the_patterns_from_its_first_block_on() {
+        // Strides that do not divide the capacity.
+        for (sets, capacity) in [(3, 1000), (5, 5), (4, 10), (2, 7), (5, 1000)] {
+            let mut s = Stagger::new(sets, capacity);
+            // The first pattern of every block.
+            let mut block_starts = vec![];
+            for arrived in 1..=5000u64 {
+                if s.arrive().opens {
+                    block_starts.push(arrived);
+                }
+                let first = block_starts[s.first_block() as usize];
+                let current = s.counts()[s.current()];
+                assert_eq!(current, arrived - first + 1, "{sets} sets of {capacity}");
+                assert!(s.counts().iter().all(|&c| c <= current));
+            }
+        }
     }
 }

@@ -50,6 +50,13 @@ impl<const M: usize> NormalSums<M> {
         self.oldest = self.oldest.min(seq);
     }
 
+    /// Adds the patterns of `other`.
+    pub(super) fn absorb(&mut self, other: &Self) {
+        self.zz += other.zz;
+        self.zt += other.zt;
+        self.oldest = self.oldest.min(other.oldest);
+    }
+
     /// Forgets every pattern.
     pub(super) fn clear(&mut self) {
         self.zz.fill(0.0);

@@ -13,7 +13,7 @@
 //! the sum of the blocks from the one it started with. The current set, the oldest, spans
 //! every block still needed.
 
-/// Which set is current, how full each is, and which block each started with.
+/// Which set is current, and when each set (re)started.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub(super) struct Stagger {
     capacity: u64,
@@ -21,11 +21,19 @@ pub(super) struct Stagger {
     /// Patterns arrived since the last clear of everything.
     arrived: u64,
     current: usize,
-    counts: Vec<u64>,
+    /// Sets started since the last clear of everything (the first `started` of `starts`).
+    started: usize,
     /// Blocks opened since the last clear of everything.
     blocks: u64,
-    /// Per set: the number of the block it (re)started with (meaningful once started).
-    starts: Vec<u64>,
+    /// Per set: where it last (re)started.
+    starts: Vec<SetStart>,
+}
+
+/// Where a set (re)started: the number of its first pattern and of its first block.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+struct SetStart {
+    arrival: u64,
+    block: u64,
 }
 
 /// What the arriving pattern does.
@@ -46,12 +54,12 @@ impl Stagger {
         let capacity = capacity.max(sets) as u64;
         Stagger {
             capacity,
-            stride: (capacity / sets as u64).max(1),
+            stride: capacity / sets as u64,
             arrived: 0,
             current: 0,
-            counts: vec![0; sets],
+            started: 0,
             blocks: 0,
-            starts: vec![0; sets],
+            starts: vec![SetStart::default(); sets],
         }
     }
 
@@ -60,46 +68,42 @@ impl Stagger {
     pub(super) fn restart(&mut self) {
         self.arrived = 0;
         self.current = 0;
-        self.counts.fill(0);
+        self.started = 0;
         self.blocks = 0;
-        self.starts.fill(0);
     }
 
     /// The number of the block the current set (re)started with: older blocks are no
     /// longer needed.
     pub(super) fn first_block(&self) -> u64 {
-        self.starts[self.current]
+        self.starts[self.current].block
     }
 
     /// Books one arriving pattern.
     pub(super) fn arrive(&mut self) -> Arrival {
-        let opening = self.blocks;
+        self.arrived += 1;
+        let here = SetStart {
+            arrival: self.arrived,
+            block: self.blocks,
+        };
         let mut arrival = Arrival {
             switched: false,
             opens: false,
         };
-        if self.counts[self.current] >= self.capacity {
-            self.counts[self.current] = 0;
-            self.starts[self.current] = opening;
-            self.current = (self.current + 1) % self.counts.len();
+        // The current set is full when it holds `capacity` patterns before this one.
+        let current = &mut self.starts[self.current];
+        if self.started > 0 && here.arrival - current.arrival >= self.capacity {
+            *current = here;
+            self.current = (self.current + 1) % self.starts.len();
             arrival = Arrival {
                 switched: true,
                 opens: true,
             };
         }
-        let receivers = |arrived: u64| {
-            self.counts
-                .len()
-                .min(arrived.div_ceil(self.stride) as usize)
-        };
-        let (before, after) = (receivers(self.arrived), receivers(self.arrived + 1));
-        self.arrived += 1;
-        for start in &mut self.starts[before..after] {
-            *start = opening;
+        // Set k first takes pattern k·stride + 1.
+        if self.started < self.starts.len() && here.arrival > self.started as u64 * self.stride {
+            self.starts[self.started] = here;
+            self.started += 1;
             arrival.opens = true;
-        }
-        for count in &mut self.counts[..after] {
-            *count += 1;
         }
         if arrival.opens {
             self.blocks += 1;
@@ -107,9 +111,13 @@ impl Stagger {
         arrival
     }
 
+    /// The patterns each set holds.
     #[cfg(test)]
-    pub(super) fn counts(&self) -> &[u64] {
-        &self.counts
+    pub(super) fn counts(&self) -> Vec<u64> {
+        let held = |start: &SetStart| self.arrived + 1 - start.arrival;
+        let mut counts: Vec<u64> = self.starts[..self.started].iter().map(held).collect();
+        counts.resize(self.starts.len(), 0);
+        counts
     }
 
     /// The set the answer is solved from.

@@ -94,8 +94,6 @@ impl<const N: usize, const M: usize> Perceptron<N, M> {
 impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M> {
     fn add(&mut self, input: &SVector<f64, N>, target: &Vector3<f64>, seq: u64) {
         let z = Self::augmented(input);
-        let zz = z * z.transpose();
-        let zt = z * target.transpose();
         let arrival = self.stagger.arrive();
         if arrival.switched {
             self.carried = None;
@@ -112,7 +110,7 @@ impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M> {
         }
         // (The first pattern opens a block: there always is one.)
         if let Some(block) = self.blocks.back_mut() {
-            block.add(&zz, &zt, seq);
+            block.add(&z, target, seq);
         }
         // (The current set takes every pattern.)
         if let (Some(carried), Some(weights)) = (&mut self.carried, &mut self.weights) {

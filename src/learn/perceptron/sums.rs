@@ -1,7 +1,7 @@
 //! Normal-equation sums of a least-squares fit, and their solution.
 
 use super::lu::SmallLu;
-use nalgebra::SMatrix;
+use nalgebra::{SMatrix, SVector, Vector3};
 
 /// Below this reciprocal condition estimate a fit counts as singular: its coefficients
 /// would carry less than about six correct digits.
@@ -42,11 +42,20 @@ impl<const M: usize> NormalSums<M> {
         }
     }
 
-    /// Adds pattern number `seq`, given as its products z zᵀ and z tᵀ.
+    /// Adds pattern number `seq`, input z (with its trailing 1) and target t: z zᵀ and
+    /// z tᵀ, each product added where it is made.
     #[inline]
-    pub(super) fn add(&mut self, zz: &SMatrix<f64, M, M>, zt: &SMatrix<f64, M, 3>, seq: u64) {
-        self.zz += zz;
-        self.zt += zt;
+    pub(super) fn add(&mut self, z: &SVector<f64, M>, t: &Vector3<f64>, seq: u64) {
+        for (j, zj) in z.iter().enumerate() {
+            for (i, zi) in z.iter().enumerate() {
+                self.zz[(i, j)] += zi * zj;
+            }
+        }
+        for (k, tk) in t.iter().enumerate() {
+            for (i, zi) in z.iter().enumerate() {
+                self.zt[(i, k)] += zi * tk;
+            }
+        }
         self.oldest = self.oldest.min(seq);
     }
 
@@ -222,7 +231,7 @@ mod tests {
                 z[3] = z[1] * (1.0 + 1e-9);
             }
             let t = SVector::<f64, 3>::from_fn(|_, _| rng.random_range(-50.0..50.0));
-            sums.add(&(z * z.transpose()), &(z * t.transpose()), seq);
+            sums.add(&z, &t, seq);
         }
         sums
     }

@@ -83,7 +83,7 @@ impl<const M: usize> CarriedFit<M> {
         }
         let updated: [[f64; 3]; M] =
             std::array::from_fn(|j| std::array::from_fn(|k| columns[j][k] + miss[k] * gain[j]));
-        // (A sum is finite only if every term is; a NaN or infinity anywhere shows.)
+        // (A NaN or an infinity among the terms makes the sum one too.)
         if !updated.iter().flatten().sum::<f64>().is_finite() {
             return false;
         }

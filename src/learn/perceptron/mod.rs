@@ -6,15 +6,15 @@
 //! is added to once, the sets being sums of blocks. A refit solves the current set's
 //! normal equations once for all three joints; between two switches of the current set,
 //! which then only gains patterns, that fit is carried by rank-one updates instead (see
-//! [`carried`]), and a refit has nothing left to do. Each block knows the sequence
-//! number of the oldest pattern in it; after a detected change of the mapping, a perceptron
-//! holding a pattern older than the change drops every block and starts over (the tree then gives
-//! it back the stored patterns from after the change), keeping the fit it had as its stale
-//! answer. Inputs are in the node's
-//! local coordinates (its box mapped to [−1, 1]), which keeps the sums well scaled however
-//! small the box. A singular or ill-conditioned fit gives no answer, so the tree asks the
-//! node's parent instead; the model never answers NaN. Inputs that queries always hold at
-//! 0 (lin8's readings after the move) may be left out of a fit while they have not varied.
+//! [`carried`]), and a refit has nothing left to do. Each block knows the sequence number
+//! of the oldest pattern in it; after a detected change of the mapping, a perceptron
+//! holding a pattern older than the change drops every block and starts over (the tree
+//! then gives it back the stored patterns from after the change), keeping the fit it had
+//! as its stale answer. Inputs are in the node's local coordinates (its box mapped to
+//! [−1, 1]), which keeps the sums well scaled however small the box. A singular or
+//! ill-conditioned fit gives no answer, so the tree asks the node's parent instead; the
+//! model never answers NaN. Inputs that queries always hold at 0 (lin8's readings after
+//! the move) may be left out of a fit while they have not varied.
 
 mod carried;
 mod lu;

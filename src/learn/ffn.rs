@@ -99,10 +99,7 @@ impl Learner for FfnLearner {
             return Ok(());
         }
         let mut params = self.net.params().to_vec();
-        let mut objective = BatchLoss {
-            net: &mut self.net,
-            batch: &self.window,
-        };
+        let mut objective = BatchLoss::new(&mut self.net, &self.window);
         minimize(&mut objective, &mut params, self.settings.cg_iterations);
         Ok(())
     }

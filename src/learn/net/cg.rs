@@ -198,14 +198,7 @@ mod net_tests {
         let train = batch(400, &mut rng);
         let mut net: DenseNet<5, 1> = DenseNet::new(20, 0.3, &mut rng);
         let mut params = net.params().to_vec();
-        let losses = minimize(
-            &mut BatchLoss {
-                net: &mut net,
-                batch: &train,
-            },
-            &mut params,
-            400,
-        );
+        let losses = minimize(&mut BatchLoss::new(&mut net, &train), &mut params, 400);
         assert!(
             losses.windows(2).all(|w| w[1] < w[0]),
             "the loss falls at every step"

@@ -2,7 +2,6 @@
 //! one flat parameter vector (for conjugate gradients); the hidden buffers are allocated
 //! once, so a forward or backward pass allocates nothing.
 
-use super::Objective;
 use nalgebra::SVector;
 use rand::Rng;
 
@@ -13,9 +12,6 @@ pub struct DenseNet<const I: usize, const O: usize> {
     /// Layout: W1 (hidden × I, row-major), b1 (hidden), W2 (O × hidden, row-major), b2 (O).
     params: Vec<f64>,
     activations: Vec<f64>,
-    /// A batch's hidden activations, pattern after pattern (scratch of conjugate-gradient
-    /// training, grown to the largest batch and kept).
-    batch_activations: Vec<f64>,
 }
 
 impl<const I: usize, const O: usize> DenseNet<I, O> {
@@ -29,7 +25,6 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
             hidden,
             params,
             activations: vec![0.0; hidden],
-            batch_activations: Vec::new(),
         }
     }
 
@@ -49,32 +44,26 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
     }
 
     /// The parameters as (W1, b1, W2, b2).
-    fn layers(params: &[f64], hidden: usize) -> (&[f64], &[f64], &[f64], &[f64]) {
+    pub(super) fn layers(params: &[f64], hidden: usize) -> (&[f64], &[f64], &[f64], &[f64]) {
         let (w1, rest) = params.split_at(hidden * I);
         let (b1, rest) = rest.split_at(hidden);
         let (w2, b2) = rest.split_at(O * hidden);
         (w1, b1, w2, b2)
     }
 
-    /// Writes the hidden units' net inputs for `x` into `sums` (one per unit): each unit's
-    /// weighted sum (in index order from −0, as `Iterator::sum` does, so the loops' shape
-    /// does not change a bit of the result) plus its bias.
-    fn hidden_sums(params: &[f64], x: &SVector<f64, I>, sums: &mut [f64]) {
-        let (w1, b1, _, _) = Self::layers(params, sums.len());
-        for ((a, row), b) in sums.iter_mut().zip(w1.chunks_exact(I)).zip(b1) {
+    /// Writes the hidden units' activations for `x` into `activations` (one per unit):
+    /// the tanh of each unit's weighted sum (in index order from −0, as `Iterator::sum`
+    /// does) plus its bias.
+    fn hidden_layer(params: &[f64], x: &SVector<f64, I>, activations: &mut [f64]) {
+        let (w1, b1, _, _) = Self::layers(params, activations.len());
+        for ((a, row), b) in activations.iter_mut().zip(w1.chunks_exact(I)).zip(b1) {
             let row: &[f64; I] = row.try_into().expect("rows of I weights");
             let mut sum = -0.0;
             for i in 0..I {
                 sum += row[i] * x[i];
             }
-            *a = sum + b;
+            *a = (sum + b).tanh();
         }
-    }
-
-    /// Writes the hidden units' activations for `x` into `activations` (one per unit).
-    fn hidden_layer(params: &[f64], x: &SVector<f64, I>, activations: &mut [f64]) {
-        Self::hidden_sums(params, x, activations);
-        activations.iter_mut().for_each(|a| *a = a.tanh());
     }
 
     /// The output layer's answer to the hidden `activations`.
@@ -159,45 +148,6 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
             *p -= rate * g;
         }
         loss
-    }
-}
-
-/// The mean loss of a net over a batch of (input, target) pairs, as an [`Objective`] of
-/// the net's parameters.
-#[derive(Debug)]
-pub struct BatchLoss<'a, const I: usize, const O: usize> {
-    /// The net whose parameters are optimised.
-    pub net: &'a mut DenseNet<I, O>,
-    /// The batch.
-    pub batch: &'a [(SVector<f64, I>, SVector<f64, O>)],
-}
-
-impl<const I: usize, const O: usize> Objective for BatchLoss<'_, I, O> {
-    fn dimension(&self) -> usize {
-        self.net.params.len()
-    }
-
-    /// The whole batch's hidden layer first (every net input, then one pass of tanh over
-    /// them all: independent, so they run side by side), then the patterns' gradients in
-    /// order — the same sums as pattern by pattern, to the bit.
-    fn evaluate(&mut self, at: &[f64], grad: &mut [f64]) -> f64 {
-        let net = &mut *self.net;
-        net.params.copy_from_slice(at);
-        let h = net.hidden;
-        let activations = &mut net.batch_activations;
-        activations.resize(self.batch.len() * h, 0.0);
-        for ((x, _), sums) in self.batch.iter().zip(activations.chunks_exact_mut(h)) {
-            DenseNet::<I, O>::hidden_sums(&net.params, x, sums);
-        }
-        activations.iter_mut().for_each(|a| *a = a.tanh());
-        grad.fill(0.0);
-        let mut loss = 0.0;
-        for ((x, t), hidden) in self.batch.iter().zip(activations.chunks_exact(h)) {
-            loss += DenseNet::<I, O>::back_propagate(&net.params, hidden, x, t, grad);
-        }
-        let n = self.batch.len().max(1) as f64;
-        grad.iter_mut().for_each(|g| *g /= n);
-        loss / n
     }
 }
 

@@ -1,10 +1,12 @@
 //! A small dense feed-forward network (one tanh hidden layer) with back-propagation and
 //! conjugate-gradient training, shared by the `nnw` and `ffn` learners.
 
+mod batch;
 mod cg;
 mod dense;
 mod scaling;
 
+pub use batch::BatchLoss;
 pub use cg::{minimize, Objective};
-pub use dense::{BatchLoss, DenseNet};
+pub use dense::DenseNet;
 pub use scaling::InputScaling;

@@ -93,10 +93,7 @@ impl Approximator<5> for NetModel {
         let net = self.net.get_mut();
         let mut params = net.params().to_vec();
         minimize(
-            &mut BatchLoss {
-                net,
-                batch: &scaled,
-            },
+            &mut BatchLoss::new(net, &scaled),
             &mut params,
             CG_ITERATIONS,
         );

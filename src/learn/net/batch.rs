@@ -9,6 +9,7 @@
 //! ([`DenseNet::accumulate_gradient`]), so loss and gradient are the same to the bit.
 
 use super::dense::DenseNet;
+use super::tanh;
 use super::Objective;
 use nalgebra::SVector;
 
@@ -93,9 +94,11 @@ impl<'a, const I: usize, const O: usize> BatchLoss<'a, I, O> {
                 .iter()
                 .zip(self.inputs.chunks_exact(n))
             {
-                sums.iter_mut().zip(x).for_each(|(s, x)| *s += w * x);
+                add_times(sums, *w, x);
             }
-            sums.iter_mut().for_each(|s| *s += b1[j]);
+            for s in sums.iter_mut() {
+                *s += b1[j];
+            }
         }
         tanh_all(&mut self.activations);
         let rows = self.errors.chunks_exact_mut(n);
@@ -105,24 +108,22 @@ impl<'a, const I: usize, const O: usize> BatchLoss<'a, I, O> {
                 .iter()
                 .zip(self.activations.chunks_exact(n))
             {
-                errors.iter_mut().zip(a).for_each(|(e, a)| *e += w * a);
+                add_times(errors, *w, a);
             }
-            errors
-                .iter_mut()
-                .zip(targets)
-                .for_each(|(e, t)| *e = (*e + b2[k]) - t);
+            for (e, t) in errors.iter_mut().zip(targets) {
+                *e = (*e + b2[k]) - t;
+            }
         }
         let rows = self.deltas.chunks_exact_mut(n);
         for (j, (deltas, a)) in rows.zip(self.activations.chunks_exact(n)).enumerate() {
             deltas.fill(-0.0);
             for (k, e) in self.errors.chunks_exact(n).enumerate() {
-                let w = w2[k * h + j];
-                deltas.iter_mut().zip(e).for_each(|(d, e)| *d += e * w);
+                // (w·e: the same product as the pattern-by-pattern pass's e·w.)
+                add_times(deltas, w2[k * h + j], e);
             }
-            deltas
-                .iter_mut()
-                .zip(a)
-                .for_each(|(d, a)| *d *= 1.0 - a * a);
+            for (d, a) in deltas.iter_mut().zip(a) {
+                *d *= 1.0 - a * a;
+            }
         }
         for (p, row) in self.error_rows.chunks_exact_mut(padded(O)).enumerate() {
             for (k, e) in row[..O].iter_mut().enumerate() {
@@ -178,21 +179,48 @@ impl<'a, const I: usize, const O: usize> BatchLoss<'a, I, O> {
         self.forward(tanh_all);
         let loss = self.backward(grad);
         let n = self.len.max(1) as f64;
-        grad.iter_mut().for_each(|g| *g /= n);
+        for g in grad.iter_mut() {
+            *g /= n;
+        }
         loss / n
     }
 
-    /// [`Self::passes`] compiled for AVX2 (four lanes) with the library's tanh.
-    #[cfg(target_arch = "x86_64")]
+    /// [`Self::passes`] compiled for AVX2 (four lanes) and FMA, with the inline tanh
+    /// (the library's bits).
+    #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
     #[target_feature(enable = "avx2,fma")]
-    fn passes_avx2(&mut self, grad: &mut [f64]) -> f64 {
-        self.passes(grad, library_tanh_all)
+    fn passes_fma(&mut self, grad: &mut [f64]) -> f64 {
+        self.passes(grad, tanh::tanh_all)
     }
+}
+
+/// Whether the batch passes use the inline tanh: where the library's is glibc's FMA build
+/// (x86_64 Linux with glibc, on a CPU with AVX2 and FMA, as glibc itself chooses), whose
+/// bits it gives. Elsewhere they call the library's.
+#[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
+pub(super) fn inline_tanh_used() -> bool {
+    std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
+}
+
+/// Whether the batch passes use the inline tanh: not on this platform.
+#[cfg(not(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu")))]
+pub(super) fn inline_tanh_used() -> bool {
+    false
 }
 
 /// The library's tanh over every value.
 fn library_tanh_all(values: &mut [f64]) {
     values.iter_mut().for_each(|v| *v = v.tanh());
+}
+
+/// `sums[p] += w * x[p]` for every pattern p (plain loops: they vectorise inside the
+/// callers' `target_feature` code, where a library iterator's `for_each` might be left
+/// uninlined).
+#[inline(always)]
+fn add_times(sums: &mut [f64], w: f64, x: &[f64]) {
+    for (s, x) in sums.iter_mut().zip(x) {
+        *s += w * x;
+    }
 }
 
 /// `sums[l] += scale * row[l]` lane by lane (both a whole number of registers long).
@@ -213,11 +241,10 @@ impl<const I: usize, const O: usize> Objective for BatchLoss<'_, I, O> {
 
     fn evaluate(&mut self, at: &[f64], grad: &mut [f64]) -> f64 {
         self.net.params_mut().copy_from_slice(at);
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
-        {
-            // SAFETY: the CPU has both features, checked just now.
-            return unsafe { self.passes_avx2(grad) };
+        #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
+        if inline_tanh_used() {
+            // SAFETY: the CPU has AVX2 and FMA, checked just now.
+            return unsafe { self.passes_fma(grad) };
         }
         self.passes(grad, library_tanh_all)
     }

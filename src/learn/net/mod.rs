@@ -5,6 +5,7 @@ mod batch;
 mod cg;
 mod dense;
 mod scaling;
+mod tanh;
 
 pub use batch::BatchLoss;
 pub use cg::{minimize, Objective};

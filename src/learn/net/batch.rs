@@ -79,10 +79,12 @@ impl<'a, const I: usize, const O: usize> BatchLoss<'a, I, O> {
         }
     }
 
-    /// The forward pass, row by row: hidden activations (with `tanh_all` applied to all of
-    /// them at once), output errors, and the hidden units' error signals.
+    /// The forward pass, row by row: hidden activations (tanh applied to all of them at
+    /// once: the inline one if `INLINE_TANH`, else the library's), output errors, and the
+    /// hidden units' error signals. (A const parameter, not a function argument: the inline
+    /// tanh must be inlined into the caller's `target_feature` code.)
     #[inline(always)]
-    fn forward(&mut self, tanh_all: impl Fn(&mut [f64])) {
+    fn forward<const INLINE_TANH: bool>(&mut self) {
         // (Rows of at least one value: an empty batch has no rows, not rows of none.)
         let (n, h) = (self.len.max(1), self.net.hidden());
         let (w1, b1, w2, b2) = DenseNet::<I, O>::layers(self.net.params(), h);
@@ -100,7 +102,13 @@ impl<'a, const I: usize, const O: usize> BatchLoss<'a, I, O> {
                 *s += b1[j];
             }
         }
-        tanh_all(&mut self.activations);
+        if INLINE_TANH {
+            tanh::tanh_all(&mut self.activations);
+        } else {
+            for a in self.activations.iter_mut() {
+                *a = a.tanh();
+            }
+        }
         let rows = self.errors.chunks_exact_mut(n);
         for (k, (errors, targets)) in rows.zip(self.targets.chunks_exact(n)).enumerate() {
             errors.fill(-0.0);
@@ -172,11 +180,12 @@ impl<'a, const I: usize, const O: usize> BatchLoss<'a, I, O> {
         loss
     }
 
-    /// Loss and gradient at the net's current parameters, with `tanh_all` as the
+    /// Loss and gradient at the net's current parameters (the inline tanh if
+    /// `INLINE_TANH`).
     /// activation over a slice.
     #[inline(always)]
-    fn passes(&mut self, grad: &mut [f64], tanh_all: impl Fn(&mut [f64])) -> f64 {
-        self.forward(tanh_all);
+    fn passes<const INLINE_TANH: bool>(&mut self, grad: &mut [f64]) -> f64 {
+        self.forward::<INLINE_TANH>();
         let loss = self.backward(grad);
         let n = self.len.max(1) as f64;
         for g in grad.iter_mut() {
@@ -190,7 +199,14 @@ impl<'a, const I: usize, const O: usize> BatchLoss<'a, I, O> {
     #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
     #[target_feature(enable = "avx2,fma")]
     fn passes_fma(&mut self, grad: &mut [f64]) -> f64 {
-        self.passes(grad, tanh::tanh_all)
+        self.passes::<true>(grad)
+    }
+
+    /// [`Self::passes_fma`] compiled for AVX-512 (eight lanes).
+    #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
+    #[target_feature(enable = "avx512f,avx2,fma")]
+    fn passes_avx512(&mut self, grad: &mut [f64]) -> f64 {
+        self.passes::<true>(grad)
     }
 }
 
@@ -206,11 +222,6 @@ pub(super) fn inline_tanh_used() -> bool {
 #[cfg(not(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu")))]
 pub(super) fn inline_tanh_used() -> bool {
     false
-}
-
-/// The library's tanh over every value.
-fn library_tanh_all(values: &mut [f64]) {
-    values.iter_mut().for_each(|v| *v = v.tanh());
 }
 
 /// `sums[p] += w * x[p]` for every pattern p (plain loops: they vectorise inside the
@@ -243,10 +254,14 @@ impl<const I: usize, const O: usize> Objective for BatchLoss<'_, I, O> {
         self.net.params_mut().copy_from_slice(at);
         #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
         if inline_tanh_used() {
+            if std::arch::is_x86_feature_detected!("avx512f") {
+                // SAFETY: the CPU has AVX-512F, AVX2 and FMA, checked just now.
+                return unsafe { self.passes_avx512(grad) };
+            }
             // SAFETY: the CPU has AVX2 and FMA, checked just now.
             return unsafe { self.passes_fma(grad) };
         }
-        self.passes(grad, library_tanh_all)
+        self.passes::<false>(grad)
     }
 }
 

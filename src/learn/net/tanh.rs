@@ -171,30 +171,32 @@ mod tests {
         points
     }
 
-    /// Both builds of the inline tanh — plain (each `mul_add` a call of the library's
-    /// correctly rounded `fma`) and vectorised for AVX2 and FMA, as the batch runs it —
-    /// against the library's. Only where the batch uses it (the CPU has both features).
+    /// Every build of the inline tanh — plain (each `mul_add` a call of the library's
+    /// correctly rounded `fma`) and vectorised for AVX2 and for AVX-512, as the batch runs
+    /// it — against the library's. Only where the batch uses it (the CPU has AVX2 and FMA).
     fn assert_same_bits(points: &[f64]) {
         #[target_feature(enable = "avx2,fma")]
-        fn tanh_all_fma(values: &mut [f64]) {
+        fn tanh_all_avx2(values: &mut [f64]) {
             tanh_all(values);
         }
-        let mut vectorised = points.to_vec();
+        #[target_feature(enable = "avx512f,avx2,fma")]
+        fn tanh_all_avx512(values: &mut [f64]) {
+            tanh_all(values);
+        }
         assert!(inline_tanh_used());
-        // SAFETY: the CPU has AVX2 and FMA (`inline_tanh_used`).
-        unsafe { tanh_all_fma(&mut vectorised) };
-        for (&x, v) in points.iter().zip(vectorised) {
-            let (plain, library) = (tanh(x), x.tanh());
-            assert_eq!(
-                plain.to_bits(),
-                library.to_bits(),
-                "{x:e}: {plain:e} vs {library:e}"
-            );
-            assert_eq!(
-                v.to_bits(),
-                library.to_bits(),
-                "{x:e}: {v:e} vs {library:e}"
-            );
+        let (mut avx2, mut avx512) = (points.to_vec(), points.to_vec());
+        // SAFETY: the CPU has AVX2 and FMA (`inline_tanh_used`), and AVX-512 where used.
+        unsafe { tanh_all_avx2(&mut avx2) };
+        if std::arch::is_x86_feature_detected!("avx512f") {
+            unsafe { tanh_all_avx512(&mut avx512) };
+        } else {
+            avx512.copy_from_slice(&avx2);
+        }
+        for (&x, (a, b)) in points.iter().zip(avx2.into_iter().zip(avx512)) {
+            let library = x.tanh().to_bits();
+            for (build, ours) in [("plain", tanh(x)), ("AVX2", a), ("AVX-512", b)] {
+                assert_eq!(ours.to_bits(), library, "{build} tanh {x:e}: {ours:e}");
+            }
         }
     }
 

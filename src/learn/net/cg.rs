@@ -4,12 +4,21 @@
 //! every accepted step lowers the loss; on a quadratic it is exact and CG converges in as
 //! many steps as there are dimensions.
 
-/// A differentiable function of a parameter vector.
+/// A differentiable function of a parameter vector, evaluated in two steps: the value at
+/// a point, then (when the search needs it) the gradient there.
 pub trait Objective {
     /// The number of parameters.
     fn dimension(&self) -> usize;
+    /// The value at `at`.
+    fn value(&mut self, at: &[f64]) -> f64;
+    /// Writes the gradient at the point of the last [`Objective::value`] into `grad`.
+    fn gradient(&mut self, grad: &mut [f64]);
     /// The value at `at`; writes the gradient there into `grad`.
-    fn evaluate(&mut self, at: &[f64], grad: &mut [f64]) -> f64;
+    fn evaluate(&mut self, at: &[f64], grad: &mut [f64]) -> f64 {
+        let value = self.value(at);
+        self.gradient(grad);
+        value
+    }
 }
 
 const ARMIJO: f64 = 1e-4;
@@ -51,9 +60,15 @@ impl LineSearch {
                 .iter_mut()
                 .zip(x.iter().zip(direction))
                 .for_each(|(t, (v, d))| *t = v + alpha * d);
-            let f = objective.evaluate(&self.trial, &mut self.grad);
-            let f_slope = dot(&self.grad, direction);
+            let f = objective.value(&self.trial);
             let armijo = f.is_finite() && f <= value + ARMIJO * alpha * slope;
+            // (A step that does not lower the loss enough is halved without its gradient.)
+            let f_slope = if armijo {
+                objective.gradient(&mut self.grad);
+                dot(&self.grad, direction)
+            } else {
+                f64::NAN
+            };
             if armijo && self.best.as_ref().is_none_or(|b| f < b.1) {
                 self.best = Some((alpha, f, self.grad.clone()));
             }
@@ -125,7 +140,7 @@ pub fn minimize(objective: &mut impl Objective, x: &mut [f64], iterations: usize
         losses.push(loss);
     }
     // Leave the objective's state at the accepted point.
-    objective.evaluate(x, &mut search.grad);
+    objective.value(x);
     losses
 }
 
@@ -133,27 +148,35 @@ pub fn minimize(objective: &mut impl Objective, x: &mut [f64], iterations: usize
 mod tests {
     use super::*;
 
-    /// f(x) = Σ cᵢ (xᵢ − i)², an ill-conditioned quadratic.
+    /// f(x) = Σ cᵢ (xᵢ − i)², an ill-conditioned quadratic (coefficients, last point).
     #[derive(Debug)]
-    struct Quadratic(Vec<f64>);
+    struct Quadratic(Vec<f64>, Vec<f64>);
+
+    impl Quadratic {
+        fn new(coefficients: Vec<f64>) -> Self {
+            Quadratic(coefficients, Vec::new())
+        }
+    }
 
     impl Objective for Quadratic {
         fn dimension(&self) -> usize {
             self.0.len()
         }
-        fn evaluate(&mut self, at: &[f64], grad: &mut [f64]) -> f64 {
-            let mut value = 0.0;
-            for (i, (&c, &x)) in self.0.iter().zip(at).enumerate() {
-                value += c * (x - i as f64).powi(2);
+        fn value(&mut self, at: &[f64]) -> f64 {
+            self.1 = at.to_vec();
+            let terms = self.0.iter().zip(at).enumerate();
+            terms.map(|(i, (&c, &x))| c * (x - i as f64).powi(2)).sum()
+        }
+        fn gradient(&mut self, grad: &mut [f64]) {
+            for (i, (&c, &x)) in self.0.iter().zip(&self.1).enumerate() {
                 grad[i] = 2.0 * c * (x - i as f64);
             }
-            value
         }
     }
 
     #[test]
     fn cg_finds_the_minimum_of_a_quadratic() {
-        let mut objective = Quadratic(vec![1.0, 10.0, 100.0, 0.5]);
+        let mut objective = Quadratic::new(vec![1.0, 10.0, 100.0, 0.5]);
         let mut x = vec![0.0; 4];
         let losses = minimize(&mut objective, &mut x, 200);
         assert!(*losses.last().unwrap() < 1e-10, "{losses:?}");
@@ -164,7 +187,7 @@ mod tests {
 
     #[test]
     fn every_cg_step_lowers_the_loss() {
-        let mut objective = Quadratic(vec![3.0, 0.1, 30.0]);
+        let mut objective = Quadratic::new(vec![3.0, 0.1, 30.0]);
         let mut x = vec![5.0, -5.0, 5.0];
         let losses = minimize(&mut objective, &mut x, 20);
         assert!(losses.windows(2).all(|w| w[1] < w[0]), "{losses:?}");

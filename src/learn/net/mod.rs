@@ -2,6 +2,7 @@
 //! conjugate-gradient training, shared by the `nnw` and `ffn` learners.
 
 mod batch;
+mod batch_passes;
 mod cg;
 mod dense;
 mod scaling;

@@ -147,10 +147,15 @@ pub(super) fn tanh_all(values: &mut [f64]) {
 
 #[cfg(all(test, target_arch = "x86_64"))]
 mod tests {
-    use super::super::batch::inline_tanh_used;
+    use super::super::batch_passes::Build;
     use super::*;
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
+
+    /// Whether the batch passes use the inline tanh on this machine.
+    fn inline_tanh_used() -> bool {
+        Build::for_this_cpu() != Build::Library
+    }
 
     /// Points where the algorithm changes course, with their neighbours a few ulp away.
     fn boundaries() -> Vec<f64> {

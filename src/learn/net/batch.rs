@@ -34,8 +34,8 @@ pub struct BatchLoss<'a, const I: usize, const O: usize> {
     /// Hidden unit j's error signal for every pattern (hidden rows of `len`).
     pub(super) deltas: Vec<f64>,
     /// Every pattern's errors, padded with zeros to whole registers (`len` rows of
-    /// `padded(O)`; written after the forward pass, so that reading a row as a register
-    /// does not wait for the stores of its parts).
+    /// `padded(O)`; copied from `errors` at the forward pass's end, so that reading a row
+    /// as a register does not wait for the stores of its parts).
     pub(super) error_rows: Vec<f64>,
     /// Gradient sums: per hidden unit its input weights and bias (`padded(I + 1)` each),
     /// then per hidden unit and for the output biases the outputs' weights (`padded(O)`).
@@ -69,6 +69,12 @@ impl<'a, const I: usize, const O: usize> BatchLoss<'a, I, O> {
             error_rows: vec![0.0; len * padded(O)],
             sums: vec![0.0; hidden * padded(I + 1) + (hidden + 1) * padded(O)],
         }
+    }
+
+    /// The same loss computed by `build` (one this CPU runs).
+    #[cfg(test)]
+    fn with_build(self, build: Build) -> Self {
+        BatchLoss { build, ..self }
     }
 }
 
@@ -109,6 +115,22 @@ mod tests {
     use rand::{Rng, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 
+    /// Every build this CPU runs, down to the plain one.
+    fn builds_of_this_cpu() -> Vec<Build> {
+        let mut builds = vec![Build::Library];
+        #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
+        {
+            let fastest = Build::for_this_cpu();
+            if fastest != Build::Library {
+                builds.push(Build::Avx2);
+            }
+            if fastest == Build::Avx512 {
+                builds.push(Build::Avx512);
+            }
+        }
+        builds
+    }
+
     /// The batch loss against the pattern-by-pattern pass it must equal to the bit.
     fn pattern_by_pattern(
         net: &mut DenseNet<5, 3>,
@@ -126,7 +148,7 @@ mod tests {
     }
 
     #[test]
-    fn the_batch_loss_equals_the_pattern_by_pattern_pass_to_the_bit() {
+    fn every_build_of_the_batch_loss_equals_the_pattern_by_pattern_pass_to_the_bit() {
         let mut rng = ChaCha8Rng::seed_from_u64(11);
         for (hidden, len) in [(5, 300), (3, 7), (25, 41), (1, 1), (4, 0)] {
             let mut net: DenseNet<5, 3> = DenseNet::new(hidden, 2.0, &mut rng);
@@ -139,15 +161,15 @@ mod tests {
             let at = net.params().to_vec();
             let mut expected = vec![0.0; at.len()];
             let loss = pattern_by_pattern(&mut net, &batch, &mut expected);
-            let mut grad = vec![f64::NAN; at.len()];
-            let batch_loss = BatchLoss::new(&mut net, &batch).evaluate(&at, &mut grad);
-            assert_eq!(
-                batch_loss.to_bits(),
-                loss.to_bits(),
-                "{hidden} units, {len}"
-            );
             let bits = |v: &[f64]| v.iter().map(|g| g.to_bits()).collect::<Vec<_>>();
-            assert_eq!(bits(&grad), bits(&expected), "{hidden} units, {len}");
+            for build in builds_of_this_cpu() {
+                let mut grad = vec![f64::NAN; at.len()];
+                let mut objective = BatchLoss::new(&mut net, &batch).with_build(build);
+                let batch_loss = objective.evaluate(&at, &mut grad);
+                let case = format!("{build:?}, {hidden} units, {len} patterns");
+                assert_eq!(batch_loss.to_bits(), loss.to_bits(), "{case}");
+                assert_eq!(bits(&grad), bits(&expected), "{case}");
+            }
         }
     }
 }

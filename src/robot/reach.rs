@@ -3,6 +3,10 @@
 use nalgebra::Point3;
 use rand::Rng;
 
+/// Relative distance from a bound's square within which [`ReachSpace::contains`] asks
+/// `hypot` rather than trusting the squared radius.
+const RADIUS_BAND: f64 = 1e-9;
+
 /// The region the camera centre must reach (m, base frame): `r_min ≤ √(x²+y²) ≤ r_max`,
 /// `0 ≤ x`, `|y| ≤ r_max`, `z_min ≤ z ≤ z_max`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,8 +45,27 @@ impl ReachSpace {
 
     /// True when `p` lies inside.
     pub fn contains(&self, p: &Point3<f64>) -> bool {
-        let r = p.x.hypot(p.y);
-        p.x >= 0.0 && r >= self.r_min && r <= self.r_max && p.z >= self.z_min && p.z <= self.z_max
+        p.x >= 0.0 && p.z >= self.z_min && p.z <= self.z_max && self.radius_within(p.x, p.y)
+    }
+
+    /// Whether `r_min ≤ hypot(x, y) ≤ r_max`, decided from `x² + y²` where that is farther
+    /// than [`RADIUS_BAND`] (relative) from a bound's square, and by `hypot` itself
+    /// otherwise. Both roundings (the sum's, `hypot`'s) are below 1e-15 relative for a
+    /// normal sum, so outside the band the two tests cannot disagree.
+    fn radius_within(&self, x: f64, y: f64) -> bool {
+        let squared = x * x + y * y;
+        if squared.is_normal() {
+            let (inner, outer) = (self.r_min * self.r_min, self.r_max * self.r_max);
+            let (low, high) = (1.0 - RADIUS_BAND, 1.0 + RADIUS_BAND);
+            if squared < inner * low || squared > outer * high {
+                return false;
+            }
+            if squared > inner * high && squared < outer * low {
+                return true;
+            }
+        }
+        let r = x.hypot(y);
+        r >= self.r_min && r <= self.r_max
     }
 
     /// The volume (m³).
@@ -63,6 +86,52 @@ impl ReachSpace {
             if self.contains(&p) {
                 return p;
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::SeedableRng;
+
+    /// The decision `hypot` alone gives.
+    fn by_hypot(space: &ReachSpace, p: &Point3<f64>) -> bool {
+        let r = p.x.hypot(p.y);
+        p.x >= 0.0
+            && r >= space.r_min
+            && r <= space.r_max
+            && p.z >= space.z_min
+            && p.z <= space.z_max
+    }
+
+    #[test]
+    fn squared_radius_decides_as_hypot_does_at_and_off_the_bounds() {
+        let space = ReachSpace::OSCAR6;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
+        let mut on_bound = 0;
+        for _ in 0..20_000 {
+            let angle: f64 = rng.random_range(-1.6..1.6);
+            let bound = if rng.random_bool(0.5) {
+                space.r_min
+            } else {
+                space.r_max
+            };
+            // A few ulps either side of a bound, or anywhere in the box.
+            let r = if rng.random_bool(0.5) {
+                on_bound += 1;
+                let ulps: i64 = rng.random_range(-4..=4);
+                f64::from_bits((bound.to_bits() as i64 + ulps) as u64)
+            } else {
+                rng.random_range(0.0..1.2)
+            };
+            let p = Point3::new(r * angle.cos(), r * angle.sin(), 0.1);
+            assert_eq!(space.contains(&p), by_hypot(&space, &p), "{p:?}");
+        }
+        assert!(on_bound > 5_000);
+        for odd in [f64::NAN, f64::INFINITY, 1e-200, 1e200] {
+            let p = Point3::new(0.5, odd, 0.1);
+            assert_eq!(space.contains(&p), by_hypot(&space, &p), "{p:?}");
         }
     }
 }

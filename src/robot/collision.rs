@@ -225,7 +225,7 @@ impl FloorRule {
         floor: f64,
     ) -> bool {
         let (bodies, reaches) = (&self.bodies, &self.reaches);
-        let turns = joint_turns(model, delta);
+        let speeds = link_sinking_speeds(model, reaches, delta);
         start
             .pose
             .frames
@@ -234,13 +234,7 @@ impl FloorRule {
             .enumerate()
             .all(|(i, (frame, elements))| {
                 let k = i + 1;
-                let sinking = sinking_speeds(model, &turns, |joint| {
-                    if joint < k {
-                        reaches.body[joint][k]
-                    } else {
-                        0.0
-                    }
-                });
+                let sinking = speeds[i];
                 let room = |lowest: f64| lowest - sinking * up_to - floor;
                 // No point of the link lies farther from its frame's origin than its own
                 // reach: a looser bound, checked first, spares most links the exact one.
@@ -253,8 +247,8 @@ impl FloorRule {
     /// How far along the controlled move from every joint at `start` by `delta` (fractions
     /// up to `up_to`) the arm gets before a link or the camera would go below `floor` (m):
     /// `up_to` when none does, or when the arm starts below it. Marches in steps that cannot
-    /// skip a dip (each no longer than the clearance over the arm's sinking speed allows),
-    /// then bisects the crossing.
+    /// skip a dip (each no longer than every link's own clearance over its own sinking speed
+    /// allows), then bisects the crossing.
     pub(crate) fn stop(
         &self,
         model: &ArmModel,
@@ -267,37 +261,47 @@ impl FloorRule {
         let theta = &start.theta;
         // A numerical wrist starts from the last pose looked at.
         let near = std::cell::Cell::new(start.pose.joints);
-        let clearance = |s: f64| {
+        // Each link's gap over the floor (m) at fraction `s`, NaN where the wrist fails.
+        let gaps = |s: f64| {
             let pose = model.pose_near(&(theta + delta * s), &near.get());
             if pose.wrist_found {
                 near.set(pose.joints);
-                lowest_of(&pose.frames, bodies) - floor
+                link_gaps(&pose.frames, bodies, floor)
             } else {
-                f64::NAN
+                [f64::NAN; MAX_JOINTS]
             }
         };
+        let clearance = |s: f64| lowest_gap(&gaps(s), bodies.len());
         if start.pose.wrist_found && self.clear_of_floor(model, start, delta, up_to, floor) {
             return up_to;
         }
-        let speed = sinking_speed(model, reaches, delta);
+        let speeds = link_sinking_speeds(model, reaches, delta);
         let mut s = 0.0;
         let mut gap = if start.pose.wrist_found {
             near.set(start.pose.joints);
-            lowest_of(&start.pose.frames, bodies) - floor
+            link_gaps(&start.pose.frames, bodies, floor)
         } else {
-            f64::NAN
+            [f64::NAN; MAX_JOINTS]
         };
-        if gap.is_nan() || gap < 0.0 || speed == 0.0 {
+        let links = bodies.len();
+        let lowest = lowest_gap(&gap, links);
+        if lowest.is_nan() || lowest < 0.0 || sinking_speed(model, reaches, delta) == 0.0 {
             return up_to;
         }
         while s < up_to {
-            let next = s + (gap / speed).max(MIN_MARCH);
-            if next >= up_to && gap >= speed * (up_to - s) {
+            // No link can reach the floor before its own gap over its own sinking speed.
+            let safe = (0..links)
+                .filter(|&k| speeds[k] > 0.0 || gap[k].is_nan())
+                .map(|k| gap[k] / speeds[k])
+                .fold(f64::INFINITY, nan_or_min);
+            let next = s + safe.max(MIN_MARCH);
+            let rest = up_to - s;
+            if next >= up_to && (0..links).all(|k| gap[k] >= speeds[k] * rest) {
                 return up_to; // the rest of the move cannot reach the floor
             }
             let next = next.min(up_to);
-            let next_gap = clearance(next);
-            if next_gap < 0.0 {
+            let next_gap = gaps(next);
+            if lowest_gap(&next_gap, links) < 0.0 {
                 let (mut above, mut below) = (s, next);
                 for _ in 0..FLOOR_BISECTIONS {
                     let middle = 0.5 * (above + below);
@@ -313,6 +317,53 @@ impl FloorRule {
         }
         up_to
     }
+}
+
+/// Each link's lowest z (m) over `floor` with links placed at `frames` (`bodies[k]` for
+/// link k + 1; unused entries infinite).
+fn link_gaps(frames: &Frames, bodies: &[Elements], floor: f64) -> [f64; MAX_JOINTS] {
+    let mut gaps = [f64::INFINITY; MAX_JOINTS];
+    for ((gap, frame), elements) in gaps.iter_mut().zip(frames).zip(bodies) {
+        *gap = lowest_of_link(frame, elements) - floor;
+    }
+    gaps
+}
+
+/// The smallest of the first `links` gaps (m), NaN when any is (the wrist failed).
+fn lowest_gap(gaps: &[f64; MAX_JOINTS], links: usize) -> f64 {
+    gaps[..links]
+        .iter()
+        .copied()
+        .fold(f64::INFINITY, nan_or_min)
+}
+
+/// The smaller of `a` and `b`, NaN when either is.
+fn nan_or_min(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() {
+        f64::NAN
+    } else {
+        a.min(b)
+    }
+}
+
+/// How fast (m per unit fraction of the move by `delta`) each link can sink (entry k for
+/// link k + 1): its joints' turns times its own reaches ([`Reaches::body`]).
+fn link_sinking_speeds(
+    model: &ArmModel,
+    reaches: &Reaches,
+    delta: &Controlled,
+) -> [f64; MAX_JOINTS] {
+    let turns = joint_turns(model, delta);
+    std::array::from_fn(|i| {
+        let k = i + 1;
+        sinking_speeds(model, &turns, |joint| {
+            if joint < k {
+                reaches.body[joint][k]
+            } else {
+                0.0
+            }
+        })
+    })
 }
 
 /// The lowest world height (m) of `shape` at world pose `pose`.

@@ -171,23 +171,30 @@ pub(crate) fn joint_turns(model: &ArmModel, delta: &Controlled) -> [f64; MAX_JOI
 /// the world: a turn about it lowers a point by at most its reach times the sine of the
 /// axis's angle to the vertical (nothing for a base yaw).
 fn sinking_speed(model: &ArmModel, reaches: &Reaches, delta: &Controlled) -> f64 {
-    sinking_speeds(model, &joint_turns(model, delta), |joint| {
+    let turns = joint_turns(model, delta);
+    sinking_speeds(&turns, first_tilt(model), model.dof(), |joint| {
         reaches.joint[joint]
     })
 }
 
-/// How fast (m per unit fraction of the move) points as far as `reach(j)` from each joint
-/// j's axis can sink when the joints turn by `turns` (see [`sinking_speed`]).
+/// The sine of the first joint's axis's angle to the vertical (0 for a base yaw).
+fn first_tilt(model: &ArmModel) -> f64 {
+    let first = &model.joints()[0];
+    (first.origin.rotation * first.axis.into_inner())
+        .cross(&Vector3::z())
+        .norm()
+}
+
+/// How fast (m per unit fraction of the move) points as far as `reach(j)` from each of the
+/// first `joints` joints' axes can sink when the joints turn by `turns`, the first one's
+/// share times `first_tilt` (see [`sinking_speed`]).
 fn sinking_speeds(
-    model: &ArmModel,
     turns: &[f64; MAX_JOINTS],
+    first_tilt: f64,
+    joints: usize,
     reach: impl Fn(usize) -> f64,
 ) -> f64 {
-    let first = &model.joints()[0];
-    let first_tilt = (first.origin.rotation * first.axis.into_inner())
-        .cross(&Vector3::z())
-        .norm();
-    (0..model.dof())
+    (0..joints)
         .map(|joint| {
             let tilt = if joint == 0 { first_tilt } else { 1.0 };
             turns[joint] * reach(joint) * tilt
@@ -354,16 +361,14 @@ fn link_sinking_speeds(
     delta: &Controlled,
 ) -> [f64; MAX_JOINTS] {
     let turns = joint_turns(model, delta);
-    std::array::from_fn(|i| {
+    let tilt = first_tilt(model);
+    let mut speeds = [0.0; MAX_JOINTS];
+    // Link k moves with the joints before it alone.
+    for (i, speed) in speeds.iter_mut().enumerate().take(model.dof()) {
         let k = i + 1;
-        sinking_speeds(model, &turns, |joint| {
-            if joint < k {
-                reaches.body[joint][k]
-            } else {
-                0.0
-            }
-        })
-    })
+        *speed = sinking_speeds(&turns, tilt, k, |joint| reaches.body[joint][k]);
+    }
+    speeds
 }
 
 /// The lowest world height (m) of `shape` at world pose `pose`.
@@ -524,13 +529,10 @@ mod tests {
             let turns = joint_turns(&model, &delta);
             // The whole arm's bound, then each link's own (link k: `bodies[k - 1]`).
             let mut speeds = vec![sinking_speed(&model, &reaches, &delta)];
-            speeds.extend((1..=6).map(|k| {
-                sinking_speeds(
-                    &model,
-                    &turns,
-                    |j| if j < k { reaches.body[j][k] } else { 0.0 },
-                )
-            }));
+            speeds
+                .extend((1..=6).map(|k| {
+                    sinking_speeds(&turns, first_tilt(&model), k, |j| reaches.body[j][k])
+                }));
             let lowest = |s: f64| {
                 let frames = model.link_frames(&model.pose_of(&(from + delta * s)).joints);
                 let mut lows = vec![lowest_of(&frames, &bodies)];

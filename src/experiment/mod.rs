@@ -5,6 +5,7 @@ mod config;
 mod config_values;
 mod events;
 mod failures;
+mod fixed_six;
 mod interrupt;
 mod memory;
 mod output;

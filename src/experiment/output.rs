@@ -7,6 +7,7 @@
 //! twice a second, even while a trial is stuck, so a file only ever grows by whole lines
 //! (a killed run may leave at most a torn last line when the disk fills mid-write).
 
+use super::fixed_six::{push_integer, push_six_decimals};
 use crate::control::{TrialOutcome, MAX_RECORDED_STEPS};
 use crate::learn::{LearnerStats, ModelEvent};
 use std::fs::File;
@@ -136,19 +137,29 @@ impl DataFiles {
         stats: &LearnerStats,
     ) -> io::Result<()> {
         // (Formatted once for the eight lines that carry it.)
-        let minutes = format!("{:.6}", self.minutes());
+        let mut minutes = Vec::with_capacity(24);
+        push_six_decimals(&mut minutes, self.minutes());
         let mut lines = self.lines()?;
         let files = &mut lines.files;
+        // "{trial} {value} {minutes}\n", as `writeln!` would write it.
+        let line = |out: &mut Vec<u8>, value: &dyn Fn(&mut Vec<u8>)| {
+            push_integer(out, trial);
+            out.push(b' ');
+            value(out);
+            out.push(b' ');
+            out.extend_from_slice(&minutes);
+            out.push(b'\n');
+        };
         let step_files = &mut files[..MAX_RECORDED_STEPS];
-        for (file, distance) in step_files.iter_mut().zip(&outcome.distances_mm) {
-            writeln!(file.pending, "{trial} {distance:.6} {minutes}")?;
+        for (file, &distance) in step_files.iter_mut().zip(&outcome.distances_mm) {
+            line(&mut file.pending, &|out| push_six_decimals(out, distance));
         }
         for (index, count) in [
             (NODES, stats.nodes),
             (BINS, stats.bins),
             (PATTERNS, stats.patterns),
         ] {
-            writeln!(files[index].pending, "{trial} {count} {minutes}")?;
+            line(&mut files[index].pending, &|out| push_integer(out, count));
         }
         Ok(())
     }

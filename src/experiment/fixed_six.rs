@@ -25,7 +25,7 @@ pub(crate) fn push_six_decimals(out: &mut Vec<u8>, x: f64) {
         _ => (fraction | 1 << 52, 1075 - exponent),
     };
     let scaled = u128::from(mantissa) * MICRO;
-    let millionths = if shift >= 128 {
+    let millionths: u128 = if shift >= 128 {
         // scaled < 2⁷³ is below half of 2^shift: rounds to 0.
         0
     } else {
@@ -34,7 +34,9 @@ pub(crate) fn push_six_decimals(out: &mut Vec<u8>, x: f64) {
         let half = 1u128 << (shift - 1);
         let up = rest > half || (rest == half && whole & 1 == 1);
         whole + u128::from(up)
-    } as u64;
+    };
+    // Below 2³³ · 10⁶ < 2⁵³.
+    let millionths = millionths as u64;
     push_integer(out, millionths / MICRO as u64);
     out.push(b'.');
     let decimals = millionths % MICRO as u64;

@@ -219,20 +219,18 @@ impl FloorRule {
         FloorRule { bodies, reaches }
     }
 
-    /// Whether no link can get below `floor` (m) anywhere in the move by `delta` up to
-    /// fraction `up_to`, judged at once from the start: each link's lowest point there less how
-    /// far that link can sink over the move (its joints' turns times its own reaches), with
+    /// Whether no link can get below `floor` (m) anywhere in the move up to fraction
+    /// `up_to`, judged at once from the start: each link's lowest point there less how far
+    /// that link can sink over the move (`speeds`, from [`link_sinking_speeds`]), with
     /// [`FLOOR_MARGIN`] to spare. The march finds no crossing where this holds.
     fn clear_of_floor(
         &self,
-        model: &ArmModel,
         start: &MoveStart,
-        delta: &Controlled,
+        speeds: &[f64; MAX_JOINTS],
         up_to: f64,
         floor: f64,
     ) -> bool {
         let (bodies, reaches) = (&self.bodies, &self.reaches);
-        let speeds = link_sinking_speeds(model, reaches, delta);
         start
             .pose
             .frames
@@ -279,10 +277,10 @@ impl FloorRule {
             }
         };
         let clearance = |s: f64| lowest_gap(&gaps(s), bodies.len());
-        if start.pose.wrist_found && self.clear_of_floor(model, start, delta, up_to, floor) {
+        let speeds = link_sinking_speeds(model, reaches, delta);
+        if start.pose.wrist_found && self.clear_of_floor(start, &speeds, up_to, floor) {
             return up_to;
         }
-        let speeds = link_sinking_speeds(model, reaches, delta);
         let mut s = 0.0;
         let mut gap = if start.pose.wrist_found {
             near.set(start.pose.joints);

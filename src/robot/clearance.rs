@@ -17,6 +17,7 @@
 
 use super::collision::{body_elements, joint_turns, Elements, MoveStart};
 use super::dynamic::{parts, to_pose};
+use super::motion::last_holding;
 use super::world::Obstacle;
 use super::{ArmModel, Controlled, Frames, Joints, Shape, MAX_JOINTS};
 use nalgebra::{Isometry3, Point3, Translation3, Vector3};
@@ -28,8 +29,6 @@ use rapier3d_f64::parry::shape::SharedShape;
 const NEAR: f64 = 0.01;
 /// The shortest step of the march (a fraction of the move).
 const MIN_MARCH: f64 = 1e-3;
-/// Bisection steps that find where a move meets contact (1e-12 of a move).
-const BISECTIONS: usize = 40;
 /// The room (m) a known distance bound must leave over what a move can close for the
 /// move to go unmeasured.
 const KNOWN_GAP_MARGIN: f64 = 1e-9;
@@ -280,16 +279,10 @@ impl ArmGeometry {
             let next = (s + now.max(MIN_MARCH)).min(up_to);
             let then = allowance(next);
             if then <= 0.0 {
-                let (mut apart, mut touching) = (s, next);
-                for _ in 0..BISECTIONS {
-                    let middle = 0.5 * (apart + touching);
-                    if allowance(middle) <= 0.0 {
-                        touching = middle;
-                    } else {
-                        apart = middle;
-                    }
-                }
-                return apart;
+                return last_holding(s, next, |middle| {
+                    let allow = allowance(middle);
+                    allow > 0.0 || allow.is_nan()
+                });
             }
             (s, now) = (next, then);
         }

@@ -2,6 +2,7 @@
 //! as the arm is now (the camera on link 6, a stretched link's shapes grown with it), and
 //! how low they reach — the floor rule both simulators share.
 
+use super::motion::last_holding;
 use super::{ArmModel, ArmPose, Controlled, Frames, Joints, Shape, MAX_JOINTS};
 use nalgebra::{Isometry3, Translation3, Unit, Vector3};
 
@@ -15,8 +16,6 @@ pub const DEFAULT_FLOOR_Z: f64 = -0.22;
 
 /// The shortest step of the floor march (a fraction of the move).
 const MIN_MARCH: f64 = 1e-3;
-/// Bisection steps that find where a move meets the floor (1e-12 of a move).
-const FLOOR_BISECTIONS: usize = 40;
 /// The room (m) the bound of a whole move must leave above the floor to skip the march.
 const FLOOR_MARGIN: f64 = 1e-9;
 
@@ -307,16 +306,11 @@ impl FloorRule {
             let next = next.min(up_to);
             let next_gap = gaps(next);
             if lowest_gap(&next_gap, links) < 0.0 {
-                let (mut above, mut below) = (s, next);
-                for _ in 0..FLOOR_BISECTIONS {
-                    let middle = 0.5 * (above + below);
-                    if clearance(middle) < 0.0 {
-                        below = middle;
-                    } else {
-                        above = middle;
-                    }
-                }
-                return above;
+                // (A failed wrist, NaN, counts as above the floor, as in the march.)
+                return last_holding(s, next, |middle| {
+                    let gap = clearance(middle);
+                    gap >= 0.0 || gap.is_nan()
+                });
             }
             (s, gap) = (next, next_gap);
         }

@@ -5,16 +5,13 @@ use super::clearance::ArmGeometry;
 use super::collision::{body_elements, FloorRule, MoveStart};
 use super::dynamic::compound;
 use super::model::{ArmModel, Controlled, Frames};
-use super::motion::{limit_stop_fraction, TrapezoidProfile};
+use super::motion::{last_holding, limit_stop_fraction, TrapezoidProfile};
 use super::simulator::{MoveReport, MoveSettings, SimWork, Simulator};
 use super::world::{Obstacle, WorldView, SEEN_BODIES};
 use super::Joints;
 use super::RobotError;
 use nalgebra::{Isometry3, Vector3};
 use rapier3d_f64::parry::shape::SharedShape;
-
-/// Bisection steps that find where the wrist angle meets its limit (1e-12 of a move).
-const WRIST_LIMIT_BISECTIONS: usize = 40;
 
 /// An arm moved by forward kinematics alone.
 #[derive(Debug, Clone)]
@@ -102,19 +99,12 @@ impl KinematicSim {
     /// The last fraction of the way along `delta` at which the wrist still has a solution
     /// inside its limits, assuming it has at `0` and not at `limit`.
     fn wrist_stop(&self, delta: &Controlled, limit: f64) -> f64 {
-        let (mut inside, mut outside) = (0.0, limit);
-        for _ in 0..WRIST_LIMIT_BISECTIONS {
-            let middle = 0.5 * (inside + outside);
+        last_holding(0.0, limit, |middle| {
             let pose = self
                 .model
                 .pose_near(&(self.here.theta + delta * middle), &self.here.pose.joints);
-            if self.model.wrist_fits(&pose) {
-                inside = middle;
-            } else {
-                outside = middle;
-            }
-        }
-        inside
+            self.model.wrist_fits(&pose)
+        })
     }
 }
 

@@ -1,5 +1,5 @@
 //! Moves in joint space: a straight line under a trapezoidal speed profile, stopped at the
-//! first joint limit on the way.
+//! first joint limit on the way, and the bisection that finds where a move must stop.
 
 use nalgebra::Vector3;
 
@@ -88,6 +88,24 @@ pub fn limit_stop_fraction(
             ((bound - start[i]) / delta[i]).clamp(0.0, 1.0)
         })
         .fold(1.0, f64::min)
+}
+
+/// Bisection steps that find where a move must stop (1e-12 of a move).
+pub(crate) const STOP_BISECTIONS: usize = 40;
+
+/// The last fraction of a move found by [`STOP_BISECTIONS`] halvings of [`from`, `to`]
+/// at which `holds` is still true, given that it holds at `from` and not at `to`.
+pub(crate) fn last_holding(from: f64, to: f64, mut holds: impl FnMut(f64) -> bool) -> f64 {
+    let (mut good, mut bad) = (from, to);
+    for _ in 0..STOP_BISECTIONS {
+        let middle = 0.5 * (good + bad);
+        if holds(middle) {
+            good = middle;
+        } else {
+            bad = middle;
+        }
+    }
+    good
 }
 
 #[cfg(test)]

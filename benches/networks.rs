@@ -3,12 +3,19 @@
 //! markdown table: mean distance (mm) after steps 1..5 and 8 over the last 10% of the
 //! trials, trials per second, peak memory.
 //!
-//! `cargo bench --bench networks` (all rows, about 12 minutes on one core), or name rows:
-//! `cargo bench --bench networks -- ffn kohonen`.
+//! A second table runs `nnw` over seeds 1–40 (one seed's 3-step distance moves by ±0.1 mm
+//! with any change of its trajectory, so precision is judged by the seeds' mean).
+//!
+//! `cargo bench --bench networks` (all rows, about 16 minutes on one core), or name rows:
+//! `cargo bench --bench networks -- ffn kohonen nnw-seeds`.
 
 mod common;
 
 use common::{mm, run_cli};
+use std::path::Path;
+
+/// The seeds of the `nnw-seeds` table.
+const NNW_SEEDS: std::ops::RangeInclusive<u64> = 1..=40;
 
 const ROWS: [(&str, &str, &str); 3] = [
     ("nnw", "nnw.conf", "2000"),
@@ -21,11 +28,12 @@ fn main() {
         .skip(1)
         .filter(|a| !a.starts_with('-'))
         .collect();
+    let asked = |row: &str| wanted.is_empty() || wanted.iter().any(|w| w == row);
     let data = tempfile::tempdir().expect("a temporary data folder");
     println!("| method | trials | 1 | 2 | 3 | 4 | 5 | 8 | trials/s | peak MB | nodes |");
     println!("|---|---|---|---|---|---|---|---|---|---|---|");
     for (method, config, trials) in ROWS {
-        if !wanted.is_empty() && !wanted.iter().any(|w| w == method) {
+        if !asked(method) {
             continue;
         }
         let config = format!("{}/configs/{config}", env!("CARGO_MANIFEST_DIR"));
@@ -47,5 +55,55 @@ fn main() {
     }
     println!(
         "\nmean distance (mm) after each feedback step over the last 10% of the trials, seed 1"
+    );
+    if asked("nnw-seeds") {
+        nnw_over_seeds(data.path());
+    }
+}
+
+/// Mean and standard deviation of `values`.
+fn mean_sd(values: &[f64]) -> (f64, f64) {
+    let n = values.len() as f64;
+    let mean = values.iter().sum::<f64>() / n;
+    let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
+    (mean, var.sqrt())
+}
+
+/// `nnw` over 2,000 trials of each of [`NNW_SEEDS`]: the seeds' mean ± standard deviation
+/// of the mean distance after steps 1, 3 and 5, of the failures and of trials/s.
+fn nnw_over_seeds(data: &Path) {
+    let config = format!("{}/configs/nnw.conf", env!("CARGO_MANIFEST_DIR"));
+    let mut columns: [Vec<f64>; 5] = Default::default();
+    for seed in NNW_SEEDS {
+        let seed = seed.to_string();
+        let run = run_cli(
+            data,
+            &["--config", &config, "--trials", "2000", "--seed", &seed],
+        );
+        let s = &run.summary;
+        let step = |i: usize| s.mean_distance_mm[i].expect("every run takes five steps");
+        let figures = [
+            step(0),
+            step(2),
+            step(4),
+            s.failures as f64,
+            s.trials_per_second,
+        ];
+        columns.iter_mut().zip(figures).for_each(|(c, f)| c.push(f));
+    }
+    let cells: Vec<String> = columns
+        .iter()
+        .map(|c| {
+            let (mean, sd) = mean_sd(c);
+            format!("{mean:.4} ± {sd:.4}")
+        })
+        .collect();
+    println!("\n| method | seeds | 1 | 3 | 5 | failures | trials/s |");
+    println!("|---|---|---|---|---|---|---|");
+    let (first, last) = (NNW_SEEDS.start(), NNW_SEEDS.end());
+    println!("| nnw | {first}–{last} | {} |", cells.join(" | "));
+    println!(
+        "\nmean ± standard deviation over the seeds of the mean distance (mm) after steps 1, 3 \
+         and 5 over each run's last 200 trials, of its failures and of its trials/s"
     );
 }

@@ -86,23 +86,23 @@ impl<const I: usize, const O: usize> Objective for BatchLoss<'_, I, O> {
     fn value(&mut self, at: &[f64]) -> f64 {
         self.net.params_mut().copy_from_slice(at);
         match self.build {
-            Build::Library => self.forward::<false>(),
-            #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
-            // SAFETY: the CPU has AVX2 and FMA (`Build::for_this_cpu`).
+            Build::Plain => self.forward(),
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: the CPU has AVX2 (`Build::for_this_cpu`).
             Build::Avx2 => unsafe { self.forward_avx2() },
-            #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
-            // SAFETY: the CPU has AVX-512F, AVX2 and FMA (`Build::for_this_cpu`).
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: the CPU has AVX-512F and AVX2 (`Build::for_this_cpu`).
             Build::Avx512 => unsafe { self.forward_avx512() },
         }
     }
 
     fn gradient(&mut self, grad: &mut [f64]) {
         match self.build {
-            Build::Library => self.backward(grad),
-            #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
+            Build::Plain => self.backward(grad),
+            #[cfg(target_arch = "x86_64")]
             // SAFETY: as in `value`.
             Build::Avx2 => unsafe { self.backward_avx2(grad) },
-            #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
+            #[cfg(target_arch = "x86_64")]
             // SAFETY: as in `value`.
             Build::Avx512 => unsafe { self.backward_avx512(grad) },
         }
@@ -117,11 +117,11 @@ mod tests {
 
     /// Every build this CPU runs, down to the plain one.
     fn builds_of_this_cpu() -> Vec<Build> {
-        let mut builds = vec![Build::Library];
-        #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
+        let mut builds = vec![Build::Plain];
+        #[cfg(target_arch = "x86_64")]
         {
             let fastest = Build::for_this_cpu();
-            if fastest != Build::Library {
+            if fastest != Build::Plain {
                 builds.push(Build::Avx2);
             }
             if fastest == Build::Avx512 {

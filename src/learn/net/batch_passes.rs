@@ -21,44 +21,40 @@ pub(super) fn padded(len: usize) -> usize {
     len.next_multiple_of(LANES)
 }
 
-/// The build of the passes a CPU runs. All give the same bits.
+/// The build of the passes a CPU runs. All give the same bits: they do the same
+/// operations, only more of them at once.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Build {
-    /// Plain x86_64 (two lanes) or another platform, with the library's tanh.
-    Library,
-    /// AVX2 (four lanes) and FMA, with the inline tanh (glibc's FMA build: the library's
-    /// bits; glibc picks that build on these CPUs too).
-    #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
+    /// The platform's baseline (two lanes on x86_64).
+    Plain,
+    /// AVX2 (four lanes).
+    #[cfg(target_arch = "x86_64")]
     Avx2,
-    /// As `Avx2`, with AVX-512F (eight lanes).
-    #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
+    /// AVX-512F (eight lanes).
+    #[cfg(target_arch = "x86_64")]
     Avx512,
 }
 
 impl Build {
-    /// The fastest build this CPU runs: the inline tanh only where the library's `tanh` is
-    /// glibc's FMA build (x86_64 Linux with glibc, a CPU with AVX2 and FMA).
+    /// The fastest build this CPU runs.
     pub(super) fn for_this_cpu() -> Build {
-        #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
-        if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
-        {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
             return if std::arch::is_x86_feature_detected!("avx512f") {
                 Build::Avx512
             } else {
                 Build::Avx2
             };
         }
-        Build::Library
+        Build::Plain
     }
 }
 
 impl<const I: usize, const O: usize> BatchLoss<'_, I, O> {
     /// The forward pass, row by row: hidden activations (tanh applied to all of them at
-    /// once: the inline one if `INLINE_TANH`, else the library's — a const parameter, so
-    /// that the inline one is inlined into the caller's `target_feature` code), output
-    /// errors; returns the mean loss.
+    /// once), output errors; returns the mean loss.
     #[inline(always)]
-    pub(super) fn forward<const INLINE_TANH: bool>(&mut self) -> f64 {
+    pub(super) fn forward(&mut self) -> f64 {
         // (Rows of at least one value: an empty batch has no rows, not rows of none.)
         let (n, h) = (self.len.max(1), self.net.hidden());
         let (w1, b1, w2, b2) = DenseNet::<I, O>::layers(self.net.params(), h);
@@ -74,13 +70,7 @@ impl<const I: usize, const O: usize> BatchLoss<'_, I, O> {
                 *s += b1[j];
             }
         }
-        if INLINE_TANH {
-            tanh::tanh_all(&mut self.activations);
-        } else {
-            for a in self.activations.iter_mut() {
-                *a = a.tanh();
-            }
-        }
+        tanh::tanh_all(&mut self.activations);
         let rows = self.errors.chunks_exact_mut(n);
         for (k, (errors, targets)) in rows.zip(self.targets.chunks_exact(n)).enumerate() {
             errors.fill(-0.0);
@@ -155,30 +145,30 @@ impl<const I: usize, const O: usize> BatchLoss<'_, I, O> {
         }
     }
 
-    /// [`Self::forward`] compiled for AVX2 and FMA, with the inline tanh.
-    #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
-    #[target_feature(enable = "avx2,fma")]
+    /// [`Self::forward`] compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
     pub(super) fn forward_avx2(&mut self) -> f64 {
-        self.forward::<true>()
+        self.forward()
     }
 
-    /// [`Self::forward`] compiled for AVX-512F, AVX2 and FMA, with the inline tanh.
-    #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
-    #[target_feature(enable = "avx512f,avx2,fma")]
+    /// [`Self::forward`] compiled for AVX-512F.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f,avx2")]
     pub(super) fn forward_avx512(&mut self) -> f64 {
-        self.forward::<true>()
+        self.forward()
     }
 
-    /// [`Self::backward`] compiled for AVX2 and FMA.
-    #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
-    #[target_feature(enable = "avx2,fma")]
+    /// [`Self::backward`] compiled for AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
     pub(super) fn backward_avx2(&mut self, grad: &mut [f64]) {
         self.backward(grad);
     }
 
-    /// [`Self::backward`] compiled for AVX-512F, AVX2 and FMA.
-    #[cfg(all(target_arch = "x86_64", target_os = "linux", target_env = "gnu"))]
-    #[target_feature(enable = "avx512f,avx2,fma")]
+    /// [`Self::backward`] compiled for AVX-512F.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx512f,avx2")]
     pub(super) fn backward_avx512(&mut self, grad: &mut [f64]) {
         self.backward(grad);
     }

@@ -2,6 +2,7 @@
 //! one flat parameter vector (for conjugate gradients); the hidden buffers are allocated
 //! once, so a forward or backward pass allocates nothing.
 
+use super::tanh::tanh;
 use nalgebra::SVector;
 use rand::Rng;
 
@@ -62,7 +63,7 @@ impl<const I: usize, const O: usize> DenseNet<I, O> {
             for i in 0..I {
                 sum += row[i] * x[i];
             }
-            *a = (sum + b).tanh();
+            *a = tanh(sum + b);
         }
     }
 

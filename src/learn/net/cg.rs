@@ -66,6 +66,22 @@ fn safeguard(guess: f64, fallback: f64, low: f64, high: f64) -> f64 {
     }
 }
 
+/// The far end of a bracket: its step, the loss there and its slope if computed.
+type FarPoint = (f64, f64, Option<f64>);
+
+/// The next step inside the bracket from `low` to `far`: the interpolated minimum, kept a
+/// tenth of the bracket away from either end (its middle where the guess is not finite).
+fn inside(low: LinePoint, far: FarPoint) -> f64 {
+    let (h, h_value, h_slope) = far;
+    let guess = match h_slope {
+        Some(s) => cubic_minimum(low, (h, h_value, s)),
+        None => quadratic_minimum(low, (h, h_value)),
+    };
+    let width = h - low.0;
+    let (inner, outer) = (low.0 + 0.1 * width, h - 0.1 * width);
+    safeguard(guess, low.0 + 0.5 * width, inner, outer)
+}
+
 /// Scratch space and the point reached by a line search.
 #[derive(Debug)]
 struct LineSearch {
@@ -102,7 +118,7 @@ impl LineSearch {
         // The bracket: `low` passed the Armijo test and still descends (step 0 at first);
         // `high`, once found, lies past the minimum: its step, loss and slope if computed.
         let mut low: LinePoint = (0.0, value, slope);
-        let mut high: Option<(f64, f64, Option<f64>)> = None;
+        let mut high: Option<FarPoint> = None;
         let mut alpha = step;
         for _ in 0..MAX_LINE_STEPS {
             self.trial
@@ -111,9 +127,9 @@ impl LineSearch {
                 .for_each(|(t, (v, d))| *t = v + alpha * d);
             let f = objective.value(&self.trial);
             let armijo = f.is_finite() && f <= value + ARMIJO * alpha * slope;
-            if !armijo || f >= low.1 {
+            let far = if !armijo || f >= low.1 {
                 // Past the minimum, whatever the slope there: it is not computed.
-                high = Some((alpha, f, None));
+                (alpha, f, None)
             } else {
                 objective.gradient(&mut self.grad);
                 let f_slope = dot(&self.grad, direction);
@@ -125,27 +141,20 @@ impl LineSearch {
                     return Some((alpha, f));
                 }
                 if f_slope > 0.0 {
-                    high = Some((alpha, f, Some(f_slope)));
+                    (alpha, f, Some(f_slope))
                 } else {
                     let previous = std::mem::replace(&mut low, (alpha, f, f_slope));
-                    if high.is_none() {
+                    let Some(far) = high else {
                         // Still descending and nothing past the minimum yet: step out.
                         let guess = cubic_minimum(previous, low);
                         alpha = safeguard(guess, 2.0 * alpha, 2.0 * alpha, 4.0 * alpha);
                         continue;
-                    }
+                    };
+                    far
                 }
-            }
-            let Some((h, h_value, h_slope)) = high else {
-                unreachable!("every path that reaches here has set `high`")
             };
-            let guess = match h_slope {
-                Some(s) => cubic_minimum(low, (h, h_value, s)),
-                None => quadratic_minimum(low, (h, h_value)),
-            };
-            let width = h - low.0;
-            let (inner, outer) = (low.0 + 0.1 * width, h - 0.1 * width);
-            alpha = safeguard(guess, low.0 + 0.5 * width, inner, outer);
+            high = Some(far);
+            alpha = inside(low, far);
         }
         let (alpha, f) = self.best?;
         std::mem::swap(&mut self.grad, &mut self.best_grad);

@@ -30,12 +30,12 @@ fn main() {
         .collect();
     let asked = |row: &str| wanted.is_empty() || wanted.iter().any(|w| w == row);
     let data = tempfile::tempdir().expect("a temporary data folder");
-    println!("| method | trials | 1 | 2 | 3 | 4 | 5 | 8 | trials/s | peak MB | nodes |");
-    println!("|---|---|---|---|---|---|---|---|---|---|---|");
-    for (method, config, trials) in ROWS {
-        if !asked(method) {
-            continue;
-        }
+    let rows: Vec<_> = ROWS.iter().filter(|(method, ..)| asked(method)).collect();
+    if !rows.is_empty() {
+        println!("| method | trials | 1 | 2 | 3 | 4 | 5 | 8 | trials/s | peak MB | nodes |");
+        println!("|---|---|---|---|---|---|---|---|---|---|---|");
+    }
+    for &(method, config, trials) in rows.iter().copied() {
         let config = format!("{}/configs/{config}", env!("CARGO_MANIFEST_DIR"));
         let run = run_cli(
             data.path(),
@@ -53,9 +53,12 @@ fn main() {
             s.nodes
         );
     }
-    println!(
-        "\nmean distance (mm) after each feedback step over the last 10% of the trials, seed 1"
-    );
+    if !rows.is_empty() {
+        println!(
+            "\nmean distance (mm) after each feedback step over the last 10% of the trials, \
+             seed 1"
+        );
+    }
     if asked("nnw-seeds") {
         nnw_over_seeds(data.path());
     }
@@ -81,6 +84,8 @@ fn nnw_over_seeds(data: &Path) {
             &["--config", &config, "--trials", "2000", "--seed", &seed],
         );
         let s = &run.summary;
+        // (A method's data folder holds 36 runs: each is dropped once read.)
+        std::fs::remove_dir_all(&run.folder).expect("the run's folder is removed");
         let step = |i: usize| s.mean_distance_mm[i].expect("every run takes five steps");
         let figures = [
             step(0),
@@ -91,11 +96,14 @@ fn nnw_over_seeds(data: &Path) {
         ];
         columns.iter_mut().zip(figures).for_each(|(c, f)| c.push(f));
     }
+    // (Distances to 4 decimals, failures and trials/s to 1.)
+    let decimals = [4, 4, 4, 1, 1];
     let cells: Vec<String> = columns
         .iter()
-        .map(|c| {
+        .zip(decimals)
+        .map(|(c, d)| {
             let (mean, sd) = mean_sd(c);
-            format!("{mean:.4} ± {sd:.4}")
+            format!("{mean:.d$} ± {sd:.d$}")
         })
         .collect();
     println!("\n| method | seeds | 1 | 3 | 5 | failures | trials/s |");

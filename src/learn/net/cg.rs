@@ -277,7 +277,10 @@ mod net_tests {
         (1.5 * x[0]).sin() + 0.5 * x[1] * x[2] - 0.4 * x[3] * x[3] + 0.3 * x[4]
     }
 
-    fn batch(n: usize, rng: &mut ChaCha8Rng) -> Vec<(SVector<f64, 5>, SVector<f64, 1>)> {
+    /// (Input, target) pairs of `smooth`.
+    type Batch = Vec<(SVector<f64, 5>, SVector<f64, 1>)>;
+
+    fn batch(n: usize, rng: &mut ChaCha8Rng) -> Batch {
         (0..n)
             .map(|_| {
                 let x = SVector::<f64, 5>::from_fn(|_, _| rng.random_range(-1.0..1.0));
@@ -286,11 +289,18 @@ mod net_tests {
             .collect()
     }
 
+    /// The generator (seed 9), after drawing a training batch of `patterns` and a net of
+    /// `hidden` units with weights in ±`wrange`.
+    fn fixture(patterns: usize, hidden: usize, wrange: f64) -> (ChaCha8Rng, Batch, DenseNet<5, 1>) {
+        let mut rng = ChaCha8Rng::seed_from_u64(9);
+        let train = batch(patterns, &mut rng);
+        let net = DenseNet::new(hidden, wrange, &mut rng);
+        (rng, train, net)
+    }
+
     #[test]
     fn cg_lowers_a_nets_batch_loss_at_every_step_and_fits_a_smooth_5d_function() {
-        let mut rng = ChaCha8Rng::seed_from_u64(9);
-        let train = batch(400, &mut rng);
-        let mut net: DenseNet<5, 1> = DenseNet::new(20, 0.3, &mut rng);
+        let (mut rng, train, mut net) = fixture(400, 20, 0.3);
         let mut params = net.params().to_vec();
         let losses = minimize(&mut BatchLoss::new(&mut net, &train), &mut params, 400);
         assert!(
@@ -324,9 +334,7 @@ mod net_tests {
 
     #[test]
     fn a_cg_step_on_a_nets_batch_loss_takes_under_two_evaluations_on_average() {
-        let mut rng = ChaCha8Rng::seed_from_u64(9);
-        let train = batch(300, &mut rng);
-        let mut net: DenseNet<5, 1> = DenseNet::new(5, 0.1, &mut rng);
+        let (_, train, mut net) = fixture(300, 5, 0.1);
         let mut params = net.params().to_vec();
         let mut loss = BatchLoss::new(&mut net, &train);
         let mut counted = Counted(&mut loss, 0);

@@ -6,7 +6,7 @@
 //! A second table runs `nnw` over seeds 1–40 (one seed's 3-step distance moves by ±0.1 mm
 //! with any change of its trajectory, so precision is judged by the seeds' mean).
 //!
-//! `cargo bench --bench networks` (all rows, about 16 minutes on one core), or name rows:
+//! `cargo bench --bench networks` (all rows, about 6 minutes on a quiet core), or name rows:
 //! `cargo bench --bench networks -- ffn kohonen nnw-seeds`.
 
 mod common;

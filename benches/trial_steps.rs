@@ -5,8 +5,6 @@
 //!
 //! `cargo bench --bench trial_steps` (20,000 trials per row, seed 1, configs/ik.conf).
 
-use eyehand::control::TrialLoop;
-use eyehand::experiment::setup::{build_camera, build_simulator, trial_settings};
 use eyehand::experiment::{run_learner, Config, RunOptions};
 use eyehand::learn::{IkLearner, LearnError, Learner, Observation, Query};
 use eyehand::robot::ArmModel;
@@ -37,8 +35,10 @@ impl Learner for StandStill {
 
 /// Feedback steps and seconds of `TRIALS` trials driven step by step with `learner`.
 fn drive_in_pieces(config: &Config, learner: &mut dyn Learner) -> (usize, f64) {
-    let sim = build_simulator(config, ArmModel::oscar6());
-    let mut trials = TrialLoop::new(sim, build_camera(config), trial_settings(config), SEED);
+    let setup = RunOptions::new(config.clone(), ".")
+        .setup()
+        .expect("the config and arm pass the run's checks");
+    let mut trials = setup.trial_loop();
     let mut steps = 0;
     let started = Instant::now();
     for _ in 0..TRIALS {

@@ -254,8 +254,7 @@ fn wrong_arm_entries_are_clear_errors() {
         assert!(err.contains(message), "{message} in {err}");
     }
     // From a config file, the error names the entry's line.
-    let shipped =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/configs/lin5.conf")).unwrap();
+    let shipped = eyehand::experiment::defaults_text();
     let text: String = shipped
         .lines()
         .map(|line| match line.split_whitespace().next() {

@@ -4,10 +4,10 @@
 //! must leave no run folder.
 //!
 //! A case file holds `key: value` lines (`#` starts a comment):
-//! - `config: NAME VALUE` — the shipped configs/lin5.conf with entry NAME's line replaced
+//! - `config: NAME VALUE` — the complete default config (`eyehand config defaults`) with entry NAME's line replaced
 //!   (repeatable; a repeated entry such as `obstacle` replaces its commented example line
 //!   `# NAME …`), written to `{config}`; `{line}` is the first replaced line's number;
-//!   `config_bom: yes` writes the shipped config after a UTF-8 byte-order mark;
+//!   `config_bom: yes` writes that config after a UTF-8 byte-order mark;
 //! - `urdf: FROM => TO` — the shipped URDF with FROM replaced by TO, written to `{urdf}`;
 //!   `urdf_bom: yes` writes it after a byte-order mark;
 //! - `file: PATH => TEXT` — TEXT (`\n` for a newline) written to `{dir}/PATH`;
@@ -90,7 +90,7 @@ fn parse_case(text: &str) -> Case {
 fn prepare(case: &Case, dir: &Path) -> Vec<(&'static str, String)> {
     let huge = "7".repeat(100_000);
     let config_path = dir.join("case.conf");
-    let mut config = std::fs::read_to_string(format!("{ROOT}/configs/lin5.conf")).unwrap();
+    let mut config = eyehand::experiment::defaults_text();
     let mut first_line = 0;
     for replacement in &case.configs {
         let replacement = replacement.replace("{huge}", &huge);

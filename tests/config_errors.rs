@@ -1,14 +1,18 @@
 //! The config file format: every error kind stops with `file:line: reason` and is matched
-//! here by its kind; every shipped config parses.
+//! here by its kind, at the line of the complete default config it was put on; every
+//! shipped config parses.
 
-use eyehand::experiment::{Config, ConfigErrorKind, ValueError, ENTRY_NAMES};
+use eyehand::experiment::{
+    declarations, Config, ConfigErrorKind, Scope, Source, ValueError, ENTRY_NAMES,
+};
 use std::process::Command;
 
+/// The complete config at its defaults (`eyehand config defaults`).
 fn shipped() -> String {
-    std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/configs/lin5.conf")).unwrap()
+    eyehand::experiment::defaults_text()
 }
 
-/// The shipped config with the line holding `name` replaced by `replacement`.
+/// The complete default config with the line holding `name` replaced by `replacement`.
 fn with_line(name: &str, replacement: &str) -> (String, usize) {
     let text = shipped();
     let line = text
@@ -32,28 +36,36 @@ fn every_shipped_config_parses() {
         if path.extension().is_some_and(|e| e == "conf") {
             let config = Config::from_file(&path).unwrap_or_else(|e| panic!("{e}"));
             let stem = path.file_stem().unwrap().to_str().unwrap();
-            assert_eq!(
-                config.method.name(),
-                stem,
-                "{} names its method",
-                path.display()
-            );
+            if stem != "study" {
+                assert_eq!(
+                    config.method.name(),
+                    stem,
+                    "{} names its method",
+                    path.display()
+                );
+            }
             count += 1;
         }
     }
-    assert!(count >= 4, "lin5, lin8, nnw and ik configs ship");
+    assert!(count >= 8, "every method's config and the study's ship");
 }
 
 #[test]
-fn every_entry_is_in_the_shipped_config_once() {
+fn every_entry_is_in_the_complete_default_config_once() {
     let text = shipped();
-    for name in ENTRY_NAMES {
+    let unused = |name: &str| {
+        declarations()
+            .iter()
+            .any(|d| d.name == name && d.scope == Scope::Unused)
+    };
+    for name in ENTRY_NAMES.iter().filter(|n| !unused(n)) {
         let n = text
             .lines()
             .filter(|l| l.split_whitespace().next() == Some(name))
             .count();
         assert_eq!(n, 1, "{name}");
     }
+    assert_eq!(Config::parse(&text, "x.conf"), Ok(Config::default_config()));
 }
 
 #[test]
@@ -93,16 +105,21 @@ fn a_name_given_twice_is_reported_at_the_second() {
 }
 
 #[test]
-fn a_missing_name_is_reported() {
+fn a_missing_name_takes_its_default() {
     let (text, _) = with_line("monitor_ave", "# monitor_ave removed");
-    let err = Config::parse(&text, "x.conf").unwrap_err();
-    assert_eq!(err.line, Some(text.lines().count()));
-    assert_eq!(
-        err.kind,
-        ConfigErrorKind::Missing {
-            names: vec!["monitor_ave"]
-        }
-    );
+    let (config, sources) = Config::read(&text, "x.conf").unwrap();
+    assert_eq!(config, Config::default_config());
+    assert_eq!(sources.of("monitor_ave"), None);
+    assert!(matches!(
+        sources.of("tree_depth"),
+        Some(Source::Line { .. })
+    ));
+    let text = config.explained_text(&sources);
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("monitor_ave "))
+        .unwrap();
+    assert!(line.ends_with("# default"), "{line}");
 }
 
 #[test]

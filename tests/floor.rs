@@ -101,7 +101,7 @@ fn a_falling_arm_lands_on_the_floor() {
 fn absurd_dynamic_entries_are_refused_before_any_work() {
     let base = Config::default_config().to_text();
     for (entry, value, words) in [
-        ("dt", "1e-300", "dt: must be 0.00001 to 0.1 seconds"),
+        ("dt", "1e-300", "dt: must be 0.00001 to 0.1 s"),
         (
             "solver_iterations",
             "0",

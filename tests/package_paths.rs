@@ -31,9 +31,9 @@ fn tree(root: &Path) {
     fs::write(root.join("urdf/arm.urdf"), urdf).unwrap();
 }
 
-/// The shipped lin5 config with `package_paths` set to `value`, written to `conf/arm.conf`.
+/// The complete default config with `package_paths` set to `value`, written to `conf/arm.conf`.
 fn config(root: &Path, value: &str) -> Config {
-    let text = fs::read_to_string(format!("{ROOT}/configs/lin5.conf")).unwrap();
+    let text = eyehand::experiment::defaults_text();
     let line = text
         .lines()
         .find(|l| l.starts_with("package_paths"))

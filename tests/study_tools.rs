@@ -327,7 +327,7 @@ fn a_bad_sweep_fails_before_any_run() {
     // A bad per-method config is bad input too.
     let bad_configs = data.path().join("configs");
     std::fs::create_dir(&bad_configs).unwrap();
-    std::fs::write(bad_configs.join("ik.conf"), "trials 10\n").unwrap();
+    std::fs::write(bad_configs.join("ik.conf"), "trials ten\n").unwrap();
     let out = eyehand(
         &[
             "compare",

@@ -145,11 +145,11 @@ fn a_run_among_obstacles_reports_them_and_draws_no_target_inside_one() {
     let info = std::fs::read_to_string(result.folder.join("info")).unwrap();
     assert!(info
         .lines()
-        .any(|l| l == "obstacle 70.0,0.0,-12.0,30.0,40.0,20.0"));
+        .any(|l| l.starts_with("obstacle 70.0,0.0,-12.0,30.0,40.0,20.0 ")));
     // The info file reads back with the obstacle (as `eyehand show` reads it), and the
     // replayed trials' targets all lie outside the block.
     let recorded = RecordedRun::read(&result.folder).unwrap();
-    assert_eq!(recorded.config.obstacle, config.obstacle);
+    assert_eq!(recorded.setup.config.obstacle, config.obstacle);
     let block = ObstacleBox::obstacle(&config.obstacle[0]);
     let (mut targets, mut near) = (0, 0);
     replay(

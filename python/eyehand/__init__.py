@@ -47,8 +47,8 @@ def run(
 
     ``learner`` is any object with ``propose(query) -> (3,)`` and ``learn(path)`` (its
     ``name`` attribute, or its class name, names its folder); without it the built-in
-    ``method`` (default: the config's) runs. ``config`` is a config file (default: the
-    shipped ``configs/lin5.conf``); keyword ``entries`` override its entries as ``--set``
+    ``method`` (default: the config's) runs. ``config`` is a config file (default: none,
+    every entry at its default); keyword ``entries`` override its entries as ``--set``
     does; ``events`` are ``rotate:TRIAL:DEG`` / ``elongate:TRIAL:LINK:CM`` strings.
 
     Returns a dict: ``folder`` (a ``pathlib.Path``), ``summary`` (summary.json as a dict),

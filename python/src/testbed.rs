@@ -2,10 +2,9 @@
 //! Python, on the simulator and camera a run's config names.
 
 use crate::convert::{load_config, path_array, query_array, set_entry, value_error, vector3};
-use crate::learner::{nominal_model, BuiltinLearner, ErrorSlot, PyLearner};
+use crate::learner::{BuiltinLearner, ErrorSlot, PyLearner};
 use eyehand::control::{Failure, StepError, TrialEnd, TrialLoop};
-use eyehand::experiment::preflight;
-use eyehand::experiment::setup::{build_camera, build_simulator, trial_settings};
+use eyehand::experiment::{Event, RunSetup, Sources};
 use eyehand::learn::{LearnError, Learner};
 use eyehand::robot::Controlled;
 use eyehand::units::{MM_PER_M, M_PER_CM};
@@ -48,18 +47,12 @@ impl Testbed {
         set_entry(&mut config, "sim", sim)?;
         set_entry(&mut config, "camera", camera)?;
         config.seed = seed;
-        let model = nominal_model(&config, urdf.as_deref())?;
-        preflight(&config, &model, &[]).map_err(value_error)?;
-        let reach = eyehand::experiment::setup::reach_space(&config, &model)
-            .ok_or_else(|| value_error(eyehand::experiment::PreflightError::NoReachSpace))?;
-        let trials = TrialLoop::new(
-            build_simulator(&config, model),
-            build_camera(&config),
-            trial_settings(&config),
-            seed,
-        )
-        .with_reach(reach);
-        Ok(Testbed { trials })
+        let events = Event::of_run(&config, &[]);
+        let setup = RunSetup::new(config, urdf.as_deref(), events, &Sources::default())
+            .map_err(value_error)?;
+        Ok(Testbed {
+            trials: setup.trial_loop(),
+        })
     }
 
     /// Begins a trial (target and start drawn as a run draws them) and returns the

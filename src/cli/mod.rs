@@ -1,4 +1,4 @@
-//! The command line: `eyehand run`, `plot`, `compare`, `sweep`, `check-config`, `fk`,
+//! The command line: `eyehand run`, `plot`, `compare`, `sweep`, `check-config`, `config`, `fk`,
 //! `reach`, `simulate` and `show`.
 //! Flags are parsed here (validation only); each command hands resolved values to the
 //! library and turns the outcome into an exit code: 2 for bad input, 1 for a failed run,
@@ -38,6 +38,8 @@ enum Command {
     Sweep(study::SweepArgs),
     /// Checks a config file and reports the first error as file:line: reason.
     CheckConfig(tools::CheckConfigArgs),
+    /// Prints the config's entries: `config defaults`, every entry at its default.
+    Config(tools::ConfigArgs),
     /// Prints the camera centre (cm, world frame) and every joint angle (°) of a pose.
     Fk(tools::FkArgs),
     /// Prints an arm's reach space, how much of it the arm covers and the pre-learning pose.
@@ -61,10 +63,15 @@ fn failed(e: impl std::fmt::Display) -> Failure {
 
 /// The model of an arm read for a command, its URDF's warnings printed to stderr.
 fn warned(arm: LoadedArm) -> ArmModel {
-    for warning in &arm.warnings {
+    print_warnings(&arm.warnings);
+    arm.model
+}
+
+/// Prints each warning to stderr, one a line.
+fn print_warnings(warnings: &[String]) {
+    for warning in warnings {
         eprintln!("eyehand: warning: {warning}");
     }
-    arm.model
 }
 
 /// Exit code of a program whose reader closed the pipe (as if SIGPIPE had ended it).
@@ -104,6 +111,7 @@ pub fn execute(cli: Cli) -> ExitCode {
         Command::Compare(args) => study::compare(args),
         Command::Sweep(args) => study::sweep(args),
         Command::CheckConfig(args) => tools::check_config(args),
+        Command::Config(args) => tools::config(args),
         Command::Fk(args) => tools::fk(args),
         Command::Reach(args) => reach::reach(args),
         Command::Simulate(args) => simulate::simulate(args),

@@ -25,7 +25,7 @@ pub(super) struct ReachArgs {
 #[derive(Debug, clap::Args)]
 pub(super) struct ArmConfigArgs {
     /// The config whose arm entries (camera_link, camera_offset, learned_joints,
-    /// reach_space, floor_z) apply (default: configs/lin5.conf).
+    /// reach_space, floor_z) apply (default: every entry at its default).
     #[arg(long)]
     config: Option<PathBuf>,
     /// Sets a config entry (repeatable), as `run --set` does.

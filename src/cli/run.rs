@@ -11,7 +11,7 @@ use std::path::PathBuf;
 
 #[derive(Debug, clap::Args)]
 pub(super) struct RunArgs {
-    /// The config file (default: the shipped configs/lin5.conf).
+    /// The config file; an entry it does not give keeps its default (default: none).
     #[arg(long)]
     config: Option<PathBuf>,
     /// The learning method: lin5, lin8, nnw, ffn, kohonen, ik or lwpr.
@@ -113,8 +113,11 @@ pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
     record.write(&result.folder, finished)
 }
 
+/// Root merges in a run past which the run says that its learner kept starting over.
+const ROOT_MERGES_WORTH_A_WARNING: usize = 10;
+
 /// How a finished run exits: 130/143 when a signal stopped it, 1 when every trial failed
-/// (saying why), 0 otherwise.
+/// (saying why), 0 otherwise (warning when the learner's tree kept being cut at its root).
 fn outcome(result: &RunResult, stop: &StopRequest) -> Result<(), Failure> {
     let summary = &result.summary;
     if summary.interrupted {
@@ -127,6 +130,14 @@ fn outcome(result: &RunResult, stop: &StopRequest) -> Result<(), Failure> {
                 result.folder.display()
             ),
         ));
+    }
+    if summary.root_merges >= ROOT_MERGES_WORTH_A_WARNING {
+        eprintln!(
+            "eyehand: warning: the learner's tree was cut at its root {} times in {} trials, \
+             starting over each time: its absolute merges fire while it learns \
+             (am_error_tresh, am_error_iters; 20 over 300 patterns does not fire on the OSCAR-6)",
+            summary.root_merges, summary.trials
+        );
     }
     if summary.trials > 0 && summary.failures == summary.trials {
         return Err(failed(format!(

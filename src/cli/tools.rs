@@ -1,9 +1,11 @@
-//! `eyehand plot`, `check-config` and `fk`.
+//! `eyehand plot`, `check-config`, `config defaults` and `fk`.
 
-use super::{bad_input, failed, say, warned, Failure};
+use super::{bad_input, failed, print_warnings, say, warned, Failure};
 use crate::experiment::plot::plot_run;
 use crate::experiment::setup::load_arm;
-use crate::experiment::{check_arm, Config, RunError, RunOptions};
+use crate::experiment::{
+    declarations, defaults_text, Config, RunError, RunOptions, Scope, Sources,
+};
 use crate::robot::Controlled;
 use std::path::PathBuf;
 
@@ -23,6 +25,22 @@ pub(super) struct CheckConfigArgs {
     /// The URDF a run would be given (default: the shipped urdf/oscar6.urdf).
     #[arg(long)]
     urdf: Option<PathBuf>,
+    /// Also prints the value of every entry and where it came from (default or file:line).
+    #[arg(long)]
+    explain: bool,
+}
+
+#[derive(Debug, clap::Args)]
+pub(super) struct ConfigArgs {
+    #[command(subcommand)]
+    command: ConfigCommand,
+}
+
+#[derive(Debug, clap::Subcommand)]
+enum ConfigCommand {
+    /// Prints every entry at its default, under a comment with what it does, what it
+    /// applies to, its unit and its rule: a complete config to edit.
+    Defaults,
 }
 
 #[derive(Debug, clap::Args)]
@@ -60,18 +78,40 @@ pub(super) fn plot(args: PlotArgs) -> Result<(), Failure> {
 /// shipped OSCAR-6 without `--urdf`), its events and the arm's reach after them.
 pub(super) fn check_config(args: CheckConfigArgs) -> Result<(), Failure> {
     let file = args.file.display().to_string();
-    let config = Config::from_file(&args.file).map_err(bad_input)?;
+    let (config, sources) = Config::read_file(&args.file).map_err(bad_input)?;
+    let notes = unused_notes(&sources);
+    let explained = args.explain.then(|| config.explained_text(&sources));
     let options = RunOptions {
         config_name: file.clone(),
         urdf: args.urdf,
+        sources,
         ..RunOptions::new(config, ".")
     };
-    let arm = check_arm(&options).map_err(|e| match e {
+    let setup = options.setup().map_err(|e| match e {
         RunError::Preflight(e) => bad_input(format!("{file}: {e}")),
         e => bad_input(e),
     })?;
-    warned(arm);
-    say(&format!("{file}: ok\n"))
+    print_warnings(&setup.warnings);
+    say(&(explained.unwrap_or_default() + &notes + &format!("{file}: ok\n")))
+}
+
+/// A note for each entry a file gives that eyehand accepts but does not implement.
+fn unused_notes(sources: &Sources) -> String {
+    declarations()
+        .iter()
+        .filter(|d| d.scope == Scope::Unused)
+        .filter_map(|d| Some((d.name, sources.of(d.name)?)))
+        .map(|(name, source)| {
+            format!("note: {source}: {name} is accepted and recorded, but unused (eyehand does not implement it)\n")
+        })
+        .collect()
+}
+
+/// `eyehand config …`.
+pub(super) fn config(args: ConfigArgs) -> Result<(), Failure> {
+    match args.command {
+        ConfigCommand::Defaults => say(&defaults_text()),
+    }
 }
 
 pub(super) fn fk(args: FkArgs) -> Result<(), Failure> {

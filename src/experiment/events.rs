@@ -45,6 +45,15 @@ impl Event {
         }
     }
 
+    /// Every event of a run: the config's and `extra` (the command line's), in trial
+    /// order.
+    pub fn of_run(config: &Config, extra: &[Event]) -> Vec<Event> {
+        let mut events = Event::from_config(config);
+        events.extend(extra.iter().copied());
+        events.sort_by_key(Event::trial);
+        events
+    }
+
     /// The events a config asks for (`rotate_trial`, `elongate_trial`; 0 means none).
     pub fn from_config(config: &Config) -> Vec<Event> {
         let mut events = Vec::new();

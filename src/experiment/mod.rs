@@ -2,14 +2,12 @@
 //! itself (simulator + camera + learner + trial loop).
 
 mod config;
-mod config_values;
 mod events;
 mod failures;
 mod fixed_six;
 mod interrupt;
 mod memory;
 mod output;
-mod package_paths;
 pub mod plot;
 mod preflight;
 mod progress;
@@ -17,6 +15,7 @@ pub mod record;
 mod run;
 mod run_folder;
 mod run_request;
+mod run_setup;
 pub mod setup;
 pub mod show;
 mod step_figures;
@@ -25,21 +24,21 @@ mod summary;
 
 pub(crate) use config::shown;
 pub use config::{
-    Config, ConfigError, ConfigErrorKind, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES,
-    REPEATED_ENTRY_NAMES,
+    declarations, defaults_text, docs_table, CameraKind, Config, ConfigError, ConfigErrorKind,
+    Declaration, ObstacleBox, PackagePaths, ReachSetting, Rule, Scope, SimKind, Source, Sources,
+    ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES, REPEATED_ENTRY_NAMES,
 };
-pub use config_values::{CameraKind, ObstacleBox, ReachSetting, SimKind};
 pub use events::{Event, EventError};
 pub use failures::FailureTally;
 pub use interrupt::StopRequest;
 pub use memory::{peak_rss_kb, resident_kb};
 pub use output::DataFiles;
-pub use package_paths::PackagePaths;
 pub use preflight::{
     preflight, reachable_points, PreflightError, MIN_REACHABLE_SHARE, REACH_SAMPLES,
 };
-pub use run::{check_arm, run, run_learner, RunError, RunOptions, RunResult};
+pub use run::{run, run_learner, RunError, RunOptions, RunResult};
 pub use run_folder::{allocate_run_folder, fresh_run_folder, RunFolderError, RUN_IDS};
 pub use run_request::{RequestError, RunRequest};
+pub use run_setup::RunSetup;
 pub use step_figures::StepFigures;
 pub use summary::{RunSummary, SensorSummary};

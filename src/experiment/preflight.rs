@@ -62,12 +62,13 @@ pub fn reachable_points(model: &ArmModel, reach: &ReachSpace, samples: usize) ->
         .count()
 }
 
-/// Checks `config`, `events` (sorted by trial) and the arm before a run starts.
+/// Checks `config`, `events` (sorted by trial) and the arm before a run starts, and
+/// returns the run's reach space (given, or fitted to the arm).
 pub fn preflight(
     config: &Config,
     model: &ArmModel,
     events: &[Event],
-) -> Result<(), PreflightError> {
+) -> Result<ReachSpace, PreflightError> {
     config.check()?;
     if let Some(late) = events.iter().find(|e| e.trial() > config.trials) {
         return Err(ConfigErrorKind::EventAfterLastTrial {
@@ -91,7 +92,7 @@ pub fn preflight(
             check_reach(&changed, &reach, Some(*event))?;
         }
     }
-    Ok(())
+    Ok(reach)
 }
 
 fn check_reach(

@@ -6,19 +6,15 @@ use super::interrupt::StopRequest;
 use super::output::DataFiles;
 use super::plot::{plot_run, PlotError};
 use super::progress::RunProgress;
-use super::setup::{
-    arm_entry, build_camera, build_learner, build_simulator, entry_position, load_arm, reach_space,
-    trial_settings, LoadedArm,
-};
 use super::summary::{RunSummary, SensorSummary};
 use super::StepFigures;
 use super::{
-    allocate_run_folder, fresh_run_folder, peak_rss_kb, preflight, resident_kb, Config, Event,
-    PreflightError, RunFolderError,
+    allocate_run_folder, fresh_run_folder, peak_rss_kb, resident_kb, Config, Event, PreflightError,
+    RunFolderError, RunSetup, Sources,
 };
 use crate::control::{TrialLoop, TrialOutcome};
 use crate::learn::{LearnError, Learner, LearnerStats};
-use crate::robot::{ArmModel, DescriptionError, RobotError};
+use crate::robot::{DescriptionError, RobotError};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -33,6 +29,9 @@ pub struct RunOptions {
     pub config: Config,
     /// Where the config came from, for the `info` file.
     pub config_name: String,
+    /// Where each of its values came from, for the `info` file (a value not recorded is
+    /// its default, or was set by the program).
+    pub sources: Sources,
     /// The URDF to load; `None` for the shipped `urdf/oscar6.urdf`.
     pub urdf: Option<PathBuf>,
     /// The data folder; runs land in `<data>/<method>/<id>/`.
@@ -57,6 +56,7 @@ impl RunOptions {
         RunOptions {
             config,
             config_name: "(given in code)".into(),
+            sources: Sources::default(),
             urdf: None,
             data_dir: data_dir.into(),
             events: Vec::new(),
@@ -128,10 +128,10 @@ pub struct RunResult {
 /// fills its folder (`<data>/<method>/<id>/`). The config, events and arm are checked
 /// before the folder is made.
 pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
-    let model = load_model(options)?;
+    let setup = warned_setup(options)?;
     let folder = run_folder(options, options.config.method.name())?;
-    let learner = build_learner(&options.config, &model, Some(&folder))?;
-    drive(options, model, folder, learner)
+    let learner = setup.learner(Some(&folder))?;
+    drive(options, setup, folder, learner)
 }
 
 /// Runs every trial of a run with a learner the caller built (one written outside the
@@ -143,9 +143,9 @@ pub fn run_learner(options: &RunOptions, learner: Box<dyn Learner>) -> Result<Ru
     if name.is_empty() || !name.chars().all(plain) {
         return Err(RunError::LearnerName(name.to_string()));
     }
-    let model = load_model(options)?;
+    let setup = warned_setup(options)?;
     let folder = run_folder(options, name)?;
-    drive(options, model, folder, learner)
+    drive(options, setup, folder, learner)
 }
 
 /// The run's fixed folder (emptied), or the first free `<data>/<name>/<id>/`.
@@ -156,60 +156,38 @@ fn run_folder(options: &RunOptions, name: &str) -> Result<PathBuf, RunFolderErro
     }
 }
 
-/// The robot the run's URDF describes (the shipped OSCAR-6 without one), its warnings
-/// printed to stderr, once it, the config and the events pass the checks made before a run
-/// starts.
-fn load_model(options: &RunOptions) -> Result<ArmModel, RunError> {
-    let arm = check_arm(options)?;
-    for warning in &arm.warnings {
+/// The run put together and checked, its URDF's warnings printed to stderr.
+fn warned_setup(options: &RunOptions) -> Result<RunSetup, RunError> {
+    let setup = options.setup()?;
+    for warning in &setup.warnings {
         eprintln!("eyehand: warning: {warning}");
     }
-    Ok(arm.model)
+    Ok(setup)
 }
 
-/// The arm a run of `options` would move (its URDF as the config's arm entries pick it
-/// out), once it, the config and the events pass the checks made before a run starts; an
-/// arm entry the URDF contradicts is reported at the entry's line.
-pub fn check_arm(options: &RunOptions) -> Result<LoadedArm, RunError> {
-    let arm =
-        load_arm(&options.config, options.urdf.as_deref()).map_err(|source| {
-            match arm_entry(&source) {
-                Some(entry) => RunError::ArmEntry {
-                    at: entry_position(&options.config_name, &options.config, entry),
-                    entry,
-                    source: Box::new(source),
-                },
-                None => RunError::Urdf(source),
-            }
-        })?;
-    preflight(&options.config, &arm.model, &run_events(options))?;
-    Ok(arm)
-}
-
-/// The config's events and the command line's, in trial order.
-fn run_events(options: &RunOptions) -> Vec<Event> {
-    let mut events = Event::from_config(&options.config);
-    events.extend(options.events.iter().copied());
-    events.sort_by_key(Event::trial);
-    events
+impl RunOptions {
+    /// The run these options ask for, put together: the arm its URDF and the config's arm
+    /// entries give, the reach space, the config's events and the options', once all of
+    /// them pass the checks made before a run starts.
+    pub fn setup(&self) -> Result<RunSetup, RunError> {
+        let events = Event::of_run(&self.config, &self.events);
+        let urdf = self.urdf.as_deref();
+        RunSetup::new(self.config.clone(), urdf, events, &self.sources)
+    }
 }
 
 /// Drives `learner` through the run's trials and events, filling `folder`.
 fn drive(
     options: &RunOptions,
-    model: ArmModel,
+    setup: RunSetup,
     folder: PathBuf,
     mut learner: Box<dyn Learner>,
 ) -> Result<RunResult, RunError> {
-    let config = &options.config;
-    let reach = reach_space(config, &model).expect("checked before the run");
-    let sim = build_simulator(config, model);
-    let camera = build_camera(config);
-    let events = run_events(options);
-    write_info_header(&folder, options, &events)?;
+    let config = &setup.config;
+    let events = &setup.events;
+    write_info_header(&folder, options, events)?;
 
-    let mut trials =
-        TrialLoop::new(sim, camera, trial_settings(config), config.seed).with_reach(reach);
+    let mut trials = setup.trial_loop();
     let mut files = DataFiles::create(&folder)?;
     let mut figures = StepFigures::new(config.trials, config.feedback_steps);
     let mut failures = FailureTally::default();
@@ -217,15 +195,17 @@ fn drive(
     let mut progress = RunProgress::new(config.trials, options.progress);
     let started = Instant::now();
     let mut model_events = Vec::new();
+    let mut root_merges = 0;
     learner.start_trial(0);
     trials.prelearn(learner.as_mut())?;
     for trial in 1..=config.trials {
         if options.stop.signal().is_some() {
             break;
         }
-        let outcome = next_trial(&mut trials, learner.as_mut(), &events, trial)?;
+        let outcome = next_trial(&mut trials, learner.as_mut(), events, trial)?;
         learner.drain_events(&mut model_events);
         files.record_model_events(trial, &model_events)?;
+        root_merges += model_events.iter().filter(|e| e.is_root_merge()).count();
         model_events.clear();
         if let Some(failure) = outcome.failure {
             failures.count(failure);
@@ -268,6 +248,7 @@ fn drive(
         simulated_seconds_per_trial: per_trial(work.simulated_seconds),
         settle_timeouts: work.settle_timeouts,
         stopped_by_contact: work.contact_stops,
+        root_merges,
         events: events.iter().map(Event::to_string).collect(),
         obstacles: config
             .obstacle
@@ -361,7 +342,7 @@ fn write_info_header(folder: &Path, options: &RunOptions, events: &[Event]) -> i
         writeln!(info, "event {event}")?;
     }
     writeln!(info, "\n# config")?;
-    info.write_all(config.to_text().as_bytes())
+    info.write_all(config.explained_text(&options.sources).as_bytes())
 }
 
 fn write_info_tail(folder: &Path, summary: &RunSummary, stats: &LearnerStats) -> io::Result<()> {

@@ -3,8 +3,8 @@
 //! the config file, then every `--set`, then the flags, validated once on the final config.
 
 use super::{
-    shown, CameraKind, Config, ConfigError, ConfigErrorKind, Event, RunOptions, SimKind,
-    DEFAULT_CONFIG_NAME,
+    shown, CameraKind, Config, ConfigError, ConfigErrorKind, Event, RunOptions, SimKind, Source,
+    Sources, DEFAULT_CONFIG_NAME, ENTRY_NAMES, REPEATED_ENTRY_NAMES,
 };
 use crate::learn::Method;
 use serde::{Deserialize, Serialize};
@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 /// One run, as asked for: every field is optional on top of the config file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RunRequest {
-    /// The config file; `None` for the shipped default (`configs/lin5.conf`).
+    /// The config file; `None` for the declared defaults.
     pub config: Option<PathBuf>,
     /// `NAME=VALUE` overrides of config entries, each name at most once.
     pub sets: Vec<(String, String)>,
@@ -110,9 +110,22 @@ impl RunRequest {
     /// the last is in (so values that depend on each other may be set in any order), and
     /// the name the config is reported under.
     pub fn config(&self) -> Result<(Config, String), RequestError> {
-        let (mut config, name) = match &self.config {
-            Some(path) => (Config::from_file(path)?, path.display().to_string()),
-            None => (Config::default_config(), DEFAULT_CONFIG_NAME.to_string()),
+        self.sourced_config()
+            .map(|(config, name, _)| (config, name))
+    }
+
+    /// [`config`](RunRequest::config), with where each value came from.
+    pub fn sourced_config(&self) -> Result<(Config, String, Sources), RequestError> {
+        let (mut config, name, mut sources) = match &self.config {
+            Some(path) => {
+                let (config, sources) = Config::read_file(path)?;
+                (config, path.display().to_string(), sources)
+            }
+            None => (
+                Config::default_config(),
+                DEFAULT_CONFIG_NAME.to_string(),
+                Sources::default(),
+            ),
         };
         for (i, (entry, value)) in self.sets.iter().enumerate() {
             if self.sets[..i].iter().any(|(e, _)| e == entry) {
@@ -126,7 +139,24 @@ impl RunRequest {
                     shown: shown(&format!("{entry}={value}")),
                     kind,
                 })?;
+            if let Some(name) = ENTRY_NAMES
+                .iter()
+                .chain(REPEATED_ENTRY_NAMES)
+                .find(|n| *n == entry)
+            {
+                sources.record(name, Source::Set);
+            }
         }
+        let mut flag = |name: &'static str, flag: &'static str, given: bool| {
+            if given {
+                sources.record(name, Source::Flag(flag));
+            }
+        };
+        flag("method", "--method", self.method.is_some());
+        flag("sim", "--sim", self.sim.is_some());
+        flag("camera", "--camera", self.camera.is_some());
+        flag("seed", "--seed", self.seed.is_some());
+        flag("trials", "--trials", self.trials.is_some());
         config.method = self.method.unwrap_or(config.method);
         config.sim = self.sim.unwrap_or(config.sim);
         config.camera = self.camera.unwrap_or(config.camera);
@@ -136,14 +166,15 @@ impl RunRequest {
             config: name.clone(),
             kind,
         })?;
-        Ok((config, name))
+        Ok((config, name, sources))
     }
 
     /// The run this request asks for.
     pub fn options(&self) -> Result<RunOptions, RequestError> {
-        let (config, config_name) = self.config()?;
+        let (config, config_name, sources) = self.sourced_config()?;
         Ok(RunOptions {
             config_name,
+            sources,
             urdf: self.urdf.clone(),
             events: self.events.clone(),
             progress: self.progress,

@@ -42,6 +42,10 @@ pub struct RunSummary {
     pub settle_timeouts: u64,
     /// Moves stopped by a contact: the floor, an obstacle or another link.
     pub stopped_by_contact: u64,
+    /// Times a merge cut the learner's tree at its root, so that it started over (absent
+    /// in older summaries).
+    #[serde(default)]
+    pub root_merges: usize,
     /// The run's events (`rotate:TRIAL:DEG`, `elongate:TRIAL:LINK:CM`), in trial order.
     pub events: Vec<String>,
     /// The obstacle boxes, each `[x, y, z, sx, sy, sz]`: centre and side lengths (cm,

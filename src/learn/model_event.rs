@@ -42,3 +42,10 @@ pub enum ModelEvent {
         estimated_trial: usize,
     },
 }
+
+impl ModelEvent {
+    /// Whether the event cut the whole tree (a merge at the root): the learner starts over.
+    pub fn is_root_merge(&self) -> bool {
+        matches!(self, ModelEvent::Merge { depth: 0, .. })
+    }
+}

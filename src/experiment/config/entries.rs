@@ -1,234 +1,250 @@
-//! Every config entry: its name, type and meaning, in one list.
+//! Every config entry, declared once: its doc line, name, kind, default, unit, what it
+//! applies to and the rule its value must meet on its own. The parser, the defaults,
+//! `info`, `config defaults`, the error messages and docs/CONFIG.md all come from here.
 
-use super::ConfigErrorKind;
-use crate::control::ServoMode;
-use crate::experiment::config_values::{
-    CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind,
+use super::declaration::{meets_rule, one_line, Declaration};
+use super::package_paths::PackagePaths;
+use super::scope::{
+    Scope, BOUNDED, DYNAMIC, FFN, KOHONEN, LIN8, LWPR, NESTED, NETS, NNW, PERCEPTRONS, RAYCAST,
+    WATCHING,
 };
-use crate::experiment::PackagePaths;
+use super::values::{CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind};
+use super::{ConfigErrorKind, Rule};
+use crate::control::ServoMode;
 use crate::learn::{MergeStrategy, Method};
 
+use Rule::{AtLeast, NonNegative, OpenUnit, Positive, PositiveUpTo, UnitBelowOne, Within};
+use Scope::{All, Unused};
+
+/// Largest magnitude of an input boundary.
+const BOUNDARY: Rule = Within(-1e6, 1e6);
+
 config_entries! {
-    /// The learning method.
-    method: Method,
-    /// The simulator: kinematic or dynamic.
-    sim: SimKind,
-    /// The camera model: projection or raycast.
-    camera: CameraKind,
-    /// Seed of the run's random generator.
-    seed: u64,
+    /// The learning method: lin5, lin8, nnw, ffn, kohonen, ik or lwpr.
+    method: Method = Method::Lin5, "", All, Rule::Any;
+    /// The simulator: kinematic (forward kinematics) or dynamic (a Rapier multibody).
+    sim: SimKind = SimKind::Kinematic, "", All, Rule::Any;
+    /// The camera: projection (the exact analytic image) or raycast (a ray per pixel).
+    camera: CameraKind = CameraKind::Projection, "", All, Rule::Any;
+    /// Seed of every random draw of the run: the same seed gives the same data files.
+    seed: u64 = 1, "", All, Rule::Any;
     /// Trials to run.
-    trials: usize,
-    /// Input boundary 0 (θ2, degrees), low end.
-    boundary_0_low: f64,
-    /// Input boundary 0 (θ2, degrees), high end.
-    boundary_0_high: f64,
-    /// Input boundary 1 (θ3, degrees), low end.
-    boundary_1_low: f64,
-    /// Input boundary 1 (θ3, degrees), high end.
-    boundary_1_high: f64,
-    /// Input boundary 2 (cx, pixels), low end.
-    boundary_2_low: f64,
-    /// Input boundary 2 (cx, pixels), high end.
-    boundary_2_high: f64,
-    /// Input boundary 3 (cy, pixels), low end.
-    boundary_3_low: f64,
-    /// Input boundary 3 (cy, pixels), high end.
-    boundary_3_high: f64,
-    /// Input boundary 4 (cz), low end.
-    boundary_4_low: f64,
+    trials: usize = 10000, "", All, Within(1.0, 1e9);
+    /// Input boundary 0 (θ2, the shoulder) of the learner's root box, low end.
+    boundary_0_low: f64 = -10.0, "°", BOUNDED, BOUNDARY;
+    /// Input boundary 0 (θ2, the shoulder), high end.
+    boundary_0_high: f64 = 80.0, "°", BOUNDED, BOUNDARY;
+    /// Input boundary 1 (θ3, the elbow), low end.
+    boundary_1_low: f64 = 40.0, "°", BOUNDED, BOUNDARY;
+    /// Input boundary 1 (θ3, the elbow), high end.
+    boundary_1_high: f64 = 145.0, "°", BOUNDED, BOUNDARY;
+    /// Input boundary 2 (cx, the blob's image x), low end.
+    boundary_2_low: f64 = -512.0, "pixels", BOUNDED, BOUNDARY;
+    /// Input boundary 2 (cx), high end.
+    boundary_2_high: f64 = 256.0, "pixels", BOUNDED, BOUNDARY;
+    /// Input boundary 3 (cy, the blob's image y), low end.
+    boundary_3_low: f64 = -512.0, "pixels", BOUNDED, BOUNDARY;
+    /// Input boundary 3 (cy), high end.
+    boundary_3_high: f64 = 256.0, "pixels", BOUNDED, BOUNDARY;
+    /// Input boundary 4 (cz, from the blob's area), low end.
+    boundary_4_low: f64 = -150.0, "", BOUNDED, BOUNDARY;
     /// Input boundary 4 (cz), high end.
-    boundary_4_high: f64,
-    /// Input boundary 5 (dx, pixels, lin8), low end.
-    boundary_5_low: f64,
-    /// Input boundary 5 (dx, pixels, lin8), high end.
-    boundary_5_high: f64,
-    /// Input boundary 6 (dy, pixels, lin8), low end.
-    boundary_6_low: f64,
-    /// Input boundary 6 (dy, pixels, lin8), high end.
-    boundary_6_high: f64,
-    /// Input boundary 7 (dz, lin8), low end.
-    boundary_7_low: f64,
-    /// Input boundary 7 (dz, lin8), high end.
-    boundary_7_high: f64,
-    /// ε: a trial stops once the camera is this close to the target (cm).
-    min_target_distance: f64,
-    /// Kept from the study's config, whose author did not know its use; unused.
-    split_extension: f64,
-    /// Relative merge error.
-    merge_error: f64,
-    /// Split error.
-    split_error: f64,
-    /// At most this many feedback steps per trial.
-    feedback_steps: usize,
-    /// At least this many feedback steps per trial before ε can stop it.
-    min_feedback_steps: usize,
-    /// Maximum depth of the tree.
-    tree_depth: usize,
-    /// Trial before which the camera is turned (0: never).
-    rotate_trial: usize,
-    /// Degrees the camera turns about its optical axis at `rotate_trial`.
-    rotate_degrees: f64,
-    /// Trial before which a link is stretched (0: never).
-    elongate_trial: usize,
-    /// The link stretched at `elongate_trial` (1, 2 or 3).
-    elongate_link: usize,
-    /// Signed length added to that link (cm).
-    elongate_cm: f64,
-    /// Staggered perceptrons (sum-sets) per node.
-    nr_of_matrices: usize,
-    /// Patterns a sum-set holds before it is cleared.
-    max_pats_in_mat: usize,
-    /// Patterns a sub-box needs before it can be split off.
-    min_pats_for_split: usize,
-    /// A pose pair is a learning pattern only if some joint moved at least this (degrees).
-    minimal_joint_move: f64,
-    /// Patterns averaged by the per-level error monitor.
-    monitor_ave: usize,
-    /// How changes of the mapping are handled: thesis or change_detection.
-    merge_strategy: MergeStrategy,
-    /// change_detection: a trial counts towards an alarm by how far its mean log relative
-    /// pattern error is above the baseline, less this many spreads.
-    change_drift: f64,
-    /// change_detection: alarm level of the CUSUM statistic (spreads).
-    change_threshold: f64,
-    /// change_detection: trials the baseline averages over.
-    change_baseline: usize,
-    /// change_detection: trials that pass before a trial's error enters the baseline.
-    change_lag: usize,
-    /// change_detection: trials watched before the first alarm can come (after the start
-    /// and after each alarm).
-    change_warmup: usize,
-    /// change_detection: patterns from after a detected change a node needs before it
-    /// answers again.
-    change_min_fresh: usize,
-    /// change_detection: trials after a detected change, and between later checks, before
-    /// subtrees starved of new patterns are cut.
-    change_grace: usize,
-    /// Absolute merge threshold of a node's running error.
-    am_error_tresh: f64,
-    /// Patterns averaged for the absolute merge.
-    am_error_iters: usize,
-    /// lin8: shrink factor of the d boundaries per depth.
-    error_area_shrink: f64,
-    /// 0: store patterns in the run's `pat_file`; anything else: in memory.
-    use_pat_file: i64,
-    /// The tree's per-level figures are recorded every this many trials.
-    depth_info: usize,
-    /// 1: print progress information during a run; 0: quiet.
-    verbose_output: i64,
-    /// Top joint speed of a move (degrees per second).
-    robot_speed: f64,
-    /// Joint acceleration of a move (degrees per second²).
-    robot_accel: f64,
-    /// Dynamic simulator: physics and servo time step (seconds).
-    dt: f64,
-    /// Dynamic simulator: constraint solver iterations per step.
-    solver_iterations: usize,
-    /// Dynamic simulator: joint servo position gain (1/s², scaled by the joint's inertia).
-    motor_stiffness: f64,
-    /// Dynamic simulator: joint servo velocity gain (1/s, scaled by the joint's inertia).
-    motor_damping: f64,
-    /// Dynamic simulator: a move has settled once every joint is this close to its
-    /// set-point (degrees) …
-    settle_position_tol: f64,
-    /// … and turns slower than this (degrees per second).
-    settle_speed_tol: f64,
-    /// Dynamic simulator: simulated seconds a move may take to settle before it is
-    /// reported as not settled.
-    settle_timeout: f64,
-    /// Height of the floor (cm, world frame): a move stops where a link or the camera
-    /// would go below it, in both simulators; default −22 (the lowest target's bottom).
-    floor_z: f64,
+    boundary_4_high: f64 = 300.0, "", BOUNDED, BOUNDARY;
+    /// Input boundary 5 (dx, the image x after the move), low end.
+    boundary_5_low: f64 = -256.0, "pixels", LIN8, BOUNDARY;
+    /// Input boundary 5 (dx), high end.
+    boundary_5_high: f64 = 256.0, "pixels", LIN8, BOUNDARY;
+    /// Input boundary 6 (dy, the image y after the move), low end.
+    boundary_6_low: f64 = -256.0, "pixels", LIN8, BOUNDARY;
+    /// Input boundary 6 (dy), high end.
+    boundary_6_high: f64 = 256.0, "pixels", LIN8, BOUNDARY;
+    /// Input boundary 7 (dz, cz after the move), low end.
+    boundary_7_low: f64 = -200.0, "", LIN8, BOUNDARY;
+    /// Input boundary 7 (dz), high end.
+    boundary_7_high: f64 = 200.0, "", LIN8, BOUNDARY;
+    /// ε: a trial may stop once the camera is this close to the target.
+    min_target_distance: f64 = 0.05, "cm", All, PositiveUpTo(10.0);
+    /// At most this many feedback steps per trial (a trial learns every pair of its poses).
+    feedback_steps: usize = 10, "", All, Within(1.0, 1000.0);
+    /// At least this many feedback steps per trial before reaching ε ends it (at most
+    /// feedback_steps).
+    min_feedback_steps: usize = 5, "", All, Rule::Any;
+    /// A pose pair is a learning pattern only if at least one joint moved this much.
+    minimal_joint_move: f64 = 0.01, "°", All, Within(0.0, 10.0);
+    /// Top joint speed of a move's trapezoidal profile.
+    robot_speed: f64 = 90.0, "°/s", All, PositiveUpTo(3600.0);
+    /// Joint acceleration of a move's trapezoidal profile.
+    robot_accel: f64 = 180.0, "°/s²", All, PositiveUpTo(100_000.0);
+    /// Physics and servo time step (0.005: a 200 Hz control loop).
+    dt: f64 = 0.005, "s", DYNAMIC, Within(1e-5, 0.1);
+    /// Constraint solver iterations per physics step.
+    solver_iterations: usize = 1, "", DYNAMIC, Within(1.0, 100.0);
+    /// Joint servo position gain, scaled by each joint's inertia (400000 with motor_damping
+    /// 1265: a critically damped 100 Hz servo).
+    motor_stiffness: f64 = 400000.0, "1/s²", DYNAMIC, PositiveUpTo(1e9);
+    /// Joint servo velocity gain, scaled by each joint's inertia.
+    motor_damping: f64 = 1265.0, "1/s", DYNAMIC, PositiveUpTo(1e6);
+    /// A move has settled once every joint is this close to its set-point …
+    settle_position_tol: f64 = 0.0005, "°", DYNAMIC, PositiveUpTo(10.0);
+    /// … and turns slower than this.
+    settle_speed_tol: f64 = 0.05, "°/s", DYNAMIC, PositiveUpTo(1000.0);
+    /// A move still unsettled this long after its profile ended is counted as not settled
+    /// (at least dt, at most 60 s).
+    settle_timeout: f64 = 2.0, "s", DYNAMIC, Rule::Any;
+    /// Height of the floor (world frame; −22 is the lowest target's bottom): a move stops
+    /// where a link or the camera would go below it.
+    floor_z: f64 = -22.0, "cm", All, Within(-1000.0, 0.0);
     /// The link the camera is fixed to; the chain from the URDF's root to it is the arm.
-    camera_link: String,
-    /// The camera centre in the camera link's frame (cm, x,y,z); its axes are the link's.
-    camera_offset: [f64; 3],
+    camera_link: String = "camera_link".to_string(), "", All, Rule::Any;
+    /// The camera centre x,y,z in the camera link's frame (its z axis the optical axis).
+    camera_offset: [f64; 3] = [0.0; 3], "cm", All, Rule::Any;
     /// The three learned joints (base yaw, shoulder, elbow) by URDF name, a,b,c.
-    learned_joints: [String; 3],
-    /// Folders searched for the URDF's `package://NAME/rest` meshes, in order (`none`, or
-    /// comma-separated; a relative one in a config file is taken from that file's folder).
-    package_paths: PackagePaths,
-    /// The camera's reach space: `auto` (fitted to the arm) or r_min,r_max,z_min,z_max (cm).
-    reach_space: ReachSetting,
-    /// Raycast camera: rays per image side (the 512×512 image is sampled N×N).
-    raycast_resolution: usize,
-    /// Raycast camera: σ of each pixel's grey level (coverage 0–1) before the blob is
-    /// measured; 0 = noiseless.
-    raycast_noise: f64,
-    /// Sensor noise: σ of the blob centroid on each image axis (pixels); 0 = exact.
-    camera_noise_px: f64,
-    /// Sensor noise: σ of the blob area relative to itself; 0 = exact.
-    camera_area_noise: f64,
-    /// Sensor noise: σ of each joint encoder's reading (degrees); 0 = exact.
-    joint_noise_deg: f64,
-    /// Frames per second of a free-running camera (dynamic simulator); 0 = a frame the
-    /// moment each move has settled (the study's).
-    camera_fps: f64,
-    /// A frame shows the world as it was this long before it is delivered (ms; a
-    /// multiple of `dt`, dynamic simulator); default 0.
-    camera_latency_ms: f64,
-    /// step (each move settles before the next frame; the study's) or continuous (a new
-    /// move at every frame while the arm moves; dynamic simulator, `camera_fps` > 0).
-    servo_mode: ServoMode,
-    /// Known patterns trained per 100 regular patterns.
-    known_pattern_perc: f64,
-    /// Learning patterns each bin keeps.
-    bin_size: usize,
-    /// Stored patterns in all bins together at most; past it the least recently used bins
-    /// are dropped whole (0: no cap).
-    max_stored_patterns: usize,
-    /// nnw: at most this many patterns re-trained per node after a trial.
-    nnw_train_limit: usize,
+    learned_joints: [String; 3] = ["joint_1", "joint_2", "joint_3"].map(String::from), "", All, Rule::Any;
+    /// Folders searched for the URDF's `package://NAME/rest` meshes, comma-separated, or
+    /// `none` (a relative one is taken from the config file's folder).
+    package_paths: PackagePaths = PackagePaths::default(), "", All, Rule::Any;
+    /// Where targets lie: r_min,r_max,z_min,z_max of the study's half annulus, or `auto`
+    /// (the same shape fitted to what the arm reaches looking down).
+    reach_space: ReachSetting = ReachSetting::Given([46.0, 93.0, 0.0, 52.0]), "cm", All, Rule::Any;
+    /// Rays per image side: the 512×512 image is sampled by an N×N grid of rays.
+    raycast_resolution: usize = 256, "", RAYCAST, Within(16.0, 4096.0);
+    /// σ of each pixel's grey level (its coverage, 0–1) before the blob is measured.
+    raycast_noise: f64 = 0.0, "", RAYCAST, Within(0.0, 0.3);
+    /// Sensor noise: σ of the blob centroid on each image axis (0: exact).
+    camera_noise_px: f64 = 0.0, "pixels", All, Within(0.0, 50.0);
+    /// Sensor noise: σ of the blob area relative to itself (0: exact).
+    camera_area_noise: f64 = 0.0, "", All, Within(0.0, 0.5);
+    /// Sensor noise: σ of each joint encoder's reading (0: exact).
+    joint_noise_deg: f64 = 0.0, "°", All, Within(0.0, 10.0);
+    /// Frames per second of a free-running camera; 0: a frame the moment each move has
+    /// settled (the study's). Needs sim dynamic when above 0.
+    camera_fps: f64 = 0.0, "frames/s", DYNAMIC, Within(0.0, 1000.0);
+    /// A frame shows the world as it was this long before it is delivered (a whole number
+    /// of dt steps).
+    camera_latency_ms: f64 = 0.0, "ms", DYNAMIC, Within(0.0, 1000.0);
+    /// step (each move settles before the next frame: the study's) or continuous (a new move
+    /// at every frame while the arm moves; needs camera_fps above 0).
+    servo_mode: ServoMode = ServoMode::Step, "", DYNAMIC, Rule::Any;
+    /// Turn the camera about its optical axis by rotate_degrees before this trial (0:
+    /// never).
+    rotate_trial: usize = 0, "", All, Rule::Any;
+    /// Degrees the camera turns at rotate_trial.
+    rotate_degrees: f64 = 0.0, "°", All, Within(-360.0, 360.0);
+    /// Stretch link elongate_link by elongate_cm before this trial (0: never).
+    elongate_trial: usize = 0, "", All, Rule::Any;
+    /// The link stretched at elongate_trial: 1, 2 or 3.
+    elongate_link: usize = 2, "", All, Rule::Any;
+    /// Signed length added to that link (negative shortens it).
+    elongate_cm: f64 = 0.0, "cm", All, Rule::Any;
+    /// The tree is not split deeper than this.
+    tree_depth: usize = 8, "", NESTED, Within(1.0, 12.0);
+    /// A sub-box is split off when its stored patterns' error in its parent exceeds this.
+    split_error: f64 = 0.0001, "", NESTED, NonNegative;
+    /// Stored patterns a sub-box needs before it is split off (keep it at 25 or more).
+    min_pats_for_split: usize = 50, "", NESTED, Within(1.0, 1e6);
+    /// Learning patterns each bin keeps (the oldest is dropped when full).
+    bin_size: usize = 5, "", NESTED, Within(1.0, 10000.0);
+    /// Stored patterns in all bins together at most, past which the least recently used
+    /// bins are dropped whole (0: no cap; otherwise at least bin_size).
+    max_stored_patterns: usize = 2000000, "", NESTED, Rule::Any;
+    /// Relative merge: a child is cut when its running error exceeds its parent's on its box
+    /// by this much (99.05: never, in practice).
+    merge_error: f64 = 99.05, "", PERCEPTRONS, NonNegative;
+    /// Absolute merge: a node is cut when its mean miss over its last am_error_iters
+    /// patterns exceeds this.
+    am_error_tresh: f64 = 20.0, "°", PERCEPTRONS, Positive;
+    /// Patterns averaged for the absolute merge.
+    am_error_iters: usize = 300, "", PERCEPTRONS, Within(1.0, 10000.0);
+    /// How changes of the mapping are handled: thesis (the study's merges) or
+    /// change_detection (also watch the trials and relearn after an alarm).
+    merge_strategy: MergeStrategy = MergeStrategy::Thesis, "", WATCHING, Rule::Any;
+    /// change_detection: a trial counts towards an alarm by how far its mean log relative
+    /// error is above the baseline, less this many spreads.
+    change_drift: f64 = 0.5, "", WATCHING, NonNegative;
+    /// change_detection: alarm level of the CUSUM statistic (spreads).
+    change_threshold: f64 = 16.0, "", WATCHING, Positive;
+    /// change_detection: trials the baseline averages over.
+    change_baseline: usize = 300, "", WATCHING, Within(1.0, 1e9);
+    /// change_detection: trials that pass before a trial's value enters the baseline.
+    change_lag: usize = 60, "", WATCHING, Within(0.0, 1e6);
+    /// change_detection: trials watched before the first alarm can come, after the start
+    /// and after each alarm (above change_lag).
+    change_warmup: usize = 200, "", WATCHING, Rule::Any;
+    /// change_detection: patterns from after a change a node needs before it answers again.
+    change_min_fresh: usize = 20, "", NESTED, Rule::Any;
+    /// change_detection: trials after an alarm, and between later checks, before subtrees
+    /// starved of new patterns are cut.
+    change_grace: usize = 200, "", NESTED, AtLeast(1.0);
+    /// The error of each tree level is averaged over this many patterns.
+    monitor_ave: usize = 100, "", PERCEPTRONS, Within(1.0, 1e7);
+    /// Kept from the study's config, whose author did not know its use.
+    split_extension: f64 = 2.0, "", Unused, Rule::Any;
+    /// Staggered sum-sets (perceptrons) per node.
+    nr_of_matrices: usize = 5, "", PERCEPTRONS, Within(1.0, 1000.0);
+    /// Patterns a sum-set holds before it is cleared (at least nr_of_matrices).
+    max_pats_in_mat: usize = 1000, "", PERCEPTRONS, Rule::Any;
+    /// Known patterns (c = 0 → Δθ = 0) trained per 100 regular patterns.
+    known_pattern_perc: f64 = 50.0, "", PERCEPTRONS, Within(0.0, 1000.0);
+    /// lin8: the d boundaries shrink by this factor per tree depth (the study's 0.20
+    /// starves this arm's tree below depth 4; 0.5 halves the d box like every other input).
+    error_area_shrink: f64 = 0.5, "", LIN8, PositiveUpTo(1.0);
+    /// nnw: at most this many patterns re-train a node after a trial.
+    nnw_train_limit: usize = 300, "", NNW, Within(0.0, 1e6);
     /// nnw: a node is re-trained once it got this many new patterns.
-    nnw_train_delay: usize,
-    /// nnw: initial weights are drawn in ±wrange.
-    wrange: f64,
-    /// nnw: hidden units per network.
-    hidden_units: usize,
-    /// ffn: hidden units of the single network.
-    ffn_hidden_units: usize,
-    /// ffn: most recent patterns the network is trained on.
-    ffn_window: usize,
-    /// ffn: conjugate-gradient iterations after each trial.
-    ffn_cg_iterations: usize,
-    /// kohonen: neurons per side of the 5-D lattice.
-    kohonen_side: usize,
-    /// kohonen: patterns over which neighbourhood and rates shrink.
-    kohonen_anneal_patterns: usize,
+    nnw_train_delay: usize = 15, "", NNW, Rule::Any;
+    /// Initial weights of a net are drawn in ±wrange.
+    wrange: f64 = 0.1, "", NETS, PositiveUpTo(10.0);
+    /// nnw: hidden units of each node's net.
+    hidden_units: usize = 5, "", NNW, Within(1.0, 10000.0);
+    /// ffn: hidden units of the one net (25; the study also tried 45).
+    ffn_hidden_units: usize = 25, "", FFN, Within(1.0, 10000.0);
+    /// ffn: the net is trained on this many most recent patterns.
+    ffn_window: usize = 1000, "", FFN, Within(1.0, 1e6);
+    /// ffn: conjugate-gradient (Polak-Ribière) iterations after every trial.
+    ffn_cg_iterations: usize = 10, "", FFN, Within(0.0, 10000.0);
+    /// kohonen: neurons per side of the 5-D lattice (7: the study's 16,807).
+    kohonen_side: usize = 7, "", KOHONEN, Within(2.0, 12.0);
+    /// kohonen: patterns over which the neighbourhood and the learning rates shrink.
+    kohonen_anneal_patterns: usize = 150000, "", KOHONEN, AtLeast(1.0);
     /// lwpr: a new receptive field's distance metric, times the identity (per squared
-    /// normalised input).
-    init_D: f64,
+    /// normalised input; 25: a Gaussian of σ 0.2 of each input range).
+    init_D: f64 = 25.0, "", LWPR, PositiveUpTo(1e6);
     /// lwpr: a new field's learning rate of its distance metric.
-    init_alpha: f64,
+    init_alpha: f64 = 50.0, "", LWPR, PositiveUpTo(1e6);
     /// lwpr: a new field is made where no field is activated above this.
-    w_gen: f64,
-    /// lwpr: of two fields both activated above this, the narrower is dropped.
-    w_prune: f64,
+    w_gen: f64 = 0.1, "", LWPR, OpenUnit;
+    /// lwpr: of two fields both activated above this, the narrower is dropped (1: never;
+    /// above w_gen).
+    w_prune: f64 = 1.0, "", LWPR, Rule::Any;
     /// lwpr: a new field's forgetting factor.
-    init_lambda: f64,
+    init_lambda: f64 = 0.999, "", LWPR, OpenUnit;
     /// lwpr: the forgetting factor's annealing rate per update.
-    tau_lambda: f64,
+    tau_lambda: f64 = 0.9999, "", LWPR, UnitBelowOne;
     /// lwpr: the forgetting factor a field anneals to.
-    final_lambda: f64,
-    /// lwpr: 1: diagonal distance metrics; 0: full ones.
-    diag_only: usize,
+    final_lambda: f64 = 0.99999, "", LWPR, OpenUnit;
+    /// lwpr: 1: diagonal distance metrics (a width per input); 0: full ones.
+    diag_only: usize = 1, "", LWPR, Within(0.0, 1.0);
     /// lwpr: 1: the metric's learning rates adapt (meta learning); 0: fixed.
-    meta: usize,
+    meta: usize = 0, "", LWPR, Within(0.0, 1.0);
     /// lwpr: learning rate of the learning rates' logarithms (with meta 1).
-    meta_rate: f64,
+    meta_rate: f64 = 250.0, "", LWPR, Within(0.0, 1e6);
     /// lwpr: weight of the smoothness penalty on the distance metric.
-    penalty: f64,
-    /// lwpr: another projection is added when the last one cut the error below this
+    penalty: f64 = 0.000001, "", LWPR, Within(0.0, 1e3);
+    /// lwpr: another PLS projection is added once the last cut the error below this
     /// fraction.
-    add_threshold: f64,
-    /// lwpr: outputs Δθ are learned divided by this (degrees).
-    norm_out: f64,
-    ;
+    add_threshold: f64 = 0.5, "", LWPR, OpenUnit;
+    /// lwpr: outputs Δθ are learned in units of this many degrees.
+    norm_out: f64 = 10.0, "°", LWPR, PositiveUpTo(1e4);
+    /// 0: store learning patterns in the run's pat_file; anything else: in memory.
+    use_pat_file: i64 = 1, "", NESTED, Rule::Any;
+    /// Memory and the per-level tree error are recorded every this many trials.
+    depth_info: usize = 5, "", All, AtLeast(1.0);
+    /// 1: print progress during a run; 0: quiet.
+    verbose_output: i64 = 0, "", All, Rule::Any;
     repeated {
-        /// A box standing in the world, `x,y,z,sx,sy,sz`: its centre and side lengths (cm,
-        /// world frame); zero or more lines. The ray-cast camera sees it, it can hide the
-        /// target, targets are never drawn inside it, and moves stop at it.
-        obstacle: ObstacleBox,
+        /// A box standing in the world, x,y,z,sx,sy,sz: its centre and side lengths (world
+        /// frame); zero or more lines. The ray-cast camera sees it, it can hide the target,
+        /// targets are never drawn inside it, and moves stop at it.
+        obstacle: ObstacleBox, "cm", All;
     }
 }

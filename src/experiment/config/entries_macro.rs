@@ -1,14 +1,16 @@
-//! The macro that turns the list of config entries into the `Config` struct, the table of
-//! entry names and the parser's bookkeeping of the entries read so far. Entries come in two
-//! kinds: those given exactly once, and repeated ones (`obstacle`), given zero or more
-//! times, whose values the config keeps in the order of their lines.
+//! The macro that turns the declaration of every config entry — its doc line, name, kind,
+//! default, unit, scope and rule — into the `Config` struct, its defaults, the parser's
+//! assignment by name, the check of each value against its own rule, and the
+//! [`Declaration`](super::Declaration) table that `config defaults`, `info` and the docs
+//! print. Entries come in two kinds: those holding one value, and repeated ones
+//! (`obstacle`), given zero or more times, whose values the config keeps in order.
 
 macro_rules! config_entries {
     (
-        $( $(#[doc = $doc:literal])* $name:ident : $ty:ty, )*
-        ;
+        $( $(#[doc = $doc:literal])+
+           $name:ident : $ty:ty = $default:expr, $unit:literal, $scope:expr, $rule:expr; )*
         repeated {
-            $( $(#[doc = $rdoc:literal])* $rname:ident : $rty:ty, )*
+            $( $(#[doc = $rdoc:literal])+ $rname:ident : $rty:ty, $runit:literal, $rscope:expr; )*
         }
     ) => {
         /// Every setting of a run. Field names are the config entries' names; lengths are in
@@ -20,70 +22,20 @@ macro_rules! config_entries {
             $( $(#[doc = $rdoc])* pub $rname: Vec<$rty>, )*
         }
 
-        /// Every entry given exactly once, in the order `Config` declares them.
+        /// Every entry that holds one value, in the order `Config` declares them.
         pub const ENTRY_NAMES: &[&str] = &[$(stringify!($name)),*];
         /// Every entry that may be given any number of times (zero included).
         pub const REPEATED_ENTRY_NAMES: &[&str] = &[$(stringify!($rname)),*];
 
-        /// Entries read so far, with the line each came from.
-        #[derive(Debug, Default)]
-        #[allow(non_snake_case)]
-        pub(super) struct Entries {
-            $( $name: Option<($ty, usize)>, )*
-            $( $rname: Vec<($rty, usize)>, )*
-        }
-
-        impl Entries {
-            /// Stores `raw` under `name`; the error says why it can't be.
-            pub(super) fn put(&mut self, name: &str, raw: &str, line: usize) -> Result<(), ConfigErrorKind> {
-                match name {
-                    $(stringify!($name) => {
-                        const NAME: &str = stringify!($name);
-                        if let Some((_, first_line)) = self.$name {
-                            return Err(ConfigErrorKind::Repeated { name: NAME, first_line });
-                        }
-                        let value = <$ty as ConfigValue>::parse_value(raw)
-                            .map_err(|problem| ConfigErrorKind::BadValue { name: NAME, problem })?;
-                        self.$name = Some((value, line));
-                        Ok(())
-                    })*
-                    $(stringify!($rname) => {
-                        let value = <$rty as ConfigValue>::parse_value(raw).map_err(|problem| {
-                            ConfigErrorKind::BadValue { name: stringify!($rname), problem }
-                        })?;
-                        self.$rname.push((value, line));
-                        Ok(())
-                    })*
-                    _ => Err(ConfigErrorKind::UnknownEntry { name: name.to_string() }),
-                }
-            }
-
-            /// The entries not given yet.
-            pub(super) fn missing(&self) -> Vec<&'static str> {
-                let mut missing = Vec::new();
-                $( if self.$name.is_none() { missing.push(stringify!($name)); } )*
-                missing
-            }
-
-            /// The line `name` was given on.
-            pub(super) fn line_of(&self, name: &str) -> Option<usize> {
-                match name {
-                    $(stringify!($name) => self.$name.as_ref().map(|(_, l)| *l),)*
-                    $(stringify!($rname) => self.$rname.first().map(|(_, l)| *l),)*
-                    _ => None,
-                }
-            }
-
-            /// The config, once nothing is missing.
-            pub(super) fn complete(self) -> Option<Config> {
-                Some(Config {
-                    $( $name: self.$name?.0, )*
-                    $( $rname: self.$rname.into_iter().map(|(value, _)| value).collect(), )*
-                })
-            }
-        }
-
         impl Config {
+            /// Every entry at its declared default (no obstacles).
+            pub fn defaults() -> Config {
+                Config {
+                    $( $name: $default, )*
+                    $( $rname: Vec::new(), )*
+                }
+            }
+
             /// Sets one entry from its text without checking it against the other entries
             /// (a repeated entry gets one more value): set every value first, then
             /// [`check`](Config::check) the whole config once.
@@ -113,6 +65,38 @@ macro_rules! config_entries {
                 $( all.extend(self.$rname.iter().map(|v| (stringify!($rname), v.render()))); )*
                 all
             }
+
+            /// Checks every value against its own declared rule, in declaration order.
+            pub(super) fn check_each_entry(&self) -> Result<(), ConfigErrorKind> {
+                $( meets_rule(stringify!($name), &self.$name, $rule, $unit)?; )*
+                Ok(())
+            }
+        }
+
+        /// Every entry's declaration, in the order `Config` declares them (the repeated
+        /// ones last).
+        pub fn declarations() -> Vec<Declaration> {
+            let defaults = Config::defaults();
+            vec![
+                $( Declaration {
+                    name: stringify!($name),
+                    kind: <$ty as ConfigValue>::KIND,
+                    unit: $unit,
+                    scope: $scope,
+                    doc: one_line(concat!($($doc, "\n"),*)),
+                    rule: $rule,
+                    default: Some(defaults.$name.render()),
+                }, )*
+                $( Declaration {
+                    name: stringify!($rname),
+                    kind: <$rty as ConfigValue>::KIND,
+                    unit: $runit,
+                    scope: $rscope,
+                    doc: one_line(concat!($($rdoc, "\n"),*)),
+                    rule: Rule::Any,
+                    default: None,
+                }, )*
+            ]
         }
     };
 }

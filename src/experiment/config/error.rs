@@ -11,8 +11,8 @@ const SHOWN_CHARS: usize = 60;
 pub struct ConfigError {
     /// The config file as the user named it.
     pub file: String,
-    /// The 1-based line the error is on (a missing entry: the last line); `None` when the
-    /// error is not at a line (the file cannot be read).
+    /// The 1-based line the error is on; `None` when the error is not at a line (the file
+    /// cannot be read).
     pub line: Option<usize>,
     /// What is wrong.
     pub kind: ConfigErrorKind,
@@ -56,12 +56,6 @@ pub enum ConfigErrorKind {
         name: &'static str,
         /// The line it was first given on.
         first_line: usize,
-    },
-    /// Entries the file does not give.
-    #[error("missing entries: {}", .names.join(", "))]
-    Missing {
-        /// The entries missing, in the order `Config` declares them.
-        names: Vec<&'static str>,
     },
     /// A value that is not of the entry's kind.
     #[error("{name}: {problem}")]

@@ -1,29 +1,40 @@
 //! The config file (the study's appendix A.2 format): `name value` lines, `#` comments and
-//! blank lines, in any order. Every entry must be given exactly once, but for the repeated
-//! ones (`obstacle`), given any number of times; an unknown name, a
-//! name given twice, a missing name, a value of the wrong kind (a real number for an
-//! integer), a value out of its sane range or against another entry, or one that would
-//! need more memory than the machine has stops with `file:line: reason`.
+//! blank lines, in any order. A file carries only what it changes: an entry it does not
+//! give keeps its declared default (`entries.rs`). An unknown name, a name given twice (but
+//! the repeated `obstacle`), a value of the wrong kind (a real number for an integer), a
+//! value out of its sane range or against another entry, or one that would need more
+//! memory than the machine has stops with `file:line: reason`.
+
+#[macro_use]
+mod entries_macro;
+mod declaration;
+mod defaults_text;
+mod entries;
+mod error;
+mod memory;
+mod package_paths;
+mod rule;
+mod scope;
+mod source;
+mod validate;
+mod values;
+
+pub use declaration::Declaration;
+pub use defaults_text::{defaults_text, docs_table};
+pub use entries::{declarations, Config, ENTRY_NAMES, REPEATED_ENTRY_NAMES};
+pub(crate) use error::shown;
+pub use error::{ConfigError, ConfigErrorKind, ValueError};
+pub use package_paths::PackagePaths;
+pub use rule::Rule;
+pub use scope::Scope;
+pub use source::{Source, Sources};
+pub use values::{CameraKind, ObstacleBox, ReachSetting, SimKind};
 
 use std::fmt;
 use std::path::Path;
 
-/// The shipped default config (`configs/lin5.conf`), built into the binary.
-const DEFAULT_CONFIG: &str = include_str!("../../../configs/lin5.conf");
-/// The name the built-in default config is reported under.
-pub const DEFAULT_CONFIG_NAME: &str = "configs/lin5.conf";
-
-#[macro_use]
-mod entries_macro;
-mod entries;
-mod error;
-mod memory;
-mod validate;
-
-use entries::Entries;
-pub use entries::{Config, ENTRY_NAMES, REPEATED_ENTRY_NAMES};
-pub(crate) use error::shown;
-pub use error::{ConfigError, ConfigErrorKind, ValueError};
+/// The name a config made of the declared defaults alone is reported under.
+pub const DEFAULT_CONFIG_NAME: &str = "defaults";
 
 impl ConfigErrorKind {
     /// The entry the error is about, if it is about one.
@@ -40,9 +51,23 @@ impl ConfigErrorKind {
     }
 }
 
+/// The declared name `name` is, if it is an entry's.
+fn entry_name(name: &str) -> Option<&'static str> {
+    ENTRY_NAMES
+        .iter()
+        .chain(REPEATED_ENTRY_NAMES)
+        .copied()
+        .find(|n| *n == name)
+}
+
 impl Config {
     /// Reads and checks a config file.
     pub fn from_file(path: &Path) -> Result<Config, ConfigError> {
+        Config::read_file(path).map(|(config, _)| config)
+    }
+
+    /// Reads and checks a config file, with where each value came from.
+    pub fn read_file(path: &Path) -> Result<(Config, Sources), ConfigError> {
         let name = path.display().to_string();
         let text = std::fs::read_to_string(path).map_err(|e| ConfigError {
             file: name.clone(),
@@ -51,23 +76,28 @@ impl Config {
                 reason: e.to_string(),
             },
         })?;
-        Config::parse(&text, &name)
+        Config::read(&text, &name)
     }
 
     /// Parses config text (a leading UTF-8 byte-order mark is skipped) and checks the
     /// whole config; `file` names it in errors.
     pub fn parse(text: &str, file: &str) -> Result<Config, ConfigError> {
+        Config::read(text, file).map(|(config, _)| config)
+    }
+
+    /// [`parse`](Config::parse), with where each value came from: a line of `file`, or
+    /// (not recorded) the entry's default.
+    pub fn read(text: &str, file: &str) -> Result<(Config, Sources), ConfigError> {
         let error = |line, kind| ConfigError {
             file: file.to_string(),
             line: Some(line),
             kind,
         };
         let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-        let mut entries = Entries::default();
-        let mut last_line = 0;
+        let mut config = Config::defaults();
+        let mut sources = Sources::default();
         for (index, raw_line) in text.lines().enumerate() {
             let line = index + 1;
-            last_line = line;
             let content = raw_line.split('#').next().unwrap_or("").trim();
             if content.is_empty() {
                 continue;
@@ -77,34 +107,30 @@ impl Config {
                 let found = content.to_string();
                 return Err(error(line, ConfigErrorKind::NotNameValue { found }));
             };
-            entries
-                .put(name, value, line)
+            let name = entry_name(name).ok_or_else(|| {
+                let name = name.to_string();
+                error(line, ConfigErrorKind::UnknownEntry { name })
+            })?;
+            if let Some(first_line) = sources.line_of(name) {
+                if !REPEATED_ENTRY_NAMES.contains(&name) {
+                    return Err(error(line, ConfigErrorKind::Repeated { name, first_line }));
+                }
+            }
+            config
+                .assign(name, value)
                 .map_err(|kind| error(line, kind))?;
+            let file = file.to_string();
+            sources.record(name, Source::Line { file, line });
         }
-        let names = entries.missing();
-        if !names.is_empty() {
-            return Err(error(last_line.max(1), ConfigErrorKind::Missing { names }));
-        }
-        let lines: Vec<(&str, Option<usize>)> = ENTRY_NAMES
-            .iter()
-            .map(|n| (*n, entries.line_of(n)))
-            .collect();
-        let mut config = entries.complete().expect("no entry is missing");
         if let Some(folder) = Path::new(file).parent() {
             config.package_paths.relative_to(folder);
         }
-        config.check().map_err(|kind| {
-            let line = kind
-                .entry()
-                .and_then(|entry| lines.iter().find(|(n, _)| *n == entry))
-                .and_then(|(_, line)| *line);
-            ConfigError {
-                file: file.to_string(),
-                line,
-                kind,
-            }
+        config.check().map_err(|kind| ConfigError {
+            file: file.to_string(),
+            line: kind.entry().and_then(|entry| sources.line_of(entry)),
+            kind,
         })?;
-        Ok(config)
+        Ok((config, sources))
     }
 
     /// Sets one entry from its text, as a config line would, and checks the whole config.
@@ -115,9 +141,9 @@ impl Config {
         self.check()
     }
 
-    /// The shipped default config (`configs/lin5.conf`).
+    /// The config of the declared defaults (lin5, the kinematic simulator, the OSCAR-6).
     pub fn default_config() -> Config {
-        Config::parse(DEFAULT_CONFIG, DEFAULT_CONFIG_NAME).expect("the shipped config is valid")
+        Config::defaults()
     }
 
     /// The config text: every entry as `name value`, one a line.
@@ -126,6 +152,54 @@ impl Config {
             .iter()
             .map(|(n, v)| format!("{n} {v}\n"))
             .collect()
+    }
+
+    /// The config text with where each value came from after it, as a comment (`default`,
+    /// `file:line`, `--set`, a flag), and `unused` beside the entries eyehand does not
+    /// implement: the `info` file's config section and `check-config --explain`.
+    pub fn explained_text(&self, sources: &Sources) -> String {
+        let defaults = Config::defaults().entries();
+        let unused: Vec<&str> = declarations()
+            .into_iter()
+            .filter(|d| d.scope == Scope::Unused)
+            .map(|d| d.name)
+            .collect();
+        let width = self.entries().iter().map(|(n, v)| n.len() + v.len()).max();
+        let width = width.unwrap_or(0) + 1;
+        let mut repeated_seen = Vec::new();
+        let mut text = String::new();
+        for (name, value) in self.entries() {
+            let source = if REPEATED_ENTRY_NAMES.contains(&name) {
+                let index = repeated_seen.iter().filter(|n| **n == name).count();
+                repeated_seen.push(name);
+                sources.all_of(name).nth(index).cloned()
+            } else {
+                sources.of(name).cloned()
+            };
+            let source =
+                source.unwrap_or_else(|| unrecorded(defaults.contains(&(name, value.clone()))));
+            let pad = width - name.len() - value.len();
+            let note = if unused.contains(&name) {
+                ", unused"
+            } else {
+                ""
+            };
+            text += &format!("{name} {value}{:pad$}# {source}{note}\n", "");
+        }
+        text
+    }
+
+    /// Where the value of entry `name` came from: as `sources` recorded it, else its
+    /// default when it holds it, else the program that built the config.
+    pub fn source_of(&self, name: &str, sources: &Sources) -> Source {
+        sources.of(name).cloned().unwrap_or_else(|| {
+            let value = self.entries().into_iter().find(|(n, _)| *n == name);
+            let default = Config::defaults()
+                .entries()
+                .into_iter()
+                .find(|(n, _)| *n == name);
+            unrecorded(value == default)
+        })
     }
 
     /// Input boundaries (low, high) of dimension `i` (0–7).
@@ -141,6 +215,15 @@ impl Config {
             (self.boundary_7_low, self.boundary_7_high),
         ];
         all[i]
+    }
+}
+
+/// The source of a value no file, `--set` or flag gave: its default, or the program.
+fn unrecorded(is_default: bool) -> Source {
+    if is_default {
+        Source::Default
+    } else {
+        Source::Program
     }
 }
 

@@ -50,8 +50,8 @@ pub(super) fn record(
         .save(out)
         .map_err(|e| failed(e.to_string()))?;
     let camera = CameraModel::default();
-    let resolution = match run.config.camera {
-        CameraKind::Raycast => run.config.raycast_resolution,
+    let resolution = match run.setup.config.camera {
+        CameraKind::Raycast => run.setup.config.raycast_resolution,
         CameraKind::Projection => (camera.width / 2.0).round() as usize,
     };
     let mut log = TrialLogger {

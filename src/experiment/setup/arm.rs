@@ -88,26 +88,6 @@ pub fn arm_entry(error: &DescriptionError) -> Option<&'static str> {
     }
 }
 
-/// `file:line` of `entry` in the config file `file` when that line gives the value
-/// `config` holds; `--set` when the value came from elsewhere (the command line, code).
-pub fn entry_position(file: &str, config: &Config, entry: &str) -> String {
-    let value = config
-        .entries()
-        .into_iter()
-        .find_map(|(name, value)| (name == entry).then_some(value));
-    let line = std::fs::read_to_string(file).ok().and_then(|text| {
-        text.lines().position(|line| {
-            let content = line.split('#').next().unwrap_or("");
-            let mut words = content.split_whitespace();
-            words.next() == Some(entry) && words.next() == value.as_deref()
-        })
-    });
-    match line {
-        Some(index) => format!("{file}:{}", index + 1),
-        None => "--set".to_string(),
-    }
-}
-
 /// The reach space `reach_space` gives (cm), or the one fitted to `model` for `auto`
 /// (`None` when nothing fits).
 pub fn reach_space(config: &Config, model: &ArmModel) -> Option<ReachSpace> {

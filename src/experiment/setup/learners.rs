@@ -137,3 +137,24 @@ fn perceptron_settings(config: &Config) -> PerceptronSettings {
         set_size: config.max_pats_in_mat,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::experiment::setup::dynamic_settings;
+    use crate::robot::DynamicSettings;
+
+    /// Each learner's `Settings::default` is what the config's declared defaults give, so
+    /// the two ways to build a learner cannot drift apart.
+    #[test]
+    fn every_settings_default_is_the_declared_defaults() {
+        let config = Config::defaults();
+        assert_eq!(lin5_settings(&config), Lin5Settings::default());
+        assert_eq!(lin8_settings(&config), Lin8Settings::default());
+        assert_eq!(nnw_settings(&config), NnwSettings::default());
+        assert_eq!(ffn_settings(&config), FfnSettings::default());
+        assert_eq!(kohonen_settings(&config), KohonenSettings::default());
+        assert_eq!(lwpr_settings(&config), LwprSettings::default());
+        assert_eq!(dynamic_settings(&config), DynamicSettings::default());
+    }
+}

@@ -4,9 +4,7 @@
 mod arm;
 mod learners;
 
-pub use arm::{
-    arm_entry, arm_settings, entry_position, fit_reach, load_arm, reach_space, LoadedArm,
-};
+pub use arm::{arm_entry, arm_settings, fit_reach, load_arm, reach_space, LoadedArm};
 pub use learners::{
     ffn_settings, input_bounds, kohonen_settings, lin5_settings, lin8_settings, lwpr_settings,
     nnw_settings,

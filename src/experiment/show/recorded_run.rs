@@ -3,9 +3,8 @@
 //! `nodes` file one line per finished trial.
 
 use super::ShowError;
-use crate::experiment::setup::load_arm;
-use crate::experiment::{Config, Event};
-use crate::robot::{ArmModel, DEFAULT_URDF_NAME};
+use crate::experiment::{Config, RunSetup, Sources};
+use crate::robot::DEFAULT_URDF_NAME;
 use std::path::{Path, PathBuf};
 
 /// A finished (or interrupted) run, as its folder records it.
@@ -13,12 +12,9 @@ use std::path::{Path, PathBuf};
 pub struct RecordedRun {
     /// The run folder.
     pub folder: PathBuf,
-    /// Every config value the run used.
-    pub config: Config,
-    /// The robot as loaded at the start of the run.
-    pub model: ArmModel,
-    /// The events the run applied, in order.
-    pub events: Vec<Event>,
+    /// The run put together again from its `info`: every config value it used, the robot
+    /// as loaded at its start, its reach space and the events it applied, in order.
+    pub setup: RunSetup,
     /// Trials the run finished.
     pub trials: usize,
 }
@@ -54,17 +50,16 @@ impl RecordedRun {
                 );
             }
         }
-        let model = match urdf.as_deref() {
+        let urdf = match urdf.as_deref() {
             None => return Err(bad("no `urdf` line".into())),
-            Some(DEFAULT_URDF_NAME) => load_arm(&config, None)?.model,
-            Some(path) => load_arm(&config, Some(Path::new(path)))?.model,
+            Some(DEFAULT_URDF_NAME) => None,
+            Some(path) => Some(PathBuf::from(path)),
         };
+        let setup = RunSetup::new(config, urdf.as_deref(), events, &Sources::default())?;
         let nodes = std::fs::read_to_string(folder.join("nodes")).unwrap_or_default();
         Ok(RecordedRun {
             folder: folder.to_path_buf(),
-            config,
-            model,
-            events,
+            setup,
             trials: nodes.lines().count(),
         })
     }

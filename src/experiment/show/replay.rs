@@ -6,8 +6,6 @@ use super::watch::{Look, SharedLog, WatchLog, WatchedCamera, WatchedSim};
 use super::{RecordedRun, ShowError};
 use crate::control::{Failure, TrialLoop, TrialOutcome};
 use crate::experiment::run::next_trial;
-use crate::experiment::setup::reach_space;
-use crate::experiment::setup::{build_camera, build_learner, build_simulator, trial_settings};
 use crate::experiment::Event;
 use crate::learn::ModelEvent;
 use crate::robot::{ArmModel, Joints};
@@ -44,22 +42,14 @@ pub fn replay(
     mut on_trial: impl FnMut(TrialTrace) -> Result<(), ShowError>,
 ) -> Result<(), ShowError> {
     run.check_trials(1, last)?;
-    let config = &run.config;
+    let setup = &run.setup;
     let log = SharedLog::default();
-    let sim = WatchedSim::new(build_simulator(config, run.model.clone()), log.clone());
-    let camera = WatchedCamera::new(build_camera(config), log.clone());
-    let mut learner = build_learner(config, &run.model, Some(scratch))
+    let sim = WatchedSim::new(setup.simulator(), log.clone());
+    let camera = WatchedCamera::new(setup.camera(), log.clone());
+    let mut learner = setup
+        .learner(Some(scratch))
         .map_err(crate::experiment::RunError::from)?;
-    let reach = reach_space(config, &run.model)
-        .ok_or(crate::experiment::PreflightError::NoReachSpace)
-        .map_err(crate::experiment::RunError::from)?;
-    let mut trials = TrialLoop::new(
-        Box::new(sim),
-        Box::new(camera),
-        trial_settings(config),
-        config.seed,
-    )
-    .with_reach(reach);
+    let mut trials = setup.trial_loop_around(Box::new(sim), Box::new(camera));
     let mut model_events: Vec<ModelEvent> = Vec::new();
     learner.start_trial(0);
     trials
@@ -68,11 +58,11 @@ pub fn replay(
     for trial in 1..=last {
         log.borrow_mut().clear();
         trials.sim_mut().keep_ticks(ticks && watched(trial));
-        let outcome = next_trial(&mut trials, learner.as_mut(), &run.events, trial)?;
+        let outcome = next_trial(&mut trials, learner.as_mut(), &setup.events, trial)?;
         learner.drain_events(&mut model_events);
         model_events.clear();
         if watched(trial) {
-            on_trial(trace_of(trial, outcome, &log, &trials, &run.events))?;
+            on_trial(trace_of(trial, outcome, &log, &trials, &setup.events))?;
         }
     }
     Ok(())

@@ -33,8 +33,8 @@ pub fn show_trials(run_dir: &Path, range: TrialRange) -> Result<ShowReport, Show
     let scratch = show_folder(run_dir)?;
     let mut report = ShowReport::default();
     let camera = CameraModel::default();
-    let resolution = match run.config.camera {
-        CameraKind::Raycast => run.config.raycast_resolution,
+    let resolution = match run.setup.config.camera {
+        CameraKind::Raycast => run.setup.config.raycast_resolution,
         CameraKind::Projection => camera.width.round() as usize,
     };
     replay(
@@ -46,8 +46,8 @@ pub fn show_trials(run_dir: &Path, range: TrialRange) -> Result<ShowReport, Show
         |trace| {
             let folder = scratch.join(trace.trial.to_string());
             create(&folder)?;
-            let scene = KinematicSim::new(trace.model.clone(), move_settings(&run.config))
-                .with_obstacles(obstacles(&run.config));
+            let scene = KinematicSim::new(trace.model.clone(), move_settings(&run.setup.config))
+                .with_obstacles(obstacles(&run.setup.config));
             let view = View {
                 camera: &camera,
                 resolution,

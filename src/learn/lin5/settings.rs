@@ -13,8 +13,8 @@ pub(crate) const FIVE_INPUT_BOUNDS: [(f64, f64); 5] = [
     (-150.0, 300.0),
 ];
 
-/// Settings of `lin5`, the Nested Perceptron with input adjustment. The defaults are those
-/// of the shipped `configs/lin5.conf`.
+/// Settings of `lin5`, the Nested Perceptron with input adjustment. The defaults are the
+/// config entries' declared defaults (a test holds them equal).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Lin5Settings {
     /// The root box of the inputs (θ2, θ3, cx*, cy*, cz*) as (low, high) per input

@@ -3,8 +3,8 @@
 use crate::learn::change::ChangeSettings;
 use crate::learn::MergeStrategy;
 
-/// How the nested tree grows, shrinks, stores and measures. The defaults are those of the
-/// shipped `configs/lin5.conf`.
+/// How the nested tree grows, shrinks, stores and measures. The defaults are the config
+/// entries' declared defaults (a test holds them equal).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TreeSettings {
     /// The deepest a node can be (the root is at 0); bins are this fine (`tree_depth`);

@@ -1,7 +1,7 @@
 //! The `package_paths` config entry: folders searched for a URDF's `package://` meshes.
 
-use super::config::ValueError;
-use super::config_values::ConfigValue;
+use super::values::ConfigValue;
+use super::ValueError;
 use std::path::{Path, PathBuf};
 
 /// Folders searched, in order, for a URDF's `package://NAME/rest` meshes; empty for
@@ -30,6 +30,7 @@ impl PackagePaths {
 
 /// `none`, or folders `a,b,c` (no empty item; the config format allows no spaces).
 impl ConfigValue for PackagePaths {
+    const KIND: &'static str = "none or folders a,b";
     fn parse_value(raw: &str) -> Result<Self, ValueError> {
         if raw == "none" {
             return Ok(PackagePaths::default());

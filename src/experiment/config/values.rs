@@ -1,6 +1,6 @@
 //! Typed values of config entries: how each kind is parsed and written back.
 
-use super::config::ValueError;
+use super::ValueError;
 use crate::control::ServoMode;
 use crate::learn::{MergeStrategy, Method};
 use std::fmt;
@@ -8,10 +8,16 @@ use std::str::FromStr;
 
 /// A value a config entry can hold.
 pub(crate) trait ConfigValue: Sized {
+    /// The kind of value, in words, for the docs ("integer", "real", "x,y,z", …).
+    const KIND: &'static str;
     /// Parses the text after the entry's name; the error says why it is not a value.
     fn parse_value(raw: &str) -> Result<Self, ValueError>;
     /// The value as it is written in a config file.
     fn render(&self) -> String;
+    /// The value as a number, for the rule of a numeric entry; `None` for the others.
+    fn number(&self) -> Option<f64> {
+        None
+    }
 }
 
 fn parse_integer<T: FromStr>(raw: &str, min: i64, max: u64) -> Result<T, ValueError> {
@@ -34,11 +40,15 @@ fn parse_integer<T: FromStr>(raw: &str, min: i64, max: u64) -> Result<T, ValueEr
 macro_rules! integer_value {
     ($($t:ty),*) => {$(
         impl ConfigValue for $t {
+            const KIND: &'static str = "integer";
             fn parse_value(raw: &str) -> Result<Self, ValueError> {
                 parse_integer(raw, <$t>::MIN as i64, <$t>::MAX as u64)
             }
             fn render(&self) -> String {
                 self.to_string()
+            }
+            fn number(&self) -> Option<f64> {
+                Some(*self as f64)
             }
         }
     )*};
@@ -46,6 +56,7 @@ macro_rules! integer_value {
 integer_value!(usize, u64, i64);
 
 impl ConfigValue for f64 {
+    const KIND: &'static str = "real";
     fn parse_value(raw: &str) -> Result<Self, ValueError> {
         match raw.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
@@ -55,11 +66,15 @@ impl ConfigValue for f64 {
     fn render(&self) -> String {
         format!("{self:?}")
     }
+    fn number(&self) -> Option<f64> {
+        Some(*self)
+    }
 }
 
 macro_rules! named_value {
     ($($t:ty),*) => {$(
         impl ConfigValue for $t {
+            const KIND: &'static str = "choice";
             fn parse_value(raw: &str) -> Result<Self, ValueError> {
                 raw.parse().map_err(ValueError::UnknownChoice)
             }
@@ -98,6 +113,7 @@ fn name(part: &str) -> Option<String> {
 
 /// A URDF link or joint name (one word).
 impl ConfigValue for String {
+    const KIND: &'static str = "name";
     fn parse_value(raw: &str) -> Result<Self, ValueError> {
         Ok(raw.to_string())
     }
@@ -108,6 +124,7 @@ impl ConfigValue for String {
 
 /// Three reals `x,y,z`.
 impl ConfigValue for [f64; 3] {
+    const KIND: &'static str = "x,y,z";
     fn parse_value(raw: &str) -> Result<Self, ValueError> {
         list(raw, "three real numbers x,y,z", finite)
     }
@@ -118,6 +135,7 @@ impl ConfigValue for [f64; 3] {
 
 /// Three names `a,b,c`.
 impl ConfigValue for [String; 3] {
+    const KIND: &'static str = "a,b,c";
     fn parse_value(raw: &str) -> Result<Self, ValueError> {
         list(raw, "three joint names a,b,c", name)
     }
@@ -136,6 +154,7 @@ pub enum ReachSetting {
 }
 
 impl ConfigValue for ReachSetting {
+    const KIND: &'static str = "auto or r_min,r_max,z_min,z_max";
     fn parse_value(raw: &str) -> Result<Self, ValueError> {
         if raw == "auto" {
             return Ok(ReachSetting::Auto);
@@ -194,6 +213,7 @@ impl ObstacleBox {
 }
 
 impl ConfigValue for ObstacleBox {
+    const KIND: &'static str = "x,y,z,sx,sy,sz";
     fn parse_value(raw: &str) -> Result<Self, ValueError> {
         let bad = |reason: &str| ValueError::NotObstacle {
             text: raw.to_string(),

@@ -1,0 +1,57 @@
+//! What the declaration of a config entry says about it, as data: the table behind
+//! `eyehand config defaults`, docs/CONFIG.md and the check of each value on its own.
+
+use super::values::ConfigValue;
+use super::{ConfigErrorKind, Rule, Scope};
+
+/// One config entry's declaration.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Declaration {
+    /// The entry's name, as a config file writes it.
+    pub name: &'static str,
+    /// The kind of value it takes, in words ("integer", "real", "a,b,c", …).
+    pub kind: &'static str,
+    /// Its unit ("" for none).
+    pub unit: &'static str,
+    /// What it applies to.
+    pub scope: Scope,
+    /// One line saying what it does.
+    pub doc: String,
+    /// The rule its value must meet on its own.
+    pub rule: Rule,
+    /// Its default as a config file writes it; `None` for a repeated entry (none by
+    /// default).
+    pub default: Option<String>,
+}
+
+impl Declaration {
+    /// Whether the entry may be given any number of times.
+    pub fn is_repeated(&self) -> bool {
+        self.default.is_none()
+    }
+}
+
+/// Doc-comment lines joined into one line.
+pub(super) fn one_line(doc: &str) -> String {
+    doc.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// `value` of entry `name` (in `unit`) against its `rule`.
+pub(super) fn meets_rule<T: ConfigValue>(
+    name: &'static str,
+    value: &T,
+    rule: Rule,
+    unit: &str,
+) -> Result<(), ConfigErrorKind> {
+    let Some(number) = value.number() else {
+        return Ok(());
+    };
+    match rule.text(unit) {
+        Some(text) if !rule.holds(number) => Err(ConfigErrorKind::OutOfRange {
+            name,
+            value: value.render(),
+            rule: text,
+        }),
+        _ => Ok(()),
+    }
+}

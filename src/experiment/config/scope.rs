@@ -1,0 +1,82 @@
+//! What a config entry applies to: every run, some methods, one simulator or camera, or
+//! nothing (an entry kept from the study's config that eyehand does not implement).
+
+use super::values::{CameraKind, SimKind};
+use crate::learn::Method;
+use std::fmt;
+
+/// What an entry's value changes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scope {
+    /// Every run.
+    All,
+    /// Runs of these methods only.
+    Methods(&'static [Method]),
+    /// Runs on this simulator only.
+    Sim(SimKind),
+    /// Runs with this camera only.
+    Camera(CameraKind),
+    /// Nothing: the study's config had it, eyehand accepts it and records it as unused.
+    Unused,
+}
+
+/// The nested learners (the tree).
+pub(super) const NESTED: Scope = Scope::Methods(&[Method::Lin5, Method::Lin8, Method::Nnw]);
+/// The Nested Perceptrons.
+pub(super) const PERCEPTRONS: Scope = Scope::Methods(&[Method::Lin5, Method::Lin8]);
+/// The learners whose root box the input boundaries 0–4 are (all but `ik`).
+pub(super) const BOUNDED: Scope = Scope::Methods(&[
+    Method::Lin5,
+    Method::Lin8,
+    Method::Nnw,
+    Method::Ffn,
+    Method::Kohonen,
+    Method::Lwpr,
+]);
+/// The learners that watch for a change (`merge_strategy change_detection`).
+pub(super) const WATCHING: Scope =
+    Scope::Methods(&[Method::Lin5, Method::Lin8, Method::Nnw, Method::Lwpr]);
+/// `lin8` alone.
+pub(super) const LIN8: Scope = Scope::Methods(&[Method::Lin8]);
+/// `nnw` alone.
+pub(super) const NNW: Scope = Scope::Methods(&[Method::Nnw]);
+/// The learners made of nets (`nnw`, `ffn`).
+pub(super) const NETS: Scope = Scope::Methods(&[Method::Nnw, Method::Ffn]);
+/// `ffn` alone.
+pub(super) const FFN: Scope = Scope::Methods(&[Method::Ffn]);
+/// `kohonen` alone.
+pub(super) const KOHONEN: Scope = Scope::Methods(&[Method::Kohonen]);
+/// `lwpr` alone.
+pub(super) const LWPR: Scope = Scope::Methods(&[Method::Lwpr]);
+/// The dynamic simulator.
+pub(super) const DYNAMIC: Scope = Scope::Sim(SimKind::Dynamic);
+/// The ray-cast camera.
+pub(super) const RAYCAST: Scope = Scope::Camera(CameraKind::Raycast);
+
+impl Scope {
+    /// Whether a run of `method` on `sim` with `camera` uses the entry.
+    pub fn applies(self, method: Method, sim: SimKind, camera: CameraKind) -> bool {
+        match self {
+            Scope::All => true,
+            Scope::Methods(methods) => methods.contains(&method),
+            Scope::Sim(kind) => kind == sim,
+            Scope::Camera(kind) => kind == camera,
+            Scope::Unused => false,
+        }
+    }
+}
+
+impl fmt::Display for Scope {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Scope::All => f.write_str("all"),
+            Scope::Methods(methods) => {
+                let names: Vec<&str> = methods.iter().map(|m| m.name()).collect();
+                f.write_str(&names.join(" "))
+            }
+            Scope::Sim(kind) => write!(f, "sim {kind}"),
+            Scope::Camera(kind) => write!(f, "camera {kind}"),
+            Scope::Unused => f.write_str("unused"),
+        }
+    }
+}

@@ -9,11 +9,7 @@
 //! cargo run --release --example custom_learner -- 2000   # trials; prints the run folder
 //! ```
 
-use eyehand::experiment::setup::input_bounds;
-use eyehand::experiment::{run_learner, Config, RunOptions, RunResult};
-use eyehand::learn::{
-    adjusted_pattern, pose_pairs, LearnError, Learner, LearnerStats, Observation, Pattern5, Query,
-};
+use eyehand::prelude::*;
 use nalgebra::{SVector, Vector3};
 
 /// Patterns averaged per answer.

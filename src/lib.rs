@@ -5,7 +5,7 @@
 //! The modules follow the architecture (see `ARCHITECTURE.md`):
 //! [`robot`] (URDF model and simulators), [`camera`], [`control`] (trial loop and learning
 //! patterns), [`learn`] (the learners), [`experiment`] (config, events, run output) and the
-//! command line in [`cli`].
+//! command line in [`cli`]. A learner written outside the crate needs only [`prelude`].
 #![warn(missing_debug_implementations, unreachable_pub)]
 
 pub mod camera;
@@ -13,5 +13,6 @@ pub mod cli;
 pub mod control;
 pub mod experiment;
 pub mod learn;
+pub mod prelude;
 pub mod robot;
 pub mod units;

@@ -281,3 +281,31 @@ fn wrong_arm_entries_are_clear_errors() {
     assert_eq!(code, 2);
     assert!(err.contains("reach_space"), "{err}");
 }
+
+#[test]
+fn an_arm_whose_meshes_are_all_missing_gets_one_warning_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let urdf = dir.path().join("panda.urdf");
+    std::fs::copy(PANDA.urdf(), &urdf).unwrap();
+    let mut args = vec![
+        "reach".to_string(),
+        "--urdf".into(),
+        urdf.display().to_string(),
+    ];
+    for (name, value) in PANDA.sets() {
+        args.extend(["--set".to_string(), format!("{name}={value}")]);
+    }
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let (code, _, err) = eyehand(&args);
+    assert_eq!(code, 0, "{err}");
+    let warnings: Vec<&str> = err
+        .lines()
+        .filter(|l| l.starts_with("eyehand: warning: "))
+        .collect();
+    let [warning] = warnings.as_slice() else {
+        panic!("one warning line, not {}:\n{err}", warnings.len());
+    };
+    assert!(warning.contains("meshes missing or unread ("), "{warning}");
+    assert!(warning.contains("replaced by capsules"), "{warning}");
+    assert!(warning.contains("; the first: link `"), "{warning}");
+}

@@ -26,8 +26,9 @@ pub fn arm_settings(config: &Config) -> ArmSettings {
 pub struct LoadedArm {
     /// The arm the config's entries pick out of the URDF.
     pub model: ArmModel,
-    /// What the URDF was missing and what stands in for it, one line each (the URDF, the
-    /// link, the mesh and the paths it was looked for at).
+    /// What the URDF was missing and what stands in for it, in one line (the URDF, how
+    /// many meshes, and the first one's link, file and the paths it was looked for at);
+    /// empty when nothing was missing.
     pub warnings: Vec<String>,
 }
 
@@ -43,12 +44,37 @@ pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<LoadedArm, Descr
     };
     let model = ArmModel::from_description(&description, &arm_settings(config))?;
     let folder = urdf.and_then(Path::parent).unwrap_or(Path::new("."));
-    let warnings = description
-        .warnings
-        .iter()
-        .map(|warning| warning_line(&description.file, warning, folder, &options.package_paths))
-        .collect();
+    let warnings = match description.warnings.as_slice() {
+        [] => Vec::new(),
+        [first, rest @ ..] => {
+            let file = &description.file;
+            let line = warning_line(file, first, folder, &options.package_paths);
+            vec![match rest {
+                [] => line,
+                _ => {
+                    let first = line.strip_prefix(&format!("{file}: ")).unwrap_or(&line);
+                    let counts = mesh_counts(&description.warnings);
+                    format!("{file}: {counts}; the first: {first}")
+                }
+            }]
+        }
+    };
     Ok(LoadedArm { model, warnings })
+}
+
+/// How many meshes a URDF's warnings are about, by what stands in for them: the head of
+/// the one warning line a URDF with several missing meshes gets.
+fn mesh_counts(warnings: &[DescriptionWarning]) -> String {
+    let collisions = warnings
+        .iter()
+        .filter(|w| matches!(w, DescriptionWarning::MissingCollisionMesh { .. }))
+        .count();
+    let visuals = warnings.len() - collisions;
+    format!(
+        "{} meshes missing or unread ({collisions} collision meshes, replaced by capsules; \
+         {visuals} visual meshes, left out of pictures)",
+        warnings.len()
+    )
 }
 
 /// A warning as a line: the URDF, what is missing, and for a mesh not found the paths it

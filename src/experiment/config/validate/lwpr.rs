@@ -1,7 +1,7 @@
 //! The rule between two `lwpr` entries.
 
 use super::{rule, Check};
-use crate::experiment::Config;
+use crate::experiment::config::Config;
 
 impl Config {
     pub(super) fn check_lwpr(&self) -> Check {

@@ -3,8 +3,8 @@
 
 use super::{rule, Check};
 use crate::control::ServoMode;
-use crate::experiment::Config;
-use crate::experiment::SimKind;
+use crate::experiment::config::Config;
+use crate::experiment::config::SimKind;
 
 impl Config {
     pub(super) fn check_timing(&self) -> Check {

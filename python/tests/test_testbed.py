@@ -93,8 +93,8 @@ def test_fk_matches_the_cli(cli):
 
 def test_a_bad_config_file_is_a_value_error_naming_file_and_line(repo, tmp_path):
     text = (repo / "configs" / "lin5.conf").read_text().splitlines()
-    line = next(i for i, l in enumerate(text) if l.startswith("feedback_steps"))
-    text[line] = "feedback_steps   many"
+    line = len(text)
+    text.append("feedback_steps   many")
     bad = tmp_path / "bad.conf"
     bad.write_text("\n".join(text) + "\n")
     with pytest.raises(ValueError, match=f"^{bad}:{line + 1}: "):

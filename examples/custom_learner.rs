@@ -24,7 +24,7 @@ struct NearestNeighbours {
     table: Vec<Pattern5>,
     capacity: usize,
     next: usize,
-    minimal_joint_move: f64,
+    patterns: PatternSettings,
 }
 
 impl NearestNeighbours {
@@ -34,7 +34,9 @@ impl NearestNeighbours {
             table: Vec::with_capacity(capacity),
             capacity,
             next: 0,
-            minimal_joint_move: config.minimal_joint_move,
+            patterns: PatternSettings {
+                minimal_joint_move: config.minimal_joint_move,
+            },
         }
     }
 
@@ -68,7 +70,7 @@ impl Learner for NearestNeighbours {
     }
 
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
-        for (from, to) in pose_pairs(path, self.minimal_joint_move) {
+        for (from, to) in self.patterns.pairs(path) {
             let pattern = adjusted_pattern(from, to);
             let stored = Pattern5 {
                 input: self.scaled(&pattern.input),

@@ -7,5 +7,5 @@ pub use crate::experiment::setup::input_bounds;
 pub use crate::experiment::{run_learner, Config, Event, RunOptions, RunResult, RunSetup};
 pub use crate::learn::{
     adjusted_pattern, pose_pairs, unadjusted_pattern, LearnError, Learner, LearnerStats,
-    Observation, Pattern, Pattern5, Pattern8, Query,
+    Observation, Pattern, Pattern5, Pattern8, PatternSettings, Query,
 };

@@ -14,7 +14,6 @@ fn trial_loop(seed: u64) -> TrialLoop {
         feedback_steps: 10,
         min_feedback_steps: 5,
         epsilon: EPSILON_MM / 1000.0,
-        minimal_joint_move_deg: 0.01,
         noise: SensorNoise::default(),
         timing: Default::default(),
     };

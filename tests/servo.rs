@@ -20,7 +20,6 @@ fn continuous_loop(latency: f64, noise: SensorNoise, seed: u64) -> TrialLoop {
         feedback_steps: 150,
         min_feedback_steps: 1,
         epsilon: EPSILON_MM / 1000.0,
-        minimal_joint_move_deg: 0.01,
         noise,
         timing: CameraTiming {
             fps: 30.0,

@@ -90,7 +90,6 @@ mod tests {
             feedback_steps: 5,
             min_feedback_steps: 2,
             epsilon: 0.001,
-            minimal_joint_move_deg: 0.1,
             noise: Default::default(),
             timing: Default::default(),
         };

@@ -30,8 +30,6 @@ pub struct TrialSettings {
     pub min_feedback_steps: usize,
     /// ε: distance to the target (m) at which the trial may stop.
     pub epsilon: f64,
-    /// A pose pair is a learning pattern only if a joint moved this much (degrees).
-    pub minimal_joint_move_deg: f64,
     /// The noise of the camera's and the encoders' reports.
     pub noise: SensorNoise,
     /// When the camera delivers frames, and whether the arm settles between them.

@@ -5,7 +5,7 @@
 
 use super::net::{minimize, BatchLoss, DenseNet, InputScaling};
 use super::{LearnError, Learner, LearnerStats, Method};
-use crate::learn::{adjusted_pattern, pose_pairs, Observation, Query};
+use crate::learn::{adjusted_pattern, Observation, PatternSettings, Query};
 use nalgebra::{SVector, Vector3};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -24,8 +24,8 @@ pub struct FfnSettings {
     pub window: usize,
     /// Conjugate-gradient iterations after each trial; 10 by default.
     pub cg_iterations: usize,
-    /// Pose pairs that moved less than this (degrees) give no pattern.
-    pub minimal_joint_move: f64,
+    /// Which pose pairs are patterns (`minimal_joint_move`).
+    pub patterns: PatternSettings,
 }
 
 impl Default for FfnSettings {
@@ -35,7 +35,7 @@ impl Default for FfnSettings {
             wrange: 0.1,
             window: 1000,
             cg_iterations: 10,
-            minimal_joint_move: 0.01,
+            patterns: PatternSettings::default(),
         }
     }
 }
@@ -91,7 +91,7 @@ impl Learner for FfnLearner {
 
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
         let before = self.window.len();
-        for (from, to) in pose_pairs(path, self.settings.minimal_joint_move) {
+        for (from, to) in self.settings.patterns.pairs(path) {
             let p = adjusted_pattern(from, to);
             self.remember((self.scaling.apply(&p.input), p.target / OUTPUT_SCALE_DEG));
         }

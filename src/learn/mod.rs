@@ -36,7 +36,9 @@ pub use method::Method;
 pub use model_event::{MergeKind, ModelEvent};
 pub use nnw::{Nnw, NnwSettings};
 pub use observation::{Observation, Query};
-pub use patterns::{adjusted_pattern, pose_pairs, unadjusted_pattern, Pattern, Pattern5, Pattern8};
+pub use patterns::{
+    adjusted_pattern, pose_pairs, unadjusted_pattern, Pattern, Pattern5, Pattern8, PatternSettings,
+};
 pub use perceptron::PerceptronSettings;
 pub use stats::{LearnerStats, LevelStats};
 pub use tree::{NestedLearner, NestedSettings, TreeSettings};

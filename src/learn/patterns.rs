@@ -27,6 +27,34 @@ pub type Pattern5 = Pattern<5>;
 /// The unadjusted 8-input pattern: (θ2, θ3, cx, cy, cz, dx, dy, dz) → Δθ.
 pub type Pattern8 = Pattern<8>;
 
+/// Which pose pairs of a trial's path are learning patterns: those whose move is an actual
+/// move. The one home of the `minimal_joint_move` entry; every learner that learns from
+/// pose pairs holds one.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PatternSettings {
+    /// A pose pair is a pattern only if some joint moved at least this much (degrees);
+    /// 0.01 by default.
+    pub minimal_joint_move: f64,
+}
+
+impl Default for PatternSettings {
+    fn default() -> Self {
+        PatternSettings {
+            minimal_joint_move: 0.01,
+        }
+    }
+}
+
+impl PatternSettings {
+    /// The pose pairs of `path` that are learning patterns ([`pose_pairs`]).
+    pub fn pairs<'a>(
+        &self,
+        path: &'a [Observation],
+    ) -> impl Iterator<Item = (&'a Observation, &'a Observation)> {
+        pose_pairs(path, self.minimal_joint_move)
+    }
+}
+
 /// Every pair (j, k), j < k, of a trial's poses whose move is an actual move: at least one
 /// joint moved by `minimal_joint_move_deg` or more.
 pub fn pose_pairs(

@@ -4,7 +4,7 @@ use crate::experiment::Config;
 use crate::learn::change::{ChangeSettings, DetectorSettings};
 use crate::learn::{
     FfnSettings, KohonenSettings, Lin5Settings, Lin8Settings, LwprSettings, MergeStrategy,
-    NestedSettings, NnwSettings, PerceptronSettings, TreeSettings,
+    NestedSettings, NnwSettings, PatternSettings, PerceptronSettings, TreeSettings,
 };
 
 /// `lin5`: `boundary_0` … `boundary_4`, the tree, perceptron, merge and change entries,
@@ -45,7 +45,7 @@ pub fn ffn_settings(config: &Config) -> FfnSettings {
         wrange: config.wrange,
         window: config.ffn_window,
         cg_iterations: config.ffn_cg_iterations,
-        minimal_joint_move: config.minimal_joint_move,
+        patterns: pattern_settings(config),
     }
 }
 
@@ -54,7 +54,7 @@ pub fn kohonen_settings(config: &Config) -> KohonenSettings {
     KohonenSettings {
         side: config.kohonen_side,
         anneal_patterns: config.kohonen_anneal_patterns,
-        minimal_joint_move: config.minimal_joint_move,
+        patterns: pattern_settings(config),
         ..KohonenSettings::default()
     }
 }
@@ -77,9 +77,16 @@ pub fn lwpr_settings(config: &Config) -> LwprSettings {
         penalty: config.penalty,
         add_threshold: config.add_threshold,
         norm_out: config.norm_out,
-        minimal_joint_move: config.minimal_joint_move,
+        patterns: pattern_settings(config),
         change_detection: (config.merge_strategy == MergeStrategy::ChangeDetection)
             .then(|| change_settings(config)),
+    }
+}
+
+/// Which pose pairs are learning patterns: `minimal_joint_move`.
+pub fn pattern_settings(config: &Config) -> PatternSettings {
+    PatternSettings {
+        minimal_joint_move: config.minimal_joint_move,
     }
 }
 
@@ -95,7 +102,7 @@ fn nested_settings(config: &Config) -> NestedSettings {
         tree: tree_settings(config),
         merge_strategy: config.merge_strategy,
         change: change_settings(config),
-        minimal_joint_move: config.minimal_joint_move,
+        patterns: pattern_settings(config),
         seed: config.seed,
     }
 }

@@ -7,7 +7,7 @@ mod learners;
 pub use arm::{arm_entry, arm_settings, fit_reach, load_arm, reach_space, LoadedArm};
 pub use learners::{
     ffn_settings, input_bounds, kohonen_settings, lin5_settings, lin8_settings, lwpr_settings,
-    nnw_settings,
+    nnw_settings, pattern_settings,
 };
 
 use super::{CameraKind, Config, ObstacleBox, SimKind};
@@ -53,14 +53,13 @@ pub fn build_camera(config: &Config) -> Box<dyn Camera> {
 }
 
 /// The trial loop's settings: `feedback_steps`, `min_feedback_steps`,
-/// `min_target_distance`, `minimal_joint_move`, the sensor noise entries and the camera's
+/// `min_target_distance`, the sensor noise entries and the camera's
 /// timing (`camera_fps`, `camera_latency_ms`, `servo_mode`).
 pub fn trial_settings(config: &Config) -> TrialSettings {
     TrialSettings {
         feedback_steps: config.feedback_steps,
         min_feedback_steps: config.min_feedback_steps,
         epsilon: config.min_target_distance * M_PER_CM,
-        minimal_joint_move_deg: config.minimal_joint_move,
         noise: SensorNoise {
             centroid_px: config.camera_noise_px,
             area_relative: config.camera_area_noise,

@@ -6,7 +6,7 @@
 
 use super::Lattice;
 use crate::learn::net::InputScaling;
-use crate::learn::{adjusted_pattern, pose_pairs, Observation, Query};
+use crate::learn::{adjusted_pattern, Observation, PatternSettings, Query};
 use crate::learn::{LearnError, Learner, LearnerStats, Method};
 use nalgebra::{SMatrix, SVector, Vector3};
 
@@ -29,8 +29,8 @@ pub struct KohonenSettings {
     pub map_rate_end: f64,
     /// Patterns over which widths and rates shrink; 150,000 by default.
     pub anneal_patterns: usize,
-    /// Pose pairs that moved less than this (degrees) give no pattern.
-    pub minimal_joint_move: f64,
+    /// Which pose pairs are patterns (`minimal_joint_move`).
+    pub patterns: PatternSettings,
 }
 
 impl Default for KohonenSettings {
@@ -44,7 +44,7 @@ impl Default for KohonenSettings {
             map_rate_start: 0.8,
             map_rate_end: 0.2,
             anneal_patterns: 150_000,
-            minimal_joint_move: 0.01,
+            patterns: PatternSettings::default(),
         }
     }
 }
@@ -129,7 +129,7 @@ impl Learner for KohonenLearner {
     }
 
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
-        for (from, to) in pose_pairs(path, self.settings.minimal_joint_move) {
+        for (from, to) in self.settings.patterns.pairs(path) {
             let p = adjusted_pattern(from, to);
             let x = self.scaling.apply(&p.input);
             self.train(&x, &p.target);

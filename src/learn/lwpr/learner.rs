@@ -6,8 +6,7 @@ use super::projection::Input;
 use super::LwprSettings;
 use crate::learn::change::{ChangeWatch, WatchStep};
 use crate::learn::{
-    adjusted_pattern, pose_pairs, LearnError, Learner, LearnerStats, Method, ModelEvent,
-    Observation, Query,
+    adjusted_pattern, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation, Query,
 };
 use nalgebra::Vector3;
 
@@ -105,7 +104,7 @@ impl Learner for Lwpr {
     /// module's notes for why not each pattern's.
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
         let (mut missed, mut moved) = (Some(0.0), 0.0);
-        for (from, to) in pose_pairs(path, self.settings.minimal_joint_move) {
+        for (from, to) in self.settings.patterns.pairs(path) {
             let pattern = adjusted_pattern(from, to);
             if self.watch.is_some() {
                 let miss = self.miss(&pattern.input, &pattern.target);

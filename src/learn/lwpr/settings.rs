@@ -1,6 +1,7 @@
 //! Settings of the `lwpr` learner, with the usual names and defaults of LWPR.
 
 use crate::learn::change::ChangeSettings;
+use crate::learn::PatternSettings;
 
 /// Settings of the `lwpr` learner. Inputs are normalised to [0, 1] by the input boundaries
 /// before any of these apply, so distances and metrics are in those units.
@@ -38,8 +39,8 @@ pub struct LwprSettings {
     pub add_threshold: f64,
     /// Outputs Δθ are learned divided by this (degrees); 10 by default.
     pub norm_out: f64,
-    /// Pose pairs that moved less than this (degrees) give no pattern; 0.01 by default.
-    pub minimal_joint_move: f64,
+    /// Which pose pairs are patterns (`minimal_joint_move`).
+    pub patterns: PatternSettings,
     /// The change watch on the trials (`merge_strategy change_detection`), none by
     /// default: then forgetting alone tracks a changed robot. Only its detector counts:
     /// LWPR has no subtrees to cut or nodes to starve, so `grace` and `min_fresh` go unused.
@@ -62,7 +63,7 @@ impl Default for LwprSettings {
             penalty: 1e-6,
             add_threshold: 0.5,
             norm_out: 10.0,
-            minimal_joint_move: 0.01,
+            patterns: PatternSettings::default(),
             change_detection: None,
         }
     }

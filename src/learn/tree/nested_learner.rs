@@ -7,8 +7,8 @@
 use super::{Approximator, BranchRule, NestedSettings, NestedTree, Records, TreeEvent};
 use crate::learn::change::{ChangeWatch, WatchStep};
 use crate::learn::{
-    pose_pairs, LearnError, Learner, LearnerStats, MergeStrategy, Method, ModelEvent, Observation,
-    Pattern, Query,
+    LearnError, Learner, LearnerStats, MergeStrategy, Method, ModelEvent, Observation, Pattern,
+    PatternSettings, Query,
 };
 use nalgebra::{SVector, Vector3};
 use rand::SeedableRng;
@@ -35,7 +35,7 @@ pub struct NestedLearner<A, R, const N: usize> {
     tree: NestedTree<A, R, N>,
     pattern_of: PatternOf<N>,
     input_of: InputOf<N>,
-    minimal_joint_move: f64,
+    patterns: PatternSettings,
     relearn: bool,
     /// The change detection (`None` under `merge_strategy thesis`).
     watch: Option<ChangeWatch>,
@@ -75,7 +75,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
             tree: NestedTree::new(settings.tree.clone(), rule, template, records, rng),
             pattern_of,
             input_of,
-            minimal_joint_move: settings.minimal_joint_move,
+            patterns: settings.patterns,
             relearn: false,
             watch,
             min_fresh: settings.change.min_fresh,
@@ -100,7 +100,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
         if let Some(error) = self.failed.take() {
             return Err(error);
         }
-        for (from, to) in pose_pairs(path, self.minimal_joint_move) {
+        for (from, to) in self.patterns.pairs(path) {
             let pattern = (self.pattern_of)(from, to);
             let event = self.tree.train(&pattern)?;
             if let Some(watch) = &mut self.watch {

@@ -1,7 +1,7 @@
 //! The settings of the nested tree and of what the nested learners share around it.
 
 use crate::learn::change::ChangeSettings;
-use crate::learn::MergeStrategy;
+use crate::learn::{MergeStrategy, PatternSettings};
 
 /// How the nested tree grows, shrinks, stores and measures. The defaults are the config
 /// entries' declared defaults (a test holds them equal).
@@ -83,9 +83,8 @@ pub struct NestedSettings {
     pub merge_strategy: MergeStrategy,
     /// Change detection and recovery, used under `change_detection` only.
     pub change: ChangeSettings,
-    /// Pose pairs in which no joint moved at least this much give no pattern
-    /// (`minimal_joint_move`, degrees); 0.01 by default.
-    pub minimal_joint_move: f64,
+    /// Which pose pairs are patterns (`minimal_joint_move`).
+    pub patterns: PatternSettings,
     /// The seed of the learner's own draws (`seed`); 1 by default.
     pub seed: u64,
 }
@@ -96,7 +95,7 @@ impl Default for NestedSettings {
             tree: TreeSettings::default(),
             merge_strategy: MergeStrategy::default(),
             change: ChangeSettings::default(),
-            minimal_joint_move: 0.01,
+            patterns: PatternSettings::default(),
             seed: 1,
         }
     }

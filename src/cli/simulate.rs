@@ -2,8 +2,9 @@
 //! printing the joint angles and speeds every tick, to hold the simulator against another
 //! engine.
 
-use super::{bad_input, failed, Failure};
-use crate::robot::{load_urdf, ArmModel, Drive, DynamicSettings, FreeArm, Joints};
+use super::{bad_input, failed, warned, Failure};
+use crate::experiment::setup::{dynamic_settings, load_arm};
+use crate::robot::{Drive, DynamicSettings, FreeArm, Joints};
 use clap::Args;
 use std::io::Write;
 use std::path::PathBuf;
@@ -18,20 +19,21 @@ pub(super) struct SimulateArgs {
     /// The URDF (default: the shipped urdf/oscar6.urdf).
     #[arg(long)]
     urdf: Option<PathBuf>,
-    /// The start pose: all six joint angles θ1..θ6 in degrees.
+    /// The start pose: every joint angle of the chain in degrees, q1,q2,… (as many as the
+    /// arm has; a leading minus needs no `=`).
     #[arg(
         long,
         value_delimiter = ',',
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         required = true
     )]
     from: Vec<f64>,
     /// Simulated time (s).
     #[arg(long)]
     duration: f64,
-    /// Physics time step (s); default the dynamic simulator's 0.005.
-    #[arg(long, default_value_t = DynamicSettings::default().dt)]
-    dt: f64,
+    /// Physics time step (s); default the config's `dt` (0.005).
+    #[arg(long, allow_hyphen_values = true)]
+    dt: Option<f64>,
     /// Servos off, no gravity feed-forward: the arm swings under its weight (the default).
     #[arg(long, conflicts_with = "hold")]
     passive: bool,
@@ -48,17 +50,18 @@ pub(super) struct SimulateArgs {
     /// Prints one JSON document: {"dt_s", "ticks": [{"t_s", "joints_deg", "speeds_deg_s"}]}.
     #[arg(long, conflicts_with = "csv")]
     json: bool,
-    /// Prints CSV: t_s, q1_deg..q6_deg, v1_deg_s..v6_deg_s.
+    /// Prints CSV: t_s, q1_deg..qN_deg, v1_deg_s..vN_deg_s.
     #[arg(long)]
     csv: bool,
+    #[command(flatten)]
+    arm: super::reach::ArmConfigArgs,
 }
 
 pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
-    let ticks = check(&args)?;
-    let model = match &args.urdf {
-        Some(path) => load_urdf(path).map_err(bad_input)?,
-        None => ArmModel::oscar6(),
-    };
+    let config = args.arm.config()?;
+    let model = warned(load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?);
+    let dt = args.dt.unwrap_or(config.dt);
+    let ticks = check(&args, model.joints().len(), dt)?;
     let start = Joints::from_slice(&args.from).map(f64::to_radians);
     let drive = if args.hold {
         Drive::Hold
@@ -66,9 +69,10 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
         Drive::Passive
     };
     let settings = DynamicSettings {
-        dt: args.dt,
-        ..DynamicSettings::default()
+        dt,
+        ..dynamic_settings(&config)
     };
+    let joints = model.joints().len();
     let mut arm = FreeArm::new(
         model,
         &start,
@@ -96,13 +100,13 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
         }
     };
     let header = if args.json {
-        format!("{{\"dt_s\":{},\"ticks\":[", args.dt)
+        format!("{{\"dt_s\":{dt},\"ticks\":[")
     } else {
         let names = ["t_s"]
             .into_iter()
             .map(String::from)
-            .chain((1..=6).map(|i| format!("q{i}_deg")))
-            .chain((1..=6).map(|i| format!("v{i}_deg_s")))
+            .chain((1..=joints).map(|i| format!("q{i}_deg")))
+            .chain((1..=joints).map(|i| format!("v{i}_deg_s")))
             .collect::<Vec<_>>();
         format!("{}\n", names.join(if args.csv { "," } else { " " }))
     };
@@ -121,24 +125,27 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
     printed.map_err(|e| failed(format!("cannot write the ticks: {e}")))
 }
 
-/// Checks the numbers before any work: the ticks to run.
-fn check(args: &SimulateArgs) -> Result<u64, Failure> {
-    if args.from.len() != 6 || args.from.iter().any(|a| !a.is_finite()) {
-        return Err(bad_input(
-            "--from takes six finite joint angles in degrees: q1,q2,q3,q4,q5,q6",
-        ));
-    }
-    if !(args.dt >= DT_RANGE.0 && args.dt <= DT_RANGE.1) {
+/// Checks the numbers before any work, for an arm of `joints` joints stepped by `dt`: the
+/// ticks to run.
+fn check(args: &SimulateArgs, joints: usize, dt: f64) -> Result<u64, Failure> {
+    if args.from.len() != joints || args.from.iter().any(|a| !a.is_finite()) {
         return Err(bad_input(format!(
-            "--dt {:e} s is outside [{:e}, {:e}] s",
-            args.dt, DT_RANGE.0, DT_RANGE.1
+            "--from takes {joints} finite joint angles in degrees (one per joint of this \
+             arm: q1,..,q{joints}), not {}",
+            args.from.len()
         )));
     }
-    let ticks = (args.duration / args.dt).round();
+    if !(dt >= DT_RANGE.0 && dt <= DT_RANGE.1) {
+        return Err(bad_input(format!(
+            "--dt {dt:e} s is outside [{:e}, {:e}] s",
+            DT_RANGE.0, DT_RANGE.1
+        )));
+    }
+    let ticks = (args.duration / dt).round();
     if !(args.duration > 0.0 && ticks <= MAX_TICKS) {
         return Err(bad_input(format!(
-            "--duration {} s must be positive and at most {MAX_TICKS} ticks of {} s",
-            args.duration, args.dt
+            "--duration {} s must be positive and at most {MAX_TICKS} ticks of {dt} s",
+            args.duration
         )));
     }
     Ok(ticks as u64)

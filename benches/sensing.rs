@@ -176,7 +176,7 @@ fn panda_at_rest() -> KinematicSim {
     let settings = ArmSettings {
         camera_link: "panda_hand".into(),
         camera_offset: Vector3::zeros(),
-        learned_joints: ["panda_joint1", "panda_joint2", "panda_joint4"].map(String::from),
+        learned_joints: ["panda_joint1", "panda_joint2", "panda_joint4"].into(),
     };
     let arm = ArmModel::from_description(&description, &settings).expect("the Panda's arm");
     let space = ReachSpace::fit(&arm, -0.22, 0.22)

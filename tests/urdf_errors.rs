@@ -1,8 +1,11 @@
 //! A broken or unsupported OSCAR-6 URDF, read as a robot description at the default arm
 //! settings, is a clear error naming the element at fault; tests match on the error's kind.
 
-use eyehand::robot::description::DescriptionErrorKind as Kind;
-use eyehand::robot::{load_urdf, parse_urdf, ArmModel, Shape};
+use eyehand::robot::description::{
+    DescriptionErrorKind as Kind, DescriptionOptions, RobotDescription,
+};
+use eyehand::robot::{load_urdf, parse_urdf, ArmModel, ArmSettings, Shape};
+use std::path::Path;
 
 fn shipped() -> String {
     std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/urdf/oscar6.urdf")).unwrap()
@@ -125,19 +128,28 @@ fn bad_numbers_are_named() {
 }
 
 #[test]
-fn a_camera_link_that_is_not_there_is_named() {
+fn a_camera_link_that_is_not_there_is_named_and_auto_finds_the_chain_end() {
     let text = shipped()
         .replace(
             r#"<child link="camera_link"/>"#,
             r#"<child link="eye_link"/>"#,
         )
         .replace(r#"<link name="camera_link">"#, r#"<link name="eye_link">"#);
+    let options = DescriptionOptions::default();
+    let description = RobotDescription::parse(&text, "arm.urdf", Path::new("."), &options).unwrap();
+    let named = ArmSettings {
+        camera_link: "camera_link".into(),
+        ..ArmSettings::default()
+    };
+    let err = ArmModel::from_description(&description, &named).unwrap_err();
     assert_eq!(
-        kind_of(&text),
+        err.kind,
         Kind::UnknownLink {
             link: "camera_link".into()
         }
     );
+    let auto = parse_urdf(&text, "arm.urdf").unwrap();
+    assert_eq!(auto.links().last().unwrap().name, "eye_link");
 }
 
 #[test]

@@ -4,11 +4,14 @@
 use super::{bad_input, say, warned, Failure};
 use crate::camera::CameraModel;
 use crate::control::prelearning_moves;
-use crate::experiment::setup::{fit_reach, load_arm, reach_space};
-use crate::experiment::{reachable_points, Config, ReachSetting, RunRequest, REACH_SAMPLES};
-use crate::robot::{ArmModel, ReachSpace, Wrist};
-use rand::SeedableRng;
-use rand_chacha::ChaCha8Rng;
+use crate::experiment::setup::{
+    fit_reach, fitted_boundaries, learned_ranges, load_arm, reach_space, BOUNDARY_MARGIN_DEG,
+};
+use crate::experiment::{
+    fit_reach_space_to_arm, reachable_points, Config, ReachSetting, RunRequest, Sources,
+    REACH_SAMPLES,
+};
+use crate::robot::{ArmModel, Wrist};
 use std::fmt::Write;
 use std::path::PathBuf;
 
@@ -36,20 +39,28 @@ pub(super) struct ArmConfigArgs {
 impl ArmConfigArgs {
     /// The config file (or the default) with every `--set` applied, checked.
     pub(super) fn config(&self) -> Result<Config, Failure> {
+        self.sourced_config().map(|(config, _)| config)
+    }
+
+    /// [`config`](ArmConfigArgs::config), with where each value came from.
+    fn sourced_config(&self) -> Result<(Config, Sources), Failure> {
         let request = RunRequest {
             config: self.config.clone(),
             sets: super::run::name_values(&self.sets)?,
             ..RunRequest::default()
         };
         request
-            .config()
-            .map(|(config, _)| config)
+            .sourced_config()
+            .map(|(config, _, sources)| (config, sources))
             .map_err(bad_input)
     }
 }
 
 pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
-    let config = args.arm.config()?;
+    let (mut config, mut sources) = args.arm.sourced_config()?;
+    if args.urdf.is_some() {
+        fit_reach_space_to_arm(&mut config, &mut sources);
+    }
     let model = warned(load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?);
     let mut report = arm_lines(&model);
     let fit = fit_reach(&config, &model);
@@ -86,14 +97,12 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
         "covered              {:.1}% of {REACH_SAMPLES} points sampled in the reach space are reached looking down",
         100.0 * reachable as f64 / REACH_SAMPLES as f64
     );
-    if let Some([(low2, high2), (low3, high3)]) = learned_ranges(&model, &space) {
+    let ranges = learned_ranges(&model, &space).zip(fitted_boundaries(&model, &space));
+    if let Some(([(low2, high2), (low3, high3)], [(b0, b1), (b2, b3)])) = ranges {
         let _ = writeln!(
             report,
-            "learned θ2, θ3       {low2:.1}..{high2:.1}°, {low3:.1}..{high3:.1}° over the reach space (boundary_0, boundary_1 with {BOUNDARY_MARGIN_DEG}° to spare: {:.0} {:.0}, {:.0} {:.0})",
-            low2 - BOUNDARY_MARGIN_DEG,
-            high2 + BOUNDARY_MARGIN_DEG,
-            low3 - BOUNDARY_MARGIN_DEG,
-            high3 + BOUNDARY_MARGIN_DEG,
+            "learned θ2, θ3       {low2:.1}..{high2:.1}°, {low3:.1}..{high3:.1}° over the reach space (boundary_0, boundary_1 with {BOUNDARY_MARGIN_DEG}° to spare: {b0} {b1}, {b2} {b3}; {})",
+            if args.urdf.is_some() { "a run of this arm takes them unless the config gives its own" } else { "the OSCAR-6's config gives its own" }
         );
     }
     match prelearning_moves(&model, &CameraModel::default(), &space) {
@@ -117,24 +126,6 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
         }
     }
     say(&report)
-}
-
-/// How far the suggested learner boundaries reach beyond the angles met (degrees).
-const BOUNDARY_MARGIN_DEG: f64 = 10.0;
-
-/// The range (degrees) of θ2 and θ3 over points sampled in `space` that the arm reaches.
-fn learned_ranges(model: &ArmModel, space: &ReachSpace) -> Option<[(f64, f64); 2]> {
-    let mut rng = ChaCha8Rng::seed_from_u64(1);
-    let mut ranges = [(f64::INFINITY, f64::NEG_INFINITY); 2];
-    for _ in 0..REACH_SAMPLES {
-        if let Ok(theta) = model.solve_camera_position(&space.sample(&mut rng)) {
-            for (range, angle) in ranges.iter_mut().zip([theta.y, theta.z]) {
-                let degrees = angle.to_degrees();
-                *range = (range.0.min(degrees), range.1.max(degrees));
-            }
-        }
-    }
-    ranges[0].0.is_finite().then_some(ranges)
 }
 
 /// The arm's name, chain, learned joints and wrist.

@@ -80,7 +80,6 @@ pub(super) fn check_config(args: CheckConfigArgs) -> Result<(), Failure> {
     let file = args.file.display().to_string();
     let (config, sources) = Config::read_file(&args.file).map_err(bad_input)?;
     let notes = unused_notes(&sources);
-    let explained = args.explain.then(|| config.explained_text(&sources));
     let options = RunOptions {
         config_name: file.clone(),
         urdf: args.urdf,
@@ -92,7 +91,11 @@ pub(super) fn check_config(args: CheckConfigArgs) -> Result<(), Failure> {
         e => bad_input(e),
     })?;
     print_warnings(&setup.warnings);
-    say(&(explained.unwrap_or_default() + &notes + &format!("{file}: ok\n")))
+    let explained = match args.explain {
+        true => setup.config.explained_text(&setup.sources),
+        false => String::new(),
+    };
+    say(&(explained + &notes + &format!("{file}: ok\n")))
 }
 
 /// A note for each entry a file gives that eyehand accepts but does not implement.

@@ -39,6 +39,6 @@ pub use preflight::{
 pub use run::{run, run_learner, RunError, RunOptions, RunResult};
 pub use run_folder::{allocate_run_folder, fresh_run_folder, RunFolderError, RUN_IDS};
 pub use run_request::{RequestError, RunRequest};
-pub use run_setup::RunSetup;
+pub use run_setup::{fit_reach_space_to_arm, RunSetup};
 pub use step_figures::StepFigures;
 pub use summary::{RunSummary, SensorSummary};

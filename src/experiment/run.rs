@@ -185,7 +185,7 @@ fn drive(
 ) -> Result<RunResult, RunError> {
     let config = &setup.config;
     let events = &setup.events;
-    write_info_header(&folder, options, events)?;
+    write_info_header(&folder, options, &setup)?;
 
     let mut trials = setup.trial_loop();
     let mut files = DataFiles::create(&folder)?;
@@ -325,9 +325,8 @@ fn host_name() -> String {
         .unwrap_or_else(|_| "unknown".into())
 }
 
-fn write_info_header(folder: &Path, options: &RunOptions, events: &[Event]) -> io::Result<()> {
+fn write_info_header(folder: &Path, options: &RunOptions, setup: &RunSetup) -> io::Result<()> {
     let mut info = std::fs::File::create(folder.join("info"))?;
-    let config = &options.config;
     writeln!(info, "# eyehand {} run", env!("CARGO_PKG_VERSION"))?;
     writeln!(info, "host {}", host_name())?;
     writeln!(info, "config_file {}", options.config_name)?;
@@ -338,11 +337,11 @@ fn write_info_header(folder: &Path, options: &RunOptions, events: &[Event]) -> i
             p.display().to_string()
         });
     writeln!(info, "urdf {urdf}")?;
-    for event in events {
+    for event in &setup.events {
         writeln!(info, "event {event}")?;
     }
     writeln!(info, "\n# config")?;
-    info.write_all(config.explained_text(&options.sources).as_bytes())
+    info.write_all(setup.config.explained_text(&setup.sources).as_bytes())
 }
 
 fn write_info_tail(folder: &Path, summary: &RunSummary, stats: &LearnerStats) -> io::Result<()> {

@@ -5,14 +5,32 @@
 
 use super::preflight::preflight;
 use super::setup::{
-    arm_entry, build_camera, build_learner, build_simulator, load_arm, trial_settings,
+    arm_entry, build_camera, build_learner, build_simulator, fitted_boundaries, load_arm,
+    trial_settings,
 };
-use super::{Config, Event, RunError, Sources};
+use super::{Config, Event, PreflightError, ReachSetting, RunError, Source, Sources};
 use crate::camera::Camera;
 use crate::control::TrialLoop;
 use crate::learn::{LearnError, Learner};
 use crate::robot::{ArmModel, ReachSpace, Simulator};
 use std::path::Path;
+
+/// The learner boundaries of the learned shoulder and elbow, fitted to an arm together.
+const BOUNDARIES: [&str; 4] = [
+    "boundary_0_low",
+    "boundary_0_high",
+    "boundary_1_low",
+    "boundary_1_high",
+];
+
+/// `reach_space auto` where the config left the reach space at its default (the
+/// OSCAR-6's): what a URDF other than the shipped one gets.
+pub fn fit_reach_space_to_arm(config: &mut Config, sources: &mut Sources) {
+    if config.source_of("reach_space", sources) == Source::Default {
+        config.reach_space = ReachSetting::Auto;
+        sources.record("reach_space", Source::Fitted);
+    }
+}
 
 /// A run's parts, checked and fitted once: what every run-making command builds from.
 #[derive(Debug, Clone)]
@@ -27,6 +45,8 @@ pub struct RunSetup {
     pub events: Vec<Event>,
     /// What the URDF was missing and what stands in for it, one line each.
     pub warnings: Vec<String>,
+    /// Where each value of `config` came from, the entries fitted to the arm included.
+    pub sources: Sources,
 }
 
 impl RunSetup {
@@ -34,28 +54,53 @@ impl RunSetup {
     /// entries pick it out, and checks the config, `events` (every event of the run, in
     /// trial order: see [`Event::of_run`]) and the arm's reach before anything is built; an
     /// arm entry the URDF contradicts is reported where its value came from (`file:line`,
-    /// `--set`, …, by `sources`).
+    /// `--set`, …, by `sources`). On a URDF other than the shipped OSCAR-6, the entries
+    /// left at their defaults that describe the OSCAR-6 are fitted to the arm instead:
+    /// `reach_space` (to `auto`) and the boundaries of θ2 and θ3 ([`fitted_boundaries`]).
     pub fn new(
-        config: Config,
+        mut config: Config,
         urdf: Option<&Path>,
         events: Vec<Event>,
         sources: &Sources,
     ) -> Result<RunSetup, RunError> {
+        let mut sources = sources.clone();
         let arm = load_arm(&config, urdf).map_err(|source| match arm_entry(&source) {
             Some(entry) => RunError::ArmEntry {
-                at: config.source_of(entry, sources).to_string(),
+                at: config.source_of(entry, &sources).to_string(),
                 entry,
                 source: Box::new(source),
             },
             None => RunError::Urdf(source),
         })?;
+        let at_default = |config: &Config, sources: &Sources, name: &str| {
+            urdf.is_some() && config.source_of(name, sources) == Source::Default
+        };
+        if urdf.is_some() {
+            fit_reach_space_to_arm(&mut config, &mut sources);
+        }
         let reach = preflight(&config, &arm.model, &events)?;
+        if BOUNDARIES
+            .iter()
+            .all(|name| at_default(&config, &sources, name))
+        {
+            if let Some([(low2, high2), (low3, high3)]) = fitted_boundaries(&arm.model, &reach) {
+                let values = [low2, high2, low3, high3];
+                for (name, value) in BOUNDARIES.into_iter().zip(values) {
+                    config
+                        .assign(name, &value.to_string())
+                        .map_err(PreflightError::from)?;
+                    sources.record(name, Source::Fitted);
+                }
+                config.check().map_err(PreflightError::from)?;
+            }
+        }
         Ok(RunSetup {
             config,
             model: arm.model,
             reach,
             events,
             warnings: arm.warnings,
+            sources,
         })
     }
 

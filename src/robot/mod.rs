@@ -27,7 +27,9 @@ pub use error::RobotError;
 pub use joint::{LinkBody, RevoluteJoint};
 pub use joint_vector::{Joints, MAX_JOINTS};
 pub use kinematic::KinematicSim;
-pub use model::{ArmModel, ArmPose, ArmSettings, Controlled, Frames, Wrist};
+pub use model::{
+    ArmModel, ArmPose, ArmSettings, CameraLink, Controlled, Frames, LearnedJoints, Wrist,
+};
 pub use motion::{limit_stop_fraction, TrapezoidProfile};
 pub use reach::ReachSpace;
 pub use reach_fit::ReachFit;

@@ -50,7 +50,7 @@ impl TestArm {
         let settings = ArmSettings {
             camera_link: self.camera_link.into(),
             camera_offset: Vector3::zeros(),
-            learned_joints: self.learned.map(String::from),
+            learned_joints: self.learned.into(),
         };
         ArmModel::from_description(&description, &settings).unwrap()
     }

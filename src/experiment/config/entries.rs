@@ -12,6 +12,7 @@ use super::values::{CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind}
 use super::{ConfigErrorKind, Rule};
 use crate::control::ServoMode;
 use crate::learn::{MergeStrategy, Method};
+use crate::robot::{CameraLink, LearnedJoints};
 
 use Rule::{AtLeast, NonNegative, OpenUnit, Positive, PositiveUpTo, UnitBelowOne, Within};
 use Scope::{All, Unused};
@@ -30,7 +31,8 @@ config_entries! {
     seed: u64 = 1, "", All, Rule::Any;
     /// Trials to run.
     trials: usize = 10000, "", All, Within(1.0, 1e9);
-    /// Input boundary 0 (θ2, the shoulder) of the learner's root box, low end.
+    /// Input boundary 0 (θ2, the shoulder) of the learner's root box, low end (boundaries 0
+    /// and 1 left at their defaults on a URDF other than the shipped one: fitted to the arm).
     boundary_0_low: f64 = -10.0, "°", BOUNDED, BOUNDARY;
     /// Input boundary 0 (θ2, the shoulder), high end.
     boundary_0_high: f64 = 80.0, "°", BOUNDED, BOUNDARY;
@@ -94,17 +96,20 @@ config_entries! {
     /// Height of the floor (world frame; −22 is the lowest target's bottom): a move stops
     /// where a link or the camera would go below it.
     floor_z: f64 = -22.0, "cm", All, Within(-1000.0, 0.0);
-    /// The link the camera is fixed to; the chain from the URDF's root to it is the arm.
-    camera_link: String = "camera_link".to_string(), "", All, Rule::Any;
+    /// The link the camera is fixed to, the chain from the URDF's root to it the arm; `auto`:
+    /// the link named camera_link, else where the chain ends (tool0, a hand, the last link).
+    camera_link: CameraLink = CameraLink::Auto, "", All, Rule::Any;
     /// The camera centre x,y,z in the camera link's frame (its z axis the optical axis).
     camera_offset: [f64; 3] = [0.0; 3], "cm", All, Rule::Any;
-    /// The three learned joints (base yaw, shoulder, elbow) by URDF name, a,b,c.
-    learned_joints: [String; 3] = ["joint_1", "joint_2", "joint_3"].map(String::from), "", All, Rule::Any;
+    /// The three learned joints (base yaw, shoulder, elbow) by URDF name, a,b,c; `auto`: the
+    /// first joint turning about the vertical, then the two that move the camera most.
+    learned_joints: LearnedJoints = LearnedJoints::Auto, "", All, Rule::Any;
     /// Folders searched for the URDF's `package://NAME/rest` meshes, comma-separated, or
     /// `none` (a relative one is taken from the config file's folder).
     package_paths: PackagePaths = PackagePaths::default(), "", All, Rule::Any;
     /// Where targets lie: r_min,r_max,z_min,z_max of the study's half annulus, or `auto`
-    /// (the same shape fitted to what the arm reaches looking down).
+    /// (the same shape fitted to what the arm reaches looking down; what a URDF other than
+    /// the shipped one gets when this is left at its default).
     reach_space: ReachSetting = ReachSetting::Given([46.0, 93.0, 0.0, 52.0]), "cm", All, Rule::Any;
     /// Rays per image side: the 512×512 image is sampled by an N×N grid of rays.
     raycast_resolution: usize = 256, "", RAYCAST, Within(16.0, 4096.0);

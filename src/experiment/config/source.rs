@@ -21,6 +21,9 @@ pub enum Source {
     Flag(&'static str),
     /// Code that built the config itself (a test, a Python script), not a file or flag.
     Program,
+    /// Worked out from the arm, for an entry left at its default on an arm other than
+    /// the shipped OSCAR-6 (`reach_space`, `boundary_0_*`, `boundary_1_*`).
+    Fitted,
 }
 
 impl fmt::Display for Source {
@@ -31,6 +34,7 @@ impl fmt::Display for Source {
             Source::Set => f.write_str("--set"),
             Source::Flag(flag) => f.write_str(flag),
             Source::Program => f.write_str("set by the program"),
+            Source::Fitted => f.write_str("fitted to the arm"),
         }
     }
 }

@@ -8,6 +8,7 @@ mod sensing;
 use super::memory::machine_memory;
 use super::values::{ConfigValue, ReachSetting};
 use super::{Config, ConfigErrorKind};
+use crate::robot::LearnedJoints;
 
 /// Most physics steps one settling may take.
 const MAX_SETTLE_STEPS: f64 = 1e5;
@@ -52,13 +53,14 @@ impl Config {
             &self.camera_offset,
             "must be within 1000 cm of the camera link's origin on each axis",
         )?;
-        let [a, b, c] = &self.learned_joints;
-        rule(
-            a != b && b != c && a != c,
-            "learned_joints",
-            &self.learned_joints,
-            "must name three different joints",
-        )?;
+        if let LearnedJoints::Named([a, b, c]) = &self.learned_joints {
+            rule(
+                a != b && b != c && a != c,
+                "learned_joints",
+                &self.learned_joints,
+                "must name three different joints",
+            )?;
+        }
         if let Some(folder) = self.package_paths.missing_folder() {
             rule(
                 false,

@@ -3,6 +3,7 @@
 use super::ValueError;
 use crate::control::ServoMode;
 use crate::learn::{MergeStrategy, Method};
+use crate::robot::{CameraLink, LearnedJoints};
 use std::fmt;
 use std::str::FromStr;
 
@@ -133,14 +134,37 @@ impl ConfigValue for [f64; 3] {
     }
 }
 
-/// Three names `a,b,c`.
-impl ConfigValue for [String; 3] {
-    const KIND: &'static str = "a,b,c";
+/// `auto`, or a link's name.
+impl ConfigValue for CameraLink {
+    const KIND: &'static str = "auto or a link";
     fn parse_value(raw: &str) -> Result<Self, ValueError> {
-        list(raw, "three joint names a,b,c", name)
+        Ok(match raw {
+            "auto" => CameraLink::Auto,
+            name => CameraLink::Named(name.to_string()),
+        })
     }
     fn render(&self) -> String {
-        self.join(",")
+        match self {
+            CameraLink::Auto => "auto".to_string(),
+            CameraLink::Named(name) => name.clone(),
+        }
+    }
+}
+
+/// `auto`, or three joint names `a,b,c`.
+impl ConfigValue for LearnedJoints {
+    const KIND: &'static str = "auto or a,b,c";
+    fn parse_value(raw: &str) -> Result<Self, ValueError> {
+        if raw == "auto" {
+            return Ok(LearnedJoints::Auto);
+        }
+        list(raw, "`auto` or three joint names a,b,c", name).map(LearnedJoints::Named)
+    }
+    fn render(&self) -> String {
+        match self {
+            LearnedJoints::Auto => "auto".to_string(),
+            LearnedJoints::Named(names) => names.join(","),
+        }
     }
 }
 
@@ -340,9 +364,11 @@ mod tests {
             <[f64; 3]>::parse_value("1,2"),
             Err(ValueError::BadList { .. })
         ));
-        let names = <[String; 3]>::parse_value("a,b,c").unwrap();
+        let names = LearnedJoints::parse_value("a,b,c").unwrap();
         assert_eq!(names.render(), "a,b,c");
-        assert!(<[String; 3]>::parse_value("a,,c").is_err());
+        assert!(LearnedJoints::parse_value("a,,c").is_err());
+        assert_eq!(LearnedJoints::parse_value("auto"), Ok(LearnedJoints::Auto));
+        assert_eq!(CameraLink::parse_value("auto"), Ok(CameraLink::Auto));
         assert_eq!(ReachSetting::parse_value("auto"), Ok(ReachSetting::Auto));
         let given = ReachSetting::parse_value("46,93,0,52").unwrap();
         assert_eq!(ReachSetting::parse_value(&given.render()), Ok(given));

@@ -10,6 +10,8 @@ use crate::robot::description::{
 use crate::robot::{ArmModel, ArmSettings, ReachFit, ReachSpace, DEFAULT_URDF, DEFAULT_URDF_NAME};
 use crate::units::M_PER_CM;
 use nalgebra::Vector3;
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
 use std::path::{Path, PathBuf};
 
 /// The arm settings from `camera_link`, `camera_offset` (cm) and `learned_joints`.
@@ -109,7 +111,9 @@ pub fn arm_entry(error: &DescriptionError) -> Option<&'static str> {
         Kind::UnknownJoint { .. }
         | Kind::LearnedJointFixed { .. }
         | Kind::LearnedJointOffChain { .. }
-        | Kind::LearnedJointRepeated { .. } => Some("learned_joints"),
+        | Kind::LearnedJointRepeated { .. }
+        | Kind::NoBaseYaw
+        | Kind::TooFewJointsToLearn { .. } => Some("learned_joints"),
         _ => None,
     }
 }
@@ -137,4 +141,39 @@ pub fn fit_reach(config: &Config, model: &ArmModel) -> Option<ReachFit> {
         config.floor_z * M_PER_CM,
         camera.standoff + camera.object_radius,
     )
+}
+
+/// How far the fitted boundaries of θ2 and θ3 reach beyond the angles met (degrees).
+pub const BOUNDARY_MARGIN_DEG: f64 = 10.0;
+/// Reach-space points sampled for the ranges of θ2 and θ3, and their seed.
+const RANGE_SAMPLES: usize = 1000;
+const RANGE_SEED: u64 = 1;
+
+/// The range (degrees) of θ2 and θ3 over points sampled in `space` that the arm reaches
+/// looking down; `None` when it reaches none.
+pub fn learned_ranges(model: &ArmModel, space: &ReachSpace) -> Option<[(f64, f64); 2]> {
+    let mut rng = ChaCha8Rng::seed_from_u64(RANGE_SEED);
+    let mut ranges = [(f64::INFINITY, f64::NEG_INFINITY); 2];
+    for _ in 0..RANGE_SAMPLES {
+        if let Ok(theta) = model.solve_camera_position(&space.sample(&mut rng)) {
+            for (range, angle) in ranges.iter_mut().zip([theta.y, theta.z]) {
+                let degrees = angle.to_degrees();
+                *range = (range.0.min(degrees), range.1.max(degrees));
+            }
+        }
+    }
+    ranges[0].0.is_finite().then_some(ranges)
+}
+
+/// `boundary_0` and `boundary_1` (θ2, θ3) fitted to the arm: the ranges it uses over
+/// `space`, [`BOUNDARY_MARGIN_DEG`] to spare on each side, rounded to whole degrees.
+pub fn fitted_boundaries(model: &ArmModel, space: &ReachSpace) -> Option<[(f64, f64); 2]> {
+    learned_ranges(model, space).map(|ranges| {
+        ranges.map(|(low, high)| {
+            (
+                (low - BOUNDARY_MARGIN_DEG).round(),
+                (high + BOUNDARY_MARGIN_DEG).round(),
+            )
+        })
+    })
 }

@@ -4,7 +4,10 @@
 mod arm;
 mod learners;
 
-pub use arm::{arm_entry, arm_settings, fit_reach, load_arm, reach_space, LoadedArm};
+pub use arm::{
+    arm_entry, arm_settings, fit_reach, fitted_boundaries, learned_ranges, load_arm, reach_space,
+    LoadedArm, BOUNDARY_MARGIN_DEG,
+};
 pub use learners::{
     ffn_settings, input_bounds, kohonen_settings, lin5_settings, lin8_settings, lwpr_settings,
     nnw_settings, pattern_settings,

@@ -207,6 +207,15 @@ pub enum DescriptionErrorKind {
         /// The joint.
         joint: String,
     },
+    /// `learned_joints auto` on a chain with no joint turning about the vertical at rest.
+    #[error("learned_joints auto: no joint on the chain turns about the vertical at the rest pose (a base yaw); name the learned joints")]
+    NoBaseYaw,
+    /// `learned_joints auto` on a chain with fewer than two joints after its base yaw.
+    #[error("learned_joints auto: the chain has {after_base} moving joints after its base yaw, and a shoulder and an elbow are needed")]
+    TooFewJointsToLearn {
+        /// Moving joints after the base yaw.
+        after_base: usize,
+    },
     /// A chain with more moving joints than an arm model holds.
     #[error("the chain has {found} moving joints; an arm may have at most {max}")]
     TooManyJoints {

@@ -1,6 +1,7 @@
 //! Any robot from its URDF: links and joints as a tree, meshes read from disk, the serial
 //! chain from the root to a camera link, and its forward kinematics.
 
+mod auto_arm;
 mod chain;
 mod convert;
 mod error;
@@ -15,6 +16,7 @@ mod robot;
 mod tree;
 mod warning;
 
+pub use auto_arm::auto_camera_link;
 pub use chain::{Chain, ChainBody, ChainJoint, HeldJoint};
 pub use error::{DescriptionError, DescriptionErrorKind};
 pub use geometry::{GeometryElement, MeshGeometry, Shape};

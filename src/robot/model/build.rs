@@ -3,8 +3,8 @@
 
 use super::ArmModel;
 use crate::robot::description::{
-    Chain, ChainBody, DescriptionError, DescriptionErrorKind as Kind, GeometryElement, Inertial,
-    JointKind, RobotDescription,
+    auto_camera_link, Chain, ChainBody, DescriptionError, DescriptionErrorKind as Kind,
+    GeometryElement, Inertial, JointKind, RobotDescription,
 };
 use crate::robot::joint::{LinkBody, RevoluteJoint};
 use crate::robot::Shape;
@@ -15,23 +15,54 @@ use nalgebra::{Isometry3, Translation3, Vector3};
 #[derive(Debug, Clone, PartialEq)]
 pub struct ArmSettings {
     /// The link the camera is fixed to; the chain from the root to it is the arm.
-    /// Default `camera_link` (the OSCAR-6's).
-    pub camera_link: String,
+    /// Default [`CameraLink::Auto`] (the OSCAR-6's `camera_link`).
+    pub camera_link: CameraLink,
     /// The camera centre in the camera link's frame (m), its axes the link's (z the
     /// optical axis). Default 0, 0, 0.
     pub camera_offset: Vector3<f64>,
-    /// The three learned joints by name: the study's base yaw, shoulder and elbow.
-    /// Default `joint_1`, `joint_2`, `joint_3` (the OSCAR-6's).
-    pub learned_joints: [String; 3],
+    /// The three learned joints: the study's base yaw, shoulder and elbow. Default
+    /// [`LearnedJoints::Auto`] (the OSCAR-6's `joint_1`, `joint_2`, `joint_3`).
+    pub learned_joints: LearnedJoints,
 }
 
 impl Default for ArmSettings {
     fn default() -> ArmSettings {
         ArmSettings {
-            camera_link: "camera_link".to_string(),
+            camera_link: CameraLink::Auto,
             camera_offset: Vector3::zeros(),
-            learned_joints: ["joint_1", "joint_2", "joint_3"].map(String::from),
+            learned_joints: LearnedJoints::Auto,
         }
+    }
+}
+
+/// The link the camera is fixed to.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum CameraLink {
+    /// The link named `camera_link`, or the end of the chain ([`auto_camera_link`]).
+    Auto,
+    /// The link of this name.
+    Named(String),
+}
+
+impl From<&str> for CameraLink {
+    fn from(name: &str) -> CameraLink {
+        CameraLink::Named(name.to_string())
+    }
+}
+
+/// The three learned joints.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum LearnedJoints {
+    /// The base yaw and the two joints that move the camera's reach and height most
+    /// ([`Chain::auto_learned_joints`]).
+    Auto,
+    /// The joints of these names: base yaw, shoulder, elbow.
+    Named([String; 3]),
+}
+
+impl From<[&str; 3]> for LearnedJoints {
+    fn from(names: [&str; 3]) -> LearnedJoints {
+        LearnedJoints::Named(names.map(String::from))
     }
 }
 
@@ -45,9 +76,17 @@ impl ArmModel {
         description: &RobotDescription,
         settings: &ArmSettings,
     ) -> Result<ArmModel, DescriptionError> {
-        let chain = Chain::new(description, &settings.camera_link)?;
-        let names = settings.learned_joints.each_ref().map(String::as_str);
-        let learned = chain.learned_joints(description, &names)?;
+        let camera_link = match &settings.camera_link {
+            CameraLink::Auto => &description.links[auto_camera_link(description)].name,
+            CameraLink::Named(name) => name,
+        };
+        let chain = Chain::new(description, camera_link)?;
+        let learned = match &settings.learned_joints {
+            LearnedJoints::Auto => chain.auto_learned_joints(description)?,
+            LearnedJoints::Named(names) => {
+                chain.learned_joints(description, &names.each_ref().map(String::as_str))?
+            }
+        };
         let fail = |kind| DescriptionError {
             file: description.file.clone(),
             kind,

@@ -6,7 +6,7 @@ mod build;
 mod frames;
 mod wrist;
 
-pub use build::ArmSettings;
+pub use build::{ArmSettings, CameraLink, LearnedJoints};
 pub use frames::Frames;
 pub use wrist::Wrist;
 

@@ -1,0 +1,129 @@
+//! The arm a description gives when the config leaves it to the arm (`camera_link auto`,
+//! `learned_joints auto`): the camera on the chain's end, and the study's three learned
+//! joints — base yaw, shoulder, elbow — found by what they do at the rest pose.
+
+use super::{Chain, DescriptionError, DescriptionErrorKind as Kind, JointKind, RobotDescription};
+use nalgebra::{Isometry3, Point3, Vector3};
+
+/// The link named so is the camera link where there is one (the OSCAR-6's).
+const NAMED_CAMERA_LINK: &str = "camera_link";
+/// A joint axis this close to vertical (|z| of its unit vector) turns the arm about the
+/// vertical: a base yaw.
+const VERTICAL: f64 = 0.99;
+
+/// The camera link of `camera_link auto`: the link named `camera_link` where there is one,
+/// else the link where the chain from the root ends: followed through every single child,
+/// and at a branch into the child whose subtree turns most joints, it stops at a leaf or
+/// where no child turns a joint any more (a hand whose fingers slide: the hand).
+pub fn auto_camera_link(description: &RobotDescription) -> usize {
+    if let Some(link) = description.link_index(NAMED_CAMERA_LINK) {
+        return link;
+    }
+    let mut at = description.root;
+    loop {
+        let children: Vec<usize> = description.links[at]
+            .child_joints
+            .iter()
+            .map(|&j| description.joints[j].child)
+            .collect();
+        let turning = |link: usize| turning_joints_below(description, link);
+        let next = match children.as_slice() {
+            [only] => Some(*only),
+            _ => children
+                .iter()
+                .copied()
+                .filter(|&c| turning(c) > 0 || revolute_into(description, c))
+                .max_by_key(|&c| turning(c)),
+        };
+        match next {
+            Some(child) => at = child,
+            None => return at,
+        }
+    }
+}
+
+/// Whether the joint into `link` turns.
+fn revolute_into(description: &RobotDescription, link: usize) -> bool {
+    description.links[link]
+        .parent_joint
+        .is_some_and(|j| turns(description.joints[j].kind))
+}
+
+fn turns(kind: JointKind) -> bool {
+    matches!(kind, JointKind::Revolute | JointKind::Continuous)
+}
+
+/// Turning joints in the subtree below `link` (the joint into it included).
+fn turning_joints_below(description: &RobotDescription, link: usize) -> usize {
+    let own = usize::from(revolute_into(description, link));
+    own + description.links[link]
+        .child_joints
+        .iter()
+        .map(|&j| turning_joints_below(description, description.joints[j].child))
+        .sum::<usize>()
+}
+
+impl Chain {
+    /// The learned joints of `learned_joints auto`, as indices into `joints`: the base yaw
+    /// (the first joint whose axis is vertical at the rest pose), then the two joints after
+    /// it that move the camera's distance from that axis and its height most at rest, in
+    /// chain order.
+    pub fn auto_learned_joints(
+        &self,
+        description: &RobotDescription,
+    ) -> Result<[usize; 3], DescriptionError> {
+        let frames = self.rest_frames();
+        let camera = self.rest_camera(&frames);
+        let base = frames
+            .iter()
+            .zip(&self.joints)
+            .position(|(frame, joint)| (frame.rotation * joint.axis).z.abs() >= VERTICAL)
+            .ok_or_else(|| description.error(Kind::NoBaseYaw))?;
+        let base_at = frames[base].translation.vector;
+        let mut moves: Vec<(usize, f64)> = (base + 1..self.joints.len())
+            .map(|j| {
+                let axis = frames[j].rotation * self.joints[j].axis;
+                let lever = camera.coords - frames[j].translation.vector;
+                (
+                    j,
+                    reach_and_height_speed(axis.cross(&lever), camera, base_at),
+                )
+            })
+            .collect();
+        moves.sort_by(|a, b| b.1.total_cmp(&a.1));
+        let [(a, _), (b, _), ..] = moves[..] else {
+            return Err(description.error(Kind::TooFewJointsToLearn {
+                after_base: moves.len(),
+            }));
+        };
+        Ok([base, a.min(b), a.max(b)])
+    }
+
+    /// Each moving joint's frame in the world at the rest pose (every joint at 0).
+    fn rest_frames(&self) -> Vec<Isometry3<f64>> {
+        self.joints
+            .iter()
+            .scan(Isometry3::identity(), |at, joint| {
+                *at *= joint.origin;
+                Some(*at)
+            })
+            .collect()
+    }
+
+    /// The camera link's origin in the world at the rest pose.
+    fn rest_camera(&self, frames: &[Isometry3<f64>]) -> Point3<f64> {
+        let last = frames.last().copied().unwrap_or_else(Isometry3::identity);
+        last * self.camera_in_body * Point3::origin()
+    }
+}
+
+/// How fast a camera velocity `v` (per radian) changes the camera's distance from the
+/// vertical axis through `base` and its height: `v` without its part around that axis.
+fn reach_and_height_speed(v: Vector3<f64>, camera: Point3<f64>, base: Vector3<f64>) -> f64 {
+    let radial = Vector3::new(camera.x - base.x, camera.y - base.y, 0.0);
+    if radial.norm() < 1e-9 {
+        return v.norm();
+    }
+    let around = Vector3::z().cross(&radial).normalize();
+    (v - around * v.dot(&around)).norm()
+}

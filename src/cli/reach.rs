@@ -8,8 +8,8 @@ use crate::experiment::setup::{
     fit_reach, fitted_boundaries, learned_ranges, load_arm, reach_space, BOUNDARY_MARGIN_DEG,
 };
 use crate::experiment::{
-    fit_reach_space_to_arm, reachable_points, Config, ReachSetting, RunRequest, Sources,
-    REACH_SAMPLES,
+    fit_reach_space_to_arm, reachable_points, Config, PreflightError, ReachSetting, RunRequest,
+    Sources, REACH_SAMPLES,
 };
 use crate::robot::{ArmModel, Wrist};
 use std::fmt::Write;
@@ -64,11 +64,8 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
     let model = warned(load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?);
     let mut report = arm_lines(&model);
     let fit = fit_reach(&config, &model);
-    let Some(space) = reach_space(&config, &model) else {
-        return Err(bad_input(
-            "reach_space auto: no half annulus of the study's shape fits what this arm reaches",
-        ));
-    };
+    let space =
+        reach_space(&config, &model).map_err(|why| bad_input(PreflightError::NoReachSpace(why)))?;
     let how = match config.reach_space {
         ReachSetting::Auto => "fitted",
         ReachSetting::Given(_) => "given",
@@ -82,7 +79,7 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
         space.z_max * 100.0,
         space.volume() * 1000.0
     );
-    if let (Some(fit), ReachSetting::Auto) = (fit, config.reach_space) {
+    if let (Ok(fit), ReachSetting::Auto) = (fit, config.reach_space) {
         let _ = writeln!(
             report,
             "box share            the space's (r, z) box holds {:.0}% of the (r, z) cells the arm reaches ({} of {} shoulder-elbow poses usable)",

@@ -4,7 +4,7 @@
 
 use super::setup::reach_space;
 use super::{Config, ConfigErrorKind, Event};
-use crate::robot::{ArmModel, ReachSpace, RobotError};
+use crate::robot::{ArmModel, ReachFitFailure, ReachSpace, RobotError};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
@@ -32,8 +32,8 @@ pub enum PreflightError {
         source: RobotError,
     },
     /// `reach_space auto` and no part of the study's shape fits what the arm reaches.
-    #[error("reach_space auto: no half annulus of the study's shape fits inside what this arm reaches with the camera looking down above the floor")]
-    NoReachSpace,
+    #[error("reach_space auto: no half annulus of the study's shape fits inside what this arm reaches with the camera looking down above the floor: {0}")]
+    NoReachSpace(ReachFitFailure),
     /// The arm cannot reach (enough of) its reach space.
     #[error(
         "{reachable} of {sampled} sampled reach-space points are reachable by this arm with the camera looking down{} (at least {:.0}% are needed)",
@@ -78,7 +78,7 @@ pub fn preflight(
         }
         .into());
     }
-    let reach = reach_space(config, model).ok_or(PreflightError::NoReachSpace)?;
+    let reach = reach_space(config, model).map_err(PreflightError::NoReachSpace)?;
     check_reach(model, &reach, None)?;
     let mut changed = model.clone();
     for event in events {

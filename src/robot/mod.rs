@@ -32,7 +32,7 @@ pub use model::{
 };
 pub use motion::{limit_stop_fraction, TrapezoidProfile};
 pub use reach::ReachSpace;
-pub use reach_fit::ReachFit;
+pub use reach_fit::{ReachFit, ReachFitFailure};
 pub use simulator::{MoveReport, MoveSettings, SimWork, Simulator};
 pub use tracking::SetPointTracker;
 pub use urdf::{load_urdf, parse_urdf, DEFAULT_URDF, DEFAULT_URDF_NAME};

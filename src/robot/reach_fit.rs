@@ -27,6 +27,39 @@ pub struct ReachFit {
     pub usable: usize,
 }
 
+/// Why no reach space fits an arm: how many of the sampled shoulder–elbow poses each
+/// condition turned away, and how many were left.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct ReachFitFailure {
+    /// Shoulder–elbow poses sampled.
+    pub sampled: usize,
+    /// Poses at which no wrist pose inside the limits keeps the camera looking down.
+    pub no_wrist: usize,
+    /// Poses with the elbow not up (or the wrist behind the base).
+    pub elbow_down: usize,
+    /// Poses with a link or the camera below the floor.
+    pub below_floor: usize,
+    /// Poses left, in which no half annulus of the study's shape fits.
+    pub usable: usize,
+}
+
+impl std::fmt::Display for ReachFitFailure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let share = |n: usize| 100.0 * n as f64 / self.sampled.max(1) as f64;
+        write!(
+            f,
+            "of {} shoulder-elbow poses sampled, the wrist could not look down at {:.0}%, \
+             the elbow was not up at {:.0}% and a link was below the floor at {:.0}%; \
+             no half annulus of the study's shape fits in the {} usable ones",
+            self.sampled,
+            share(self.no_wrist),
+            share(self.elbow_down),
+            share(self.below_floor),
+            self.usable
+        )
+    }
+}
+
 /// The reached (r, z) cells: `rows` of `cols`, row 0 at `z0`, column 0 at r = 0.
 struct Grid {
     z0: f64,
@@ -93,11 +126,12 @@ impl Grid {
 impl ReachSpace {
     /// The study's half annulus scaled as large as it fits inside what `model` reaches
     /// with the camera looking down, its lowest target above `floor_z` (m; the object
-    /// hangs `below` m under the camera); `None` when no such space exists.
-    pub fn fit(model: &ArmModel, floor_z: f64, below: f64) -> Option<ReachFit> {
-        let points = reached_points(model, floor_z);
+    /// hangs `below` m under the camera); when no such space exists, how many sampled
+    /// poses each of the conditions turned away.
+    pub fn fit(model: &ArmModel, floor_z: f64, below: f64) -> Result<ReachFit, ReachFitFailure> {
+        let (points, tally) = reached_points(model, floor_z);
         let usable = points.len();
-        let grid = Grid::new(&points)?;
+        let grid = Grid::new(&points).ok_or(tally)?;
         let study = ReachSpace::OSCAR6;
         let r_far = grid.cols as f64 * CELL;
         let lowest = (floor_z + below).max(grid.z0);
@@ -130,47 +164,60 @@ impl ReachSpace {
                 ),
                 ((r.0 / CELL) as usize, (r.1 / CELL) as usize + 1),
             );
-            return Some(ReachFit {
+            return Ok(ReachFit {
                 space,
                 area_share: inside as f64 / grid.reached as f64,
-                sampled: STEPS * STEPS,
+                sampled: tally.sampled,
                 usable,
             });
         }
-        None
+        Err(tally)
     }
 }
 
 /// The camera centres (r, z) of shoulder–elbow poses on a grid inside the limits (the
 /// base yaw at rest: turning it moves the camera about the base's z axis only) whose
-/// wrist is solved inside its limits, elbow up, with every link above `floor_z`.
-fn reached_points(model: &ArmModel, floor_z: f64) -> Vec<(f64, f64)> {
+/// wrist is solved inside its limits, elbow up, with every link above `floor_z`; and how
+/// many poses each condition turned away.
+fn reached_points(model: &ArmModel, floor_z: f64) -> (Vec<(f64, f64)>, ReachFitFailure) {
     let [yaw, s, e] = model.learned();
     let span = |j: usize| {
         let (lower, upper) = model.joints()[j].one_turn();
-        (lower, upper - lower)
+        (lower, upper - lower, STEPS)
+    };
+    let (shoulder, elbow) = (span(s), span(e));
+    let mut tally = ReachFitFailure {
+        sampled: shoulder.2 * elbow.2,
+        ..ReachFitFailure::default()
     };
     let bodies: Vec<_> = (1..=model.dof()).map(|k| body_elements(model, k)).collect();
     let base_yaw = model.rest()[yaw];
     let mut points = Vec::new();
-    for i in 0..STEPS {
+    let at = |(lower, width, steps): (f64, f64, usize), n: usize| {
+        lower + width * (n as f64 + 0.5) / steps as f64
+    };
+    for i in 0..shoulder.2 {
         let mut near = model.rest();
-        for k in 0..STEPS {
-            let at = |(lower, width): (f64, f64), n: usize| {
-                lower + width * (n as f64 + 0.5) / STEPS as f64
-            };
-            let theta = Controlled::new(base_yaw, at(span(s), i), at(span(e), k));
+        for k in 0..elbow.2 {
+            let theta = Controlled::new(base_yaw, at(shoulder, i), at(elbow, k));
             let pose = model.pose_near(&theta, &near);
             if !model.wrist_fits(&pose) {
+                tally.no_wrist += 1;
                 continue;
             }
             near = pose.joints;
-            if !model.is_elbow_up(&theta) || lowest_point(model, &bodies, &pose.joints) < floor_z {
+            if !model.is_elbow_up(&theta) {
+                tally.elbow_down += 1;
+                continue;
+            }
+            if lowest_point(model, &bodies, &pose.joints) < floor_z {
+                tally.below_floor += 1;
                 continue;
             }
             let p = pose.camera.translation.vector;
             points.push((p.x.hypot(p.y), p.z));
         }
     }
-    points
+    tally.usable = points.len();
+    (points, tally)
 }

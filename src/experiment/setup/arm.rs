@@ -7,7 +7,9 @@ use crate::robot::description::{
     mesh_candidates, DescriptionError, DescriptionErrorKind as Kind, DescriptionOptions,
     DescriptionWarning, RobotDescription,
 };
-use crate::robot::{ArmModel, ArmSettings, ReachFit, ReachSpace, DEFAULT_URDF, DEFAULT_URDF_NAME};
+use crate::robot::{
+    ArmModel, ArmSettings, ReachFit, ReachFitFailure, ReachSpace, DEFAULT_URDF, DEFAULT_URDF_NAME,
+};
 use crate::units::M_PER_CM;
 use nalgebra::Vector3;
 use rand::SeedableRng;
@@ -119,10 +121,10 @@ pub fn arm_entry(error: &DescriptionError) -> Option<&'static str> {
 }
 
 /// The reach space `reach_space` gives (cm), or the one fitted to `model` for `auto`
-/// (`None` when nothing fits).
-pub fn reach_space(config: &Config, model: &ArmModel) -> Option<ReachSpace> {
+/// (when nothing fits: why not).
+pub fn reach_space(config: &Config, model: &ArmModel) -> Result<ReachSpace, ReachFitFailure> {
     match config.reach_space {
-        ReachSetting::Given([r_min, r_max, z_min, z_max]) => Some(ReachSpace {
+        ReachSetting::Given([r_min, r_max, z_min, z_max]) => Ok(ReachSpace {
             r_min: r_min / 100.0,
             r_max: r_max / 100.0,
             z_min: z_min / 100.0,
@@ -134,7 +136,7 @@ pub fn reach_space(config: &Config, model: &ArmModel) -> Option<ReachSpace> {
 
 /// The reach space fitted to `model` above the config's floor, targets hanging the
 /// camera's standoff and the sphere's radius below the camera.
-pub fn fit_reach(config: &Config, model: &ArmModel) -> Option<ReachFit> {
+pub fn fit_reach(config: &Config, model: &ArmModel) -> Result<ReachFit, ReachFitFailure> {
     let camera = CameraModel::default();
     ReachSpace::fit(
         model,

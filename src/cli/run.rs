@@ -113,11 +113,14 @@ pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
     record.write(&result.folder, finished)
 }
 
+/// The share of moves stopped by a contact past which a run says so.
+const CONTACT_STOPS_WORTH_A_WARNING: f64 = 0.01;
 /// Root merges in a run past which the run says that its learner kept starting over.
 const ROOT_MERGES_WORTH_A_WARNING: usize = 10;
 
 /// How a finished run exits: 130/143 when a signal stopped it, 1 when every trial failed
-/// (saying why), 0 otherwise (warning when the learner's tree kept being cut at its root).
+/// (saying why), 0 otherwise (warning when more than 1% of the moves were stopped by a
+/// contact, or the learner's tree kept being cut at its root).
 fn outcome(result: &RunResult, stop: &StopRequest) -> Result<(), Failure> {
     let summary = &result.summary;
     if summary.interrupted {
@@ -130,6 +133,15 @@ fn outcome(result: &RunResult, stop: &StopRequest) -> Result<(), Failure> {
                 result.folder.display()
             ),
         ));
+    }
+    if summary.stopped_by_contact as f64 > CONTACT_STOPS_WORTH_A_WARNING * summary.moves as f64 {
+        eprintln!(
+            "eyehand: warning: {} of {} moves ({:.1}%) were stopped by a contact (the floor, an \
+             obstacle or another link): starts or targets may be trapped (eyehand reach)",
+            summary.stopped_by_contact,
+            summary.moves,
+            100.0 * summary.stopped_by_contact as f64 / summary.moves.max(1) as f64
+        );
     }
     if summary.root_merges >= ROOT_MERGES_WORTH_A_WARNING {
         eprintln!(

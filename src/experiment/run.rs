@@ -248,6 +248,7 @@ fn drive(
         simulated_seconds_per_trial: per_trial(work.simulated_seconds),
         settle_timeouts: work.settle_timeouts,
         stopped_by_contact: work.contact_stops,
+        moves: work.moves,
         root_merges,
         events: events.iter().map(Event::to_string).collect(),
         obstacles: config

@@ -42,6 +42,9 @@ pub struct RunSummary {
     pub settle_timeouts: u64,
     /// Moves stopped by a contact: the floor, an obstacle or another link.
     pub stopped_by_contact: u64,
+    /// Moves the arm made (absent in older summaries).
+    #[serde(default)]
+    pub moves: u64,
     /// Times a merge cut the learner's tree at its root, so that it started over (absent
     /// in older summaries).
     #[serde(default)]

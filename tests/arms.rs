@@ -233,6 +233,17 @@ fn reach_prints_the_space_the_coverage_and_the_prelearning_pose() {
     assert_eq!(code, 0);
     assert!(out.contains("r 46.0..93.0 cm, z 0.0..52.0 cm"), "{out}");
     assert!(out.contains("(69.5, 0.0, 26.0) cm"), "{out}");
+    assert!(
+        out.contains("\ncontact              0 of 500 moves"),
+        "{out}"
+    );
+    let (code, out, _) = eyehand(&["reach", "--set", "obstacle=60,20,30,10,10,80"]);
+    assert_eq!(code, 0);
+    let contact = out.lines().find(|l| l.starts_with("contact ")).unwrap();
+    assert!(
+        !contact.starts_with("contact              0 of"),
+        "a pillar stops moves: {contact}"
+    );
 }
 
 #[test]

@@ -8,8 +8,8 @@ use crate::experiment::setup::{
     fit_reach, fitted_boundaries, learned_ranges, load_arm, reach_space, BOUNDARY_MARGIN_DEG,
 };
 use crate::experiment::{
-    fit_reach_space_to_arm, reachable_points, Config, PreflightError, ReachSetting, RunRequest,
-    Sources, REACH_SAMPLES,
+    contact_stopped_moves, fit_reach_space_to_arm, reachable_points, Config, PreflightError,
+    ReachSetting, RunRequest, Sources, REACH_SAMPLES,
 };
 use crate::robot::{ArmModel, Wrist};
 use std::fmt::Write;
@@ -94,6 +94,12 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
         "covered              {:.1}% of {REACH_SAMPLES} points sampled in the reach space are reached looking down",
         100.0 * reachable as f64 / REACH_SAMPLES as f64
     );
+    let (made, stopped) = contact_stopped_moves(&config, &model, &space, CONTACT_MOVES);
+    let _ = writeln!(
+        report,
+        "contact              {stopped} of {made} moves between reached points stopped by a contact ({:.1}%; the floor, obstacles, the arm's own links)",
+        100.0 * stopped as f64 / made.max(1) as f64
+    );
     let ranges = learned_ranges(&model, &space).zip(fitted_boundaries(&model, &space));
     if let Some(([(low2, high2), (low3, high3)], [(b0, b1), (b2, b3)])) = ranges {
         let _ = writeln!(
@@ -124,6 +130,9 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
     }
     say(&report)
 }
+
+/// Moves between random reached points tried for the share a contact stops.
+const CONTACT_MOVES: usize = 500;
 
 /// The arm's name, chain, learned joints and wrist.
 fn arm_lines(model: &ArmModel) -> String {

@@ -34,7 +34,8 @@ pub use interrupt::StopRequest;
 pub use memory::{peak_rss_kb, resident_kb};
 pub use output::DataFiles;
 pub use preflight::{
-    preflight, reachable_points, PreflightError, MIN_REACHABLE_SHARE, REACH_SAMPLES,
+    contact_stopped_moves, preflight, reachable_points, PreflightError, MIN_REACHABLE_SHARE,
+    REACH_SAMPLES,
 };
 pub use run::{run, run_learner, RunError, RunOptions, RunResult};
 pub use run_folder::{allocate_run_folder, fresh_run_folder, RunFolderError, RUN_IDS};

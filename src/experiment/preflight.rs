@@ -2,8 +2,8 @@
 //! run's trials and the robot, and that the arm (as the URDF and each link event leave it)
 //! reaches its reach space with the camera looking down.
 
-use super::setup::reach_space;
-use super::{Config, ConfigErrorKind, Event};
+use super::setup::{build_simulator, reach_space};
+use super::{Config, ConfigErrorKind, Event, SimKind};
 use crate::robot::{ArmModel, ReachFitFailure, ReachSpace, RobotError};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -48,6 +48,39 @@ pub enum PreflightError {
         /// The event that left the arm so, if one did.
         after: Option<Event>,
     },
+}
+
+/// Moves between two reached points of `reach`, and how many of them a contact (the floor,
+/// an obstacle, another link) stopped: `moves` pairs of points drawn with a fixed seed, each
+/// move made on the config's kinematic simulator from the first point's pose.
+pub fn contact_stopped_moves(
+    config: &Config,
+    model: &ArmModel,
+    reach: &ReachSpace,
+    moves: usize,
+) -> (usize, usize) {
+    let kinematic = Config {
+        sim: SimKind::Kinematic,
+        ..config.clone()
+    };
+    let mut sim = build_simulator(&kinematic, model.clone());
+    let mut rng = ChaCha8Rng::seed_from_u64(REACH_SEED);
+    let (mut made, mut stopped) = (0, 0);
+    for _ in 0..moves {
+        let (a, b) = (reach.sample(&mut rng), reach.sample(&mut rng));
+        let (Ok(from), Ok(to)) = (
+            model.solve_camera_position(&a),
+            model.solve_camera_position(&b),
+        ) else {
+            continue;
+        };
+        if sim.place(&from).is_err() {
+            continue;
+        }
+        made += 1;
+        stopped += usize::from(sim.execute(&(to - from)).stopped_by_contact);
+    }
+    (made, stopped)
 }
 
 /// Reach-space points (of `samples` drawn with a fixed seed) at which `model` puts its

@@ -248,3 +248,42 @@ fn max_stored_patterns_bounds_what_a_run_stores() {
     assert!(column("bins").iter().zip(&patterns).all(|(b, p)| b <= p));
     assert!(run.summary.patterns <= 1000 && run.summary.patterns >= 990);
 }
+
+#[test]
+fn failures_are_counted_by_reason_and_a_learner_without_a_tree_prints_none() {
+    let data = tempfile::tempdir().unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .args([
+            "run",
+            "--method",
+            "kohonen",
+            "--trials",
+            "300",
+            "--no-plot",
+            "--data",
+        ])
+        .arg(data.path())
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let folder = Path::new(stdout.lines().next().unwrap());
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(folder.join("summary.json")).unwrap())
+            .unwrap();
+    let failures = json["failures"].as_u64().unwrap();
+    assert!(failures > 0, "kohonen fails trials early: {json}");
+    let by_reason = json["failures_by_reason"].as_object().unwrap();
+    let sum: u64 = by_reason.values().map(|v| v.as_u64().unwrap()).sum();
+    assert_eq!(sum, failures, "{by_reason:?}");
+    assert!(stdout.contains(&format!("{failures} failed: ")), "{stdout}");
+    assert!(!stdout.contains("tree: "), "kohonen has no tree: {stdout}");
+    assert!(
+        stdout.contains("\nmap: 16807 cells; "),
+        "its own size: {stdout}"
+    );
+}

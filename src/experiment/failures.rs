@@ -5,8 +5,8 @@ use crate::camera::NotSeen;
 use crate::control::Failure;
 use std::fmt;
 
-/// Failed trials by reason.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+/// Failed trials by reason (`summary.json`'s `failures_by_reason`).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct FailureTally {
     /// No reachable target was drawn.
     pub unreachable_target: usize,

@@ -244,6 +244,7 @@ fn drive(
         bins: stats.bins,
         patterns: stats.patterns,
         failures: failures.total(),
+        failures_by_reason: failures,
         physics_steps_per_trial: per_trial(work.physics_steps as f64),
         simulated_seconds_per_trial: per_trial(work.simulated_seconds),
         settle_timeouts: work.settle_timeouts,

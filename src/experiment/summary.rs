@@ -1,6 +1,7 @@
 //! The run's `summary.json`: what ran, how fast, and the distance figures over its last
 //! trials (from [`StepFigures`](super::StepFigures)).
 
+use super::failures::FailureTally;
 use super::Config;
 use crate::control::MAX_RECORDED_STEPS;
 use serde::{Deserialize, Serialize};
@@ -34,6 +35,9 @@ pub struct RunSummary {
     pub patterns: usize,
     /// Trials that failed (object lost or not seen, unreachable target, bad move).
     pub failures: usize,
+    /// The failed trials by reason; they add up to `failures` (absent in older summaries).
+    #[serde(default)]
+    pub failures_by_reason: FailureTally,
     /// Physics steps the simulator took per trial (0 on the kinematic simulator).
     pub physics_steps_per_trial: f64,
     /// Simulated seconds of moves per trial, settling included.
@@ -149,20 +153,36 @@ impl RunSummary {
             })
     }
 
+    /// The learner's size in its own terms, ending in `; ` (nothing for one that has none
+    /// to speak of: ik, ffn's one net).
+    fn model_size(&self) -> String {
+        match self.method.as_str() {
+            "lin5" | "lin8" | "nnw" => format!(
+                "tree: {} nodes, {} bins, {} patterns; ",
+                self.nodes, self.bins, self.patterns
+            ),
+            "kohonen" => format!("map: {} cells; ", self.nodes),
+            "lwpr" => format!("{} receptive fields; ", self.nodes),
+            "ik" | "ffn" => String::new(),
+            _ => format!("model: {} nodes, {} patterns; ", self.nodes, self.patterns),
+        }
+    }
+
     /// A short human-readable report of the run.
     pub fn one_screen(&self) -> String {
         let figure = |v: &Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
+        let failed = match self.failures {
+            0 => "none failed".to_string(),
+            n => format!("{n} failed: {}", self.failures_by_reason),
+        };
         let mut text = format!(
-            "{} on the {} simulator ({} camera), seed {}: {} trials in {:.2} s ({:.0} trials/s), {} failed\n",
-            self.method, self.sim, self.camera, self.seed, self.trials, self.wall_seconds, self.trials_per_second, self.failures
+            "{} on the {} simulator ({} camera), seed {}: {} trials in {:.2} s ({:.0} trials/s), {failed}\n",
+            self.method, self.sim, self.camera, self.seed, self.trials, self.wall_seconds, self.trials_per_second
         );
         if self.interrupted {
             text += "interrupted: the trials above are those finished before the signal\n";
         }
-        text += &format!(
-            "tree: {} nodes, {} bins, {} patterns; peak memory {} kB\n",
-            self.nodes, self.bins, self.patterns, self.peak_rss_kb
-        );
+        text += &format!("{}peak memory {} kB\n", self.model_size(), self.peak_rss_kb);
         text += &format!(
             "distance to target over the last {} trials (mm):\n",
             self.window

@@ -98,6 +98,14 @@ fn compare_gives_the_numbers_of_separate_runs() {
         data.path(),
     );
     assert!(out.status.success(), "{}", text(&out.stderr));
+    let stderr = text(&out.stderr);
+    for done in 1..=4 {
+        assert!(
+            stderr.contains(" finished after ")
+                && stderr.contains(&format!("({done} of 4 done; log: ")),
+            "a line per finished cell: {stderr}"
+        );
+    }
     let stdout = text(&out.stdout);
     let folder = Path::new(stdout.lines().next().unwrap());
     assert_eq!(

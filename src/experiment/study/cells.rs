@@ -10,6 +10,7 @@ use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::Duration;
+use std::time::Instant;
 
 /// How often the running cells are looked at.
 const POLL: Duration = Duration::from_millis(20);
@@ -100,8 +101,9 @@ pub enum LocalRunEnd {
 }
 
 /// Runs every cell of the study, `jobs` at a time, each as `launcher`'s process with its
-/// output in `logs/local_<i>.out`. If a cell cannot be started, none after it is, and the
-/// running ones are waited for before the error is returned.
+/// output in `logs/local_<i>.out`, and says on stderr as each cell ends (how it ended, how
+/// long it took, how many are done). If a cell cannot be started, none after it is, and
+/// the running ones are waited for before the error is returned.
 pub fn run_locally(
     folder: &StudyFolder,
     cells: usize,
@@ -110,12 +112,13 @@ pub fn run_locally(
 ) -> Result<LocalRunEnd, StudyError> {
     let mut interrupts = Interrupts::catch().map_err(StudyError::io("signal handlers"))?;
     let mut next = 0;
-    let mut running: Vec<Child> = Vec::new();
+    let mut done = 0;
+    let mut running: Vec<(usize, Child, Instant)> = Vec::new();
     let mut forwarded = None;
     let mut failure = None;
     loop {
         for signal in interrupts.received() {
-            for child in &running {
+            for (_, child, _) in &running {
                 forward(child.id(), signal);
             }
             forwarded = Some(signal);
@@ -123,7 +126,7 @@ pub fn run_locally(
         let launching = forwarded.is_none() && failure.is_none();
         while launching && next < cells && running.len() < jobs.max(1) {
             match start(folder, launcher, next) {
-                Ok(child) => running.push(child),
+                Ok(child) => running.push((next, child, Instant::now())),
                 Err(e) => {
                     failure = Some(e);
                     break;
@@ -132,7 +135,23 @@ pub fn run_locally(
             next += 1;
         }
         // A child that cannot be waited for is dropped: it was ours and is reaped on exit.
-        running.retain_mut(|child| matches!(child.try_wait(), Ok(None)));
+        running.retain_mut(|(index, child, started)| match child.try_wait() {
+            Ok(None) => true,
+            ended => {
+                done += 1;
+                let how = match ended {
+                    Ok(Some(status)) if status.success() => "finished".to_string(),
+                    Ok(Some(status)) => format!("ended with {status}"),
+                    _ => "could not be waited for".to_string(),
+                };
+                let seconds = started.elapsed().as_secs_f64();
+                eprintln!(
+                    "eyehand: cell {index} {how} after {seconds:.2} s ({done} of {cells} done; log: {})",
+                    folder.local_log(*index).display()
+                );
+                false
+            }
+        });
         let more = forwarded.is_none() && failure.is_none() && next < cells;
         if running.is_empty() && !more {
             break;

@@ -268,3 +268,34 @@ fn the_study_config_learns_and_turns_the_camera_at_trial_1500_with_merges_that_h
         "the turn shows: {before} mm, then {after} mm"
     );
 }
+
+#[test]
+fn run_method_lin8_without_a_config_records_lin8s_values() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().to_str().unwrap();
+    let out = eyehand(&[
+        "run",
+        "--method",
+        "lin8",
+        "--trials",
+        "20",
+        "--data",
+        data,
+        "--quiet",
+        "--no-plot",
+    ]);
+    let folder = run_folder(&out);
+    let info = std::fs::read_to_string(folder.join("info")).unwrap();
+    let shrink = info
+        .lines()
+        .find(|l| l.starts_with("error_area_shrink "))
+        .unwrap();
+    assert!(shrink.starts_with("error_area_shrink 0.5 "), "{shrink}");
+    assert!(shrink.ends_with("# default"), "{shrink}");
+    let compared = Config::from_file(&Path::new(ROOT).join("configs/lin8.conf")).unwrap();
+    assert_eq!(
+        compared.error_area_shrink, 0.5,
+        "compare's lin8 row runs the same"
+    );
+    assert!(info.contains("\nconfig_file defaults\n"), "{info}");
+}

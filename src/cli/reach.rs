@@ -63,9 +63,16 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
     }
     let model = warned(load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?);
     let mut report = arm_lines(&model);
-    let fit = fit_reach(&config, &model);
-    let space =
-        reach_space(&config, &model).map_err(|why| bad_input(PreflightError::NoReachSpace(why)))?;
+    // Fitted once, and only for `auto`.
+    let fit = match config.reach_space {
+        ReachSetting::Auto => Some(fit_reach(&config, &model)),
+        ReachSetting::Given(_) => None,
+    };
+    let space = match fit {
+        Some(fit) => fit.map(|fit| fit.space),
+        None => reach_space(&config, &model),
+    }
+    .map_err(|why| bad_input(PreflightError::NoReachSpace(why)))?;
     let how = match config.reach_space {
         ReachSetting::Auto => "fitted",
         ReachSetting::Given(_) => "given",
@@ -79,7 +86,7 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
         space.z_max * 100.0,
         space.volume() * 1000.0
     );
-    if let (Ok(fit), ReachSetting::Auto) = (fit, config.reach_space) {
+    if let Some(Ok(fit)) = fit {
         let _ = writeln!(
             report,
             "box share            the space's (r, z) box holds {:.0}% of the (r, z) cells the arm reaches ({} of {} shoulder-elbow poses usable)",

@@ -3,9 +3,7 @@
 use super::{bad_input, failed, print_warnings, say, warned, Failure};
 use crate::experiment::plot::plot_run;
 use crate::experiment::setup::load_arm;
-use crate::experiment::{
-    declarations, defaults_text, Config, RunError, RunOptions, Scope, Sources,
-};
+use crate::experiment::{defaults_text, unused_entries, Config, RunError, RunOptions, Sources};
 use crate::robot::Controlled;
 use std::path::PathBuf;
 
@@ -100,10 +98,9 @@ pub(super) fn check_config(args: CheckConfigArgs) -> Result<(), Failure> {
 
 /// A note for each entry a file gives that eyehand accepts but does not implement.
 fn unused_notes(sources: &Sources) -> String {
-    declarations()
-        .iter()
-        .filter(|d| d.scope == Scope::Unused)
-        .filter_map(|d| Some((d.name, sources.of(d.name)?)))
+    unused_entries()
+        .into_iter()
+        .filter_map(|name| Some((name, sources.of(name)?)))
         .map(|(name, source)| {
             format!("note: {source}: {name} is accepted and recorded, but unused (eyehand does not implement it)\n")
         })

@@ -22,11 +22,12 @@ mod step_figures;
 pub mod study;
 mod summary;
 
+pub(crate) use config::entry_name;
 pub(crate) use config::shown;
 pub use config::{
-    declarations, defaults_text, docs_table, CameraKind, Config, ConfigError, ConfigErrorKind,
-    Declaration, ObstacleBox, PackagePaths, ReachSetting, Rule, Scope, SimKind, Source, Sources,
-    ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES, REPEATED_ENTRY_NAMES,
+    declarations, defaults_text, docs_table, unused_entries, CameraKind, Config, ConfigError,
+    ConfigErrorKind, Declaration, ObstacleBox, PackagePaths, ReachSetting, Rule, Scope, SimKind,
+    Source, Sources, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES, REPEATED_ENTRY_NAMES,
 };
 pub use events::{Event, EventError};
 pub use failures::FailureTally;

@@ -3,8 +3,8 @@
 //! the config file, then every `--set`, then the flags, validated once on the final config.
 
 use super::{
-    shown, CameraKind, Config, ConfigError, ConfigErrorKind, Event, RunOptions, SimKind, Source,
-    Sources, DEFAULT_CONFIG_NAME, ENTRY_NAMES, REPEATED_ENTRY_NAMES,
+    entry_name, shown, CameraKind, Config, ConfigError, ConfigErrorKind, Event, RunOptions,
+    SimKind, Source, Sources, DEFAULT_CONFIG_NAME,
 };
 use crate::learn::Method;
 use serde::{Deserialize, Serialize};
@@ -139,11 +139,7 @@ impl RunRequest {
                     shown: shown(&format!("{entry}={value}")),
                     kind,
                 })?;
-            if let Some(name) = ENTRY_NAMES
-                .iter()
-                .chain(REPEATED_ENTRY_NAMES)
-                .find(|n| *n == entry)
-            {
+            if let Some(name) = entry_name(entry) {
                 sources.record(name, Source::Set);
             }
         }

@@ -32,6 +32,29 @@ pub fn fit_reach_space_to_arm(config: &mut Config, sources: &mut Sources) {
     }
 }
 
+/// The boundaries of θ2 and θ3 fitted to `model` over `reach` ([`fitted_boundaries`]) where
+/// the config left all four at their defaults (the OSCAR-6's), the config checked again.
+fn fit_boundaries_to_arm(
+    config: &mut Config,
+    sources: &mut Sources,
+    model: &ArmModel,
+    reach: &ReachSpace,
+) -> Result<(), PreflightError> {
+    let at_default = |name: &&str| config.source_of(name, sources) == Source::Default;
+    if !BOUNDARIES.iter().all(at_default) {
+        return Ok(());
+    }
+    let Some([(low2, high2), (low3, high3)]) = fitted_boundaries(model, reach) else {
+        return Ok(());
+    };
+    (config.boundary_0_low, config.boundary_0_high) = (low2, high2);
+    (config.boundary_1_low, config.boundary_1_high) = (low3, high3);
+    for name in BOUNDARIES {
+        sources.record(name, Source::Fitted);
+    }
+    Ok(config.check()?)
+}
+
 /// A run's parts, checked and fitted once: what every run-making command builds from.
 #[derive(Debug, Clone)]
 pub struct RunSetup {
@@ -72,27 +95,12 @@ impl RunSetup {
             },
             None => RunError::Urdf(source),
         })?;
-        let at_default = |config: &Config, sources: &Sources, name: &str| {
-            urdf.is_some() && config.source_of(name, sources) == Source::Default
-        };
         if urdf.is_some() {
             fit_reach_space_to_arm(&mut config, &mut sources);
         }
         let reach = preflight(&config, &arm.model, &events)?;
-        if BOUNDARIES
-            .iter()
-            .all(|name| at_default(&config, &sources, name))
-        {
-            if let Some([(low2, high2), (low3, high3)]) = fitted_boundaries(&arm.model, &reach) {
-                let values = [low2, high2, low3, high3];
-                for (name, value) in BOUNDARIES.into_iter().zip(values) {
-                    config
-                        .assign(name, &value.to_string())
-                        .map_err(PreflightError::from)?;
-                    sources.record(name, Source::Fitted);
-                }
-                config.check().map_err(PreflightError::from)?;
-            }
+        if urdf.is_some() {
+            fit_boundaries_to_arm(&mut config, &mut sources, &arm.model, &reach)?;
         }
         Ok(RunSetup {
             config,

@@ -183,22 +183,20 @@ fn reached_points(model: &ArmModel, floor_z: f64) -> (Vec<(f64, f64)>, ReachFitF
     let [yaw, s, e] = model.learned();
     let span = |j: usize| {
         let (lower, upper) = model.joints()[j].one_turn();
-        (lower, upper - lower, STEPS)
+        (lower, upper - lower)
     };
     let (shoulder, elbow) = (span(s), span(e));
     let mut tally = ReachFitFailure {
-        sampled: shoulder.2 * elbow.2,
+        sampled: STEPS * STEPS,
         ..ReachFitFailure::default()
     };
     let bodies: Vec<_> = (1..=model.dof()).map(|k| body_elements(model, k)).collect();
     let base_yaw = model.rest()[yaw];
     let mut points = Vec::new();
-    let at = |(lower, width, steps): (f64, f64, usize), n: usize| {
-        lower + width * (n as f64 + 0.5) / steps as f64
-    };
-    for i in 0..shoulder.2 {
+    let at = |(lower, width): (f64, f64), n: usize| lower + width * (n as f64 + 0.5) / STEPS as f64;
+    for i in 0..STEPS {
         let mut near = model.rest();
-        for k in 0..elbow.2 {
+        for k in 0..STEPS {
             let theta = Controlled::new(base_yaw, at(shoulder, i), at(elbow, k));
             let pose = model.pose_near(&theta, &near);
             if !model.wrist_fits(&pose) {

@@ -24,11 +24,13 @@ pub struct Declaration {
     pub default: Option<String>,
 }
 
-impl Declaration {
-    /// Whether the entry may be given any number of times.
-    pub fn is_repeated(&self) -> bool {
-        self.default.is_none()
-    }
+/// The entries eyehand accepts but does not implement ([`Scope::Unused`]).
+pub fn unused_entries() -> Vec<&'static str> {
+    super::declarations()
+        .into_iter()
+        .filter(|d| d.scope == Scope::Unused)
+        .map(|d| d.name)
+        .collect()
 }
 
 /// Doc-comment lines joined into one line.

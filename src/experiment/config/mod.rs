@@ -19,7 +19,7 @@ mod source;
 mod validate;
 mod values;
 
-pub use declaration::Declaration;
+pub use declaration::{unused_entries, Declaration};
 pub use defaults_text::{defaults_text, docs_table};
 pub use entries::{declarations, Config, ENTRY_NAMES, REPEATED_ENTRY_NAMES};
 pub(crate) use error::shown;
@@ -52,7 +52,7 @@ impl ConfigErrorKind {
 }
 
 /// The declared name `name` is, if it is an entry's.
-fn entry_name(name: &str) -> Option<&'static str> {
+pub(crate) fn entry_name(name: &str) -> Option<&'static str> {
     ENTRY_NAMES
         .iter()
         .chain(REPEATED_ENTRY_NAMES)
@@ -159,11 +159,7 @@ impl Config {
     /// implement: the `info` file's config section and `check-config --explain`.
     pub fn explained_text(&self, sources: &Sources) -> String {
         let defaults = Config::defaults().entries();
-        let unused: Vec<&str> = declarations()
-            .into_iter()
-            .filter(|d| d.scope == Scope::Unused)
-            .map(|d| d.name)
-            .collect();
+        let unused = unused_entries();
         let width = self.entries().iter().map(|(n, v)| n.len() + v.len()).max();
         let width = width.unwrap_or(0) + 1;
         let mut repeated_seen = Vec::new();

@@ -53,19 +53,6 @@ pub(super) const DYNAMIC: Scope = Scope::Sim(SimKind::Dynamic);
 /// The ray-cast camera.
 pub(super) const RAYCAST: Scope = Scope::Camera(CameraKind::Raycast);
 
-impl Scope {
-    /// Whether a run of `method` on `sim` with `camera` uses the entry.
-    pub fn applies(self, method: Method, sim: SimKind, camera: CameraKind) -> bool {
-        match self {
-            Scope::All => true,
-            Scope::Methods(methods) => methods.contains(&method),
-            Scope::Sim(kind) => kind == sim,
-            Scope::Camera(kind) => kind == camera,
-            Scope::Unused => false,
-        }
-    }
-}
-
 impl fmt::Display for Scope {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {

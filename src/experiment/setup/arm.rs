@@ -48,15 +48,14 @@ pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<LoadedArm, Descr
     };
     let model = ArmModel::from_description(&description, &arm_settings(config))?;
     let folder = urdf.and_then(Path::parent).unwrap_or(Path::new("."));
+    let file = &description.file;
     let warnings = match description.warnings.as_slice() {
         [] => Vec::new(),
         [first, rest @ ..] => {
-            let file = &description.file;
-            let line = warning_line(file, first, folder, &options.package_paths);
+            let first = warning_text(first, folder, &options.package_paths);
             vec![match rest {
-                [] => line,
+                [] => format!("{file}: {first}"),
                 _ => {
-                    let first = line.strip_prefix(&format!("{file}: ")).unwrap_or(&line);
                     let counts = mesh_counts(&description.warnings);
                     format!("{file}: {counts}; the first: {first}")
                 }
@@ -81,25 +80,24 @@ fn mesh_counts(warnings: &[DescriptionWarning]) -> String {
     )
 }
 
-/// A warning as a line: the URDF, what is missing, and for a mesh not found the paths it
-/// was looked for at.
-fn warning_line(
-    file: &str,
+/// A warning in words: what is missing, and for a mesh not found the paths it was looked
+/// for at.
+fn warning_text(
     warning: &DescriptionWarning,
     urdf_folder: &Path,
     package_paths: &[PathBuf],
 ) -> String {
     if matches!(warning, DescriptionWarning::UnreadVisualMesh { .. }) {
-        return format!("{file}: {warning}");
+        return warning.to_string();
     }
     let tried: Vec<String> = mesh_candidates(warning.filename(), urdf_folder, package_paths)
         .iter()
         .map(|path| path.components().collect::<PathBuf>().display().to_string())
         .collect();
     if tried.is_empty() {
-        format!("{file}: {warning}; no package_paths to look in")
+        format!("{warning}; no package_paths to look in")
     } else {
-        format!("{file}: {warning}; looked for {}", tried.join(", "))
+        format!("{warning}; looked for {}", tried.join(", "))
     }
 }
 

@@ -32,7 +32,7 @@ pub fn auto_camera_link(description: &RobotDescription) -> usize {
             _ => children
                 .iter()
                 .copied()
-                .filter(|&c| turning(c) > 0 || revolute_into(description, c))
+                .filter(|&c| turning(c) > 0)
                 .max_by_key(|&c| turning(c)),
         };
         match next {
@@ -72,8 +72,12 @@ impl Chain {
         &self,
         description: &RobotDescription,
     ) -> Result<[usize; 3], DescriptionError> {
-        let frames = self.rest_frames();
-        let camera = self.rest_camera(&frames);
+        let rest = vec![0.0; self.joints.len()];
+        let mut bodies = vec![Isometry3::identity(); self.bodies.len()];
+        self.body_frames(&rest, &mut bodies)?;
+        // The frame of each moving joint's body: the joint's own frame at rest.
+        let frames = &bodies[1..];
+        let camera = self.camera_pose(&rest, &Isometry3::identity())? * Point3::origin();
         let base = frames
             .iter()
             .zip(&self.joints)
@@ -97,23 +101,6 @@ impl Chain {
             }));
         };
         Ok([base, a.min(b), a.max(b)])
-    }
-
-    /// Each moving joint's frame in the world at the rest pose (every joint at 0).
-    fn rest_frames(&self) -> Vec<Isometry3<f64>> {
-        self.joints
-            .iter()
-            .scan(Isometry3::identity(), |at, joint| {
-                *at *= joint.origin;
-                Some(*at)
-            })
-            .collect()
-    }
-
-    /// The camera link's origin in the world at the rest pose.
-    fn rest_camera(&self, frames: &[Isometry3<f64>]) -> Point3<f64> {
-        let last = frames.last().copied().unwrap_or_else(Isometry3::identity);
-        last * self.camera_in_body * Point3::origin()
     }
 }
 

@@ -3,8 +3,10 @@
 
 mod detector;
 mod settings;
+mod trial_miss;
 mod watch;
 
 pub use detector::{Alarm, ChangeDetector, DetectorSettings};
 pub use settings::ChangeSettings;
+pub(crate) use trial_miss::TrialMiss;
 pub(crate) use watch::{ChangeWatch, WatchStep};

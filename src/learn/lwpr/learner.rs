@@ -4,7 +4,7 @@
 use super::output_model::OutputModel;
 use super::projection::Input;
 use super::LwprSettings;
-use crate::learn::change::{ChangeWatch, WatchStep};
+use crate::learn::change::TrialMiss;
 use crate::learn::{
     adjusted_pattern, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation, Query,
 };
@@ -19,10 +19,9 @@ pub struct Lwpr {
     span: Input,
     /// One model per joint move Δθ1, Δθ2, Δθ3.
     outputs: [OutputModel; 3],
-    watch: Option<ChangeWatch>,
+    watch: Option<TrialMiss>,
     /// Patterns trained so far (the watch dates a change by them).
     patterns: u64,
-    events: Vec<ModelEvent>,
 }
 
 impl Lwpr {
@@ -34,9 +33,8 @@ impl Lwpr {
             low: Input::from_fn(|i, _| bounds[i].0),
             span: Input::from_fn(|i, _| bounds[i].1 - bounds[i].0),
             outputs: Default::default(),
-            watch: settings.change_detection.as_ref().map(ChangeWatch::new),
+            watch: settings.change_detection.as_ref().map(TrialMiss::new),
             patterns: 0,
-            events: Vec::new(),
         }
     }
 
@@ -103,18 +101,18 @@ impl Learner for Lwpr {
     /// the trial's summed miss (before training) relative to its summed move: see the
     /// module's notes for why not each pattern's.
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
-        let (mut missed, mut moved) = (Some(0.0), 0.0);
         for (from, to) in self.settings.patterns.pairs(path) {
             let pattern = adjusted_pattern(from, to);
             if self.watch.is_some() {
                 let miss = self.miss(&pattern.input, &pattern.target);
-                missed = missed.zip(miss).map(|(sum, miss)| sum + miss);
-                moved += pattern.target.norm();
+                if let Some(watch) = &mut self.watch {
+                    watch.book(miss, pattern.target.norm());
+                }
             }
             self.train(&pattern.input, &pattern.target);
         }
-        if let Some(watch) = self.watch.as_mut().filter(|_| moved > 0.0) {
-            watch.pattern(missed, moved);
+        if let Some(watch) = &mut self.watch {
+            watch.close_trial();
         }
         Ok(())
     }
@@ -132,11 +130,7 @@ impl Learner for Lwpr {
         let Some(watch) = &mut self.watch else {
             return;
         };
-        if let WatchStep::Forget {
-            estimated_trial, ..
-        } = watch.start_trial(trial, self.patterns)
-        {
-            self.events.push(ModelEvent::Change { estimated_trial });
+        if watch.start_trial(trial, self.patterns).is_some() {
             for model in &mut self.outputs {
                 model.reset_lambda(self.settings.init_lambda);
             }
@@ -144,6 +138,8 @@ impl Learner for Lwpr {
     }
 
     fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
-        sink.append(&mut self.events);
+        if let Some(watch) = &mut self.watch {
+            watch.drain_events(sink);
+        }
     }
 }

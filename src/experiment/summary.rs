@@ -163,6 +163,8 @@ impl RunSummary {
             ),
             "kohonen" => format!("map: {} cells; ", self.nodes),
             "lwpr" => format!("{} receptive fields; ", self.nodes),
+            "issgp" => format!("{} random features; ", self.nodes),
+            "mlp" => format!("replay buffer: {} patterns; ", self.patterns),
             "ik" | "ffn" => String::new(),
             _ => format!("model: {} nodes, {} patterns; ", self.nodes, self.patterns),
         }

@@ -20,11 +20,15 @@ pub enum Method {
     Ik,
     /// Locally weighted projection regression (Vijayakumar, D'Souza and Schaal 2005).
     Lwpr,
+    /// Incremental sparse spectrum GP regression (Gijsberts and Metta 2013).
+    Issgp,
+    /// A two-hidden-layer perceptron trained by Adam on a replay buffer.
+    Mlp,
 }
 
 impl Method {
     /// Every method, in the order they are listed to users.
-    pub const ALL: [Method; 7] = [
+    pub const ALL: [Method; 9] = [
         Method::Lin5,
         Method::Lin8,
         Method::Nnw,
@@ -32,6 +36,8 @@ impl Method {
         Method::Kohonen,
         Method::Ik,
         Method::Lwpr,
+        Method::Issgp,
+        Method::Mlp,
     ];
 
     /// The method's name as written in configs and folder names.
@@ -44,6 +50,8 @@ impl Method {
             Method::Kohonen => "kohonen",
             Method::Ik => "ik",
             Method::Lwpr => "lwpr",
+            Method::Issgp => "issgp",
+            Method::Mlp => "mlp",
         }
     }
 }

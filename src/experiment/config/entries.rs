@@ -5,8 +5,8 @@
 use super::declaration::{meets_rule, one_line, Declaration};
 use super::package_paths::PackagePaths;
 use super::scope::{
-    Scope, BOUNDED, DYNAMIC, FFN, KOHONEN, LIN8, LWPR, NESTED, NETS, NNW, PERCEPTRONS, RAYCAST,
-    WATCHING,
+    Scope, BOUNDED, DYNAMIC, FFN, ISSGP, KOHONEN, LIN8, LWPR, MLP, NESTED, NETS, NNW, PERCEPTRONS,
+    RAYCAST, REGRESSORS, WATCHING,
 };
 use super::values::{CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind};
 use super::{ConfigErrorKind, Rule};
@@ -21,7 +21,7 @@ use Scope::{All, Unused};
 const BOUNDARY: Rule = Within(-1e6, 1e6);
 
 config_entries! {
-    /// The learning method: lin5, lin8, nnw, ffn, kohonen, ik or lwpr.
+    /// The learning method: lin5, lin8, nnw, ffn, kohonen, ik, lwpr, issgp or mlp.
     method: Method = Method::Lin5, "", All, Rule::Any;
     /// The simulator: kinematic (forward kinematics) or dynamic (a Rapier multibody).
     sim: SimKind = SimKind::Kinematic, "", All, Rule::Any;
@@ -238,8 +238,30 @@ config_entries! {
     /// lwpr: another PLS projection is added once the last cut the error below this
     /// fraction.
     add_threshold: f64 = 0.5, "", LWPR, OpenUnit;
-    /// lwpr: outputs Δθ are learned in units of this many degrees.
-    norm_out: f64 = 10.0, "°", LWPR, PositiveUpTo(1e4);
+    /// lwpr, issgp, mlp: outputs Δθ are learned in units of this many degrees.
+    norm_out: f64 = 10.0, "°", REGRESSORS, PositiveUpTo(1e4);
+    /// issgp: D, the random Fourier features (the Cholesky factor is D×D).
+    issgp_features: usize = 500, "", ISSGP, Within(1.0, 4000.0);
+    /// issgp: the kernel's length scale of each input θ2,θ3,cx*,cy*,cz*, as a fraction of
+    /// the input's boundary range (each above 0, at most 100).
+    issgp_length_scales: [f64; 5] = [0.5; 5], "", ISSGP, Rule::Any;
+    /// issgp: σn, the noise of a target (in norm_out units).
+    issgp_noise: f64 = 0.01, "", ISSGP, PositiveUpTo(1e3);
+    /// issgp: σf, the kernel's amplitude (in norm_out units).
+    issgp_signal: f64 = 1.0, "", ISSGP, PositiveUpTo(1e6);
+    /// issgp: λ, the weight of everything learned is multiplied by this at each pattern (1:
+    /// no forgetting; keep 1/(1 − λ) well above issgp_features).
+    issgp_forgetting: f64 = 1.0, "", ISSGP, Within(0.9, 1.0);
+    /// mlp: tanh units in each of the net's two hidden layers.
+    mlp_hidden: usize = 32, "", MLP, Within(1.0, 1000.0);
+    /// mlp: Adam's step size.
+    mlp_rate: f64 = 0.001, "", MLP, PositiveUpTo(1.0);
+    /// mlp: patterns drawn from the replay buffer for each step.
+    mlp_batch: usize = 32, "", MLP, Within(1.0, 100000.0);
+    /// mlp: Adam steps after each trial.
+    mlp_steps_per_trial: usize = 4, "", MLP, Within(1.0, 10000.0);
+    /// mlp: the replay buffer keeps this many most recent patterns.
+    mlp_buffer: usize = 10000, "", MLP, Within(1.0, 1e6);
     /// 0: store learning patterns in the run's pat_file; anything else: in memory.
     use_pat_file: i64 = 1, "", NESTED, Rule::Any;
     /// Memory and the per-level tree error are recorded every this many trials.

@@ -32,10 +32,18 @@ pub(super) const BOUNDED: Scope = Scope::Methods(&[
     Method::Ffn,
     Method::Kohonen,
     Method::Lwpr,
+    Method::Issgp,
+    Method::Mlp,
 ]);
 /// The learners that watch for a change (`merge_strategy change_detection`).
-pub(super) const WATCHING: Scope =
-    Scope::Methods(&[Method::Lin5, Method::Lin8, Method::Nnw, Method::Lwpr]);
+pub(super) const WATCHING: Scope = Scope::Methods(&[
+    Method::Lin5,
+    Method::Lin8,
+    Method::Nnw,
+    Method::Lwpr,
+    Method::Issgp,
+    Method::Mlp,
+]);
 /// `lin8` alone.
 pub(super) const LIN8: Scope = Scope::Methods(&[Method::Lin8]);
 /// `nnw` alone.
@@ -48,6 +56,12 @@ pub(super) const FFN: Scope = Scope::Methods(&[Method::Ffn]);
 pub(super) const KOHONEN: Scope = Scope::Methods(&[Method::Kohonen]);
 /// `lwpr` alone.
 pub(super) const LWPR: Scope = Scope::Methods(&[Method::Lwpr]);
+/// `issgp` alone.
+pub(super) const ISSGP: Scope = Scope::Methods(&[Method::Issgp]);
+/// `mlp` alone.
+pub(super) const MLP: Scope = Scope::Methods(&[Method::Mlp]);
+/// The single-model regressors of Δθ in `norm_out` units (`lwpr`, `issgp`, `mlp`).
+pub(super) const REGRESSORS: Scope = Scope::Methods(&[Method::Lwpr, Method::Issgp, Method::Mlp]);
 /// The dynamic simulator.
 pub(super) const DYNAMIC: Scope = Scope::Sim(SimKind::Dynamic);
 /// The ray-cast camera.

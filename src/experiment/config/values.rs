@@ -134,6 +134,17 @@ impl ConfigValue for [f64; 3] {
     }
 }
 
+/// Five reals `a,b,c,d,e` (one per learner input).
+impl ConfigValue for [f64; 5] {
+    const KIND: &'static str = "a,b,c,d,e";
+    fn parse_value(raw: &str) -> Result<Self, ValueError> {
+        list(raw, "five real numbers a,b,c,d,e", finite)
+    }
+    fn render(&self) -> String {
+        self.map(|v| format!("{v:?}")).join(",")
+    }
+}
+
 /// `auto`, or a link's name.
 impl ConfigValue for CameraLink {
     const KIND: &'static str = "auto or a link";

@@ -3,8 +3,9 @@
 use crate::experiment::Config;
 use crate::learn::change::{ChangeSettings, DetectorSettings};
 use crate::learn::{
-    FfnSettings, KohonenSettings, Lin5Settings, Lin8Settings, LwprSettings, MergeStrategy,
-    NestedSettings, NnwSettings, PatternSettings, PerceptronSettings, TreeSettings,
+    FfnSettings, IssgpSettings, KohonenSettings, Lin5Settings, Lin8Settings, LwprSettings,
+    MergeStrategy, MlpSettings, NestedSettings, NnwSettings, PatternSettings, PerceptronSettings,
+    TreeSettings,
 };
 
 /// `lin5`: `boundary_0` … `boundary_4`, the tree, perceptron, merge and change entries,
@@ -78,9 +79,46 @@ pub fn lwpr_settings(config: &Config) -> LwprSettings {
         add_threshold: config.add_threshold,
         norm_out: config.norm_out,
         patterns: pattern_settings(config),
-        change_detection: (config.merge_strategy == MergeStrategy::ChangeDetection)
-            .then(|| change_settings(config)),
+        change_detection: watch_settings(config),
     }
+}
+
+/// `issgp`: the `issgp_*` entries, `norm_out`, `minimal_joint_move`, `seed`, and the
+/// `change_*` entries under `merge_strategy change_detection`.
+pub fn issgp_settings(config: &Config) -> IssgpSettings {
+    IssgpSettings {
+        features: config.issgp_features,
+        length_scales: config.issgp_length_scales,
+        noise: config.issgp_noise,
+        signal: config.issgp_signal,
+        forgetting: config.issgp_forgetting,
+        norm_out: config.norm_out,
+        patterns: pattern_settings(config),
+        seed: config.seed,
+        change_detection: watch_settings(config),
+    }
+}
+
+/// `mlp`: the `mlp_*` entries, `norm_out`, `minimal_joint_move`, `seed`, and the
+/// `change_*` entries under `merge_strategy change_detection`.
+pub fn mlp_settings(config: &Config) -> MlpSettings {
+    MlpSettings {
+        hidden: config.mlp_hidden,
+        rate: config.mlp_rate,
+        batch: config.mlp_batch,
+        steps_per_trial: config.mlp_steps_per_trial,
+        buffer: config.mlp_buffer,
+        norm_out: config.norm_out,
+        patterns: pattern_settings(config),
+        seed: config.seed,
+        change_detection: watch_settings(config),
+    }
+}
+
+/// The change watch of a single-model learner: the `change_*` entries under
+/// `merge_strategy change_detection`, none otherwise.
+fn watch_settings(config: &Config) -> Option<ChangeSettings> {
+    (config.merge_strategy == MergeStrategy::ChangeDetection).then(|| change_settings(config))
 }
 
 /// Which pose pairs are learning patterns: `minimal_joint_move`.
@@ -162,6 +200,8 @@ mod tests {
         assert_eq!(ffn_settings(&config), FfnSettings::default());
         assert_eq!(kohonen_settings(&config), KohonenSettings::default());
         assert_eq!(lwpr_settings(&config), LwprSettings::default());
+        assert_eq!(issgp_settings(&config), IssgpSettings::default());
+        assert_eq!(mlp_settings(&config), MlpSettings::default());
         assert_eq!(dynamic_settings(&config), DynamicSettings::default());
     }
 }

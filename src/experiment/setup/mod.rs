@@ -9,15 +9,16 @@ pub use arm::{
     LoadedArm, BOUNDARY_MARGIN_DEG,
 };
 pub use learners::{
-    ffn_settings, input_bounds, kohonen_settings, lin5_settings, lin8_settings, lwpr_settings,
-    nnw_settings, pattern_settings,
+    ffn_settings, input_bounds, issgp_settings, kohonen_settings, lin5_settings, lin8_settings,
+    lwpr_settings, mlp_settings, nnw_settings, pattern_settings,
 };
 
 use super::{CameraKind, Config, ObstacleBox, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
 use crate::control::{CameraTiming, SensorNoise, TrialSettings};
 use crate::learn::{
-    FfnLearner, IkLearner, KohonenLearner, LearnError, Learner, Lin5, Lin8, Lwpr, Method, Nnw,
+    FfnLearner, IkLearner, Issgp, KohonenLearner, LearnError, Learner, Lin5, Lin8, Lwpr, Method,
+    Mlp, Nnw,
 };
 use crate::robot::{
     ArmModel, DynamicSettings, DynamicSim, KinematicSim, MoveSettings, Obstacle, Simulator,
@@ -123,5 +124,7 @@ pub fn build_learner(
             input_bounds(config),
         )),
         Method::Lwpr => Box::new(Lwpr::new(lwpr_settings(config), input_bounds(config))),
+        Method::Issgp => Box::new(Issgp::new(issgp_settings(config), input_bounds(config))),
+        Method::Mlp => Box::new(Mlp::new(mlp_settings(config), input_bounds(config))),
     })
 }

@@ -12,3 +12,4 @@ pub use batch::BatchLoss;
 pub use cg::{minimize, Objective};
 pub use dense::DenseNet;
 pub use scaling::InputScaling;
+pub(crate) use tanh::tanh;

@@ -36,7 +36,7 @@ const INVERSE_FACTORIALS: [f64; 12] = [
 
 /// tanh `x` within 3 ulp; odd (−0 stays −0), ±1 beyond |x| ≈ 19, NaN for NaN.
 #[inline(always)]
-pub(super) fn tanh(x: f64) -> f64 {
+pub(crate) fn tanh(x: f64) -> f64 {
     // (Written so that NaN passes through the clamp.)
     let magnitude = x.abs();
     let magnitude = if magnitude > SATURATION {

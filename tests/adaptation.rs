@@ -3,10 +3,10 @@
 //! over; change detection finds a camera turn within 50 trials, dates it, forgets and
 //! recovers; and a long run without a change raises no alarm and cuts nothing. LWPR under
 //! change detection finds a 90° camera turn, dates it, and recovers faster than by its
-//! forgetting alone.
+//! forgetting alone; so do I-SSGP and the replay MLP, faster than without the watch.
 
 use eyehand::experiment::{run, Config, RunOptions};
-use eyehand::learn::MergeStrategy;
+use eyehand::learn::{MergeStrategy, Method};
 use std::path::{Path, PathBuf};
 
 /// A lin5 run of `trials` trials with `events`, `merge_strategy` and `am_error_tresh` set;
@@ -133,10 +133,16 @@ fn change_detection_without_a_change_raises_no_alarm_and_cuts_nothing() {
     assert_eq!(rows(&folder, "merges"), Vec::<Vec<String>>::new());
 }
 
-/// An lwpr run (`configs/lwpr.conf`) of `trials` trials, seed 1, with `events` and
-/// `merge_strategy`.
-fn run_lwpr(data: &Path, trials: usize, events: &[&str], strategy: MergeStrategy) -> PathBuf {
-    let path = format!("{}/configs/lwpr.conf", env!("CARGO_MANIFEST_DIR"));
+/// A run of `method` with its shipped config (`configs/<method>.conf`) of `trials`
+/// trials, seed 1, with `events` and `merge_strategy`.
+fn run_shipped(
+    method: Method,
+    data: &Path,
+    trials: usize,
+    events: &[&str],
+    strategy: MergeStrategy,
+) -> PathBuf {
+    let path = format!("{}/configs/{method}.conf", env!("CARGO_MANIFEST_DIR"));
     let mut config = Config::from_file(Path::new(&path)).unwrap();
     config.trials = trials;
     config.seed = 1;
@@ -151,7 +157,8 @@ fn run_lwpr(data: &Path, trials: usize, events: &[&str], strategy: MergeStrategy
 #[test]
 fn lwpr_change_detection_finds_a_camera_turn_and_recovers_sooner_than_forgetting_alone() {
     let data = tempfile::tempdir().unwrap();
-    let watched = run_lwpr(
+    let watched = run_shipped(
+        Method::Lwpr,
         data.path(),
         1500,
         &["rotate:600:90"],
@@ -163,7 +170,13 @@ fn lwpr_change_detection_finds_a_camera_turn_and_recovers_sooner_than_forgetting
     let dated: usize = alarms[0][1].parse().unwrap();
     assert!((601..=650).contains(&raised), "found at trial {raised}");
     assert!(dated.abs_diff(600) <= 10, "dated to trial {dated}");
-    let forgetting = run_lwpr(data.path(), 1500, &["rotate:600:90"], MergeStrategy::Thesis);
+    let forgetting = run_shipped(
+        Method::Lwpr,
+        data.path(),
+        1500,
+        &["rotate:600:90"],
+        MergeStrategy::Thesis,
+    );
     assert!(changes(&forgetting).is_empty());
     let after = |folder: &Path| four_step_mean(folder, 800, 1100);
     assert!(
@@ -172,4 +185,44 @@ fn lwpr_change_detection_finds_a_camera_turn_and_recovers_sooner_than_forgetting
         after(&watched),
         after(&forgetting)
     );
+}
+
+/// `method` under change detection finds a 90° camera turn at trial 600 within 50 trials,
+/// dates it within 10, and its 4-step mean over trials 800–1100 is below half of the same
+/// run's without the watch.
+fn finds_a_camera_turn_and_recovers_sooner_than_without_the_watch(method: Method) {
+    let data = tempfile::tempdir().unwrap();
+    let run = |strategy| run_shipped(method, data.path(), 1500, &["rotate:600:90"], strategy);
+    let watched = run(MergeStrategy::ChangeDetection);
+    let alarms = changes(&watched);
+    assert_eq!(alarms.len(), 1, "{method}: {alarms:?}");
+    let raised: usize = alarms[0][0].parse().unwrap();
+    let dated: usize = alarms[0][1].parse().unwrap();
+    assert!(
+        (601..=650).contains(&raised),
+        "{method}: found at trial {raised}"
+    );
+    assert!(
+        dated.abs_diff(600) <= 10,
+        "{method}: dated to trial {dated}"
+    );
+    let unwatched = run(MergeStrategy::Thesis);
+    assert!(changes(&unwatched).is_empty());
+    let after = |folder: &Path| four_step_mean(folder, 800, 1100);
+    assert!(
+        after(&watched) < 0.5 * after(&unwatched),
+        "{method}, 4-step over trials 800-1100: {} mm with the watch, {} mm without",
+        after(&watched),
+        after(&unwatched)
+    );
+}
+
+#[test]
+fn issgp_change_detection_finds_a_camera_turn_and_recovers_sooner_than_without() {
+    finds_a_camera_turn_and_recovers_sooner_than_without_the_watch(Method::Issgp);
+}
+
+#[test]
+fn mlp_change_detection_finds_a_camera_turn_and_recovers_sooner_than_without() {
+    finds_a_camera_turn_and_recovers_sooner_than_without_the_watch(Method::Mlp);
 }

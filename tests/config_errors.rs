@@ -47,7 +47,7 @@ fn every_shipped_config_parses() {
             count += 1;
         }
     }
-    assert!(count >= 8, "every method's config and the study's ship");
+    assert!(count >= 10, "every method's config and the study's ship");
 }
 
 #[test]
@@ -196,6 +196,27 @@ fn bad_values_and_bad_lines_are_reported() {
             "ffn_hidden_units 100000000000",
             TooMuchMemory,
         ),
+        ("issgp_features", "issgp_features 0", OutOfRange),
+        ("issgp_features", "issgp_features -5", BadValue),
+        ("issgp_noise", "issgp_noise -0.1", OutOfRange),
+        ("issgp_noise", "issgp_noise 0", OutOfRange),
+        ("issgp_signal", "issgp_signal 0", OutOfRange),
+        ("issgp_forgetting", "issgp_forgetting 1.5", OutOfRange),
+        (
+            "issgp_length_scales",
+            "issgp_length_scales 0.5,0.5,0,0.5,0.5",
+            OutOfRange,
+        ),
+        (
+            "issgp_length_scales",
+            "issgp_length_scales 0.5,0.5",
+            BadValue,
+        ),
+        ("mlp_buffer", "mlp_buffer 0", OutOfRange),
+        ("mlp_batch", "mlp_batch 0", OutOfRange),
+        ("mlp_hidden", "mlp_hidden 0", OutOfRange),
+        ("mlp_rate", "mlp_rate -0.001", OutOfRange),
+        ("mlp_steps_per_trial", "mlp_steps_per_trial 0", OutOfRange),
         ("rotate_trial", "rotate_trial 20000", EventAfterLastTrial),
         (
             "elongate_trial",

@@ -113,3 +113,36 @@ fn lwpr_closes_in_on_the_target_within_2000_trials() {
     assert!(summary.nodes > 20, "fields were made: {}", summary.nodes);
     assert!(summary.failures < 200, "{} failures", summary.failures);
 }
+
+/// `method` (its shipped config) gets within 5 mm after four steps within 5,000 trials.
+fn learns_within_five_millimetres_after_four_steps(method: Method) -> RunSummary {
+    let summary = run_method(method, 5000, 1);
+    println!("{method}, 5000 trials: {:?} mm", summary.mean_distance_mm);
+    assert!(
+        step(&summary, 4) <= 5.0,
+        "{method}: 4-step mean {} mm",
+        step(&summary, 4)
+    );
+    assert!(
+        step(&summary, 4) < step(&summary, 1) / 3.0,
+        "{method}: feedback steps close in: {:?}",
+        summary.mean_distance_mm
+    );
+    assert!(
+        summary.failures < 300,
+        "{method}: {} failures",
+        summary.failures
+    );
+    summary
+}
+
+#[test]
+fn issgp_gets_within_five_millimetres_after_four_steps_within_5000_trials() {
+    let summary = learns_within_five_millimetres_after_four_steps(Method::Issgp);
+    assert_eq!(summary.nodes, 500, "D features");
+}
+
+#[test]
+fn mlp_gets_within_five_millimetres_after_four_steps_within_5000_trials() {
+    learns_within_five_millimetres_after_four_steps(Method::Mlp);
+}

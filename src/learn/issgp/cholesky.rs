@@ -11,7 +11,8 @@ pub(super) fn rank_one_update(factor: &mut DMatrix<f64>, x: &mut DVector<f64>) {
     for k in 0..n {
         let column = &mut l[k * n + k..(k + 1) * n];
         let (diagonal, below) = column.split_first_mut().expect("k < n");
-        let r = diagonal.hypot(x[k]);
+        // (No overflow to guard against: both are far below 1e150 here.)
+        let r = (*diagonal * *diagonal + x[k] * x[k]).sqrt();
         if r == 0.0 {
             continue;
         }

@@ -41,7 +41,8 @@ pub use model_event::{MergeKind, ModelEvent};
 pub use nnw::{Nnw, NnwSettings};
 pub use observation::{Observation, Query};
 pub use patterns::{
-    adjusted_pattern, pose_pairs, unadjusted_pattern, Pattern, Pattern5, Pattern8, PatternSettings,
+    adjusted_pattern, centred, pose_pairs, unadjusted_pattern, Pattern, Pattern5, Pattern8,
+    PatternSettings,
 };
 pub use perceptron::PerceptronSettings;
 pub use stats::{LearnerStats, LevelStats};

@@ -87,6 +87,12 @@ pub fn adjusted_pattern(from: &Observation, to: &Observation) -> Pattern5 {
     }
 }
 
+/// The adjusted input `input` (θ2, θ3, cx*, cy*, cz*) with the target centred: the same
+/// pose, no offset. The eye-hand mapping's answer there is no move.
+pub fn centred(input: &SVector<f64, 5>) -> SVector<f64, 5> {
+    SVector::<f64, 5>::new(input[0], input[1], 0.0, 0.0, 0.0)
+}
+
 /// The unadjusted (lin8) pattern of the move from `from` to `to`.
 pub fn unadjusted_pattern(from: &Observation, to: &Observation) -> Pattern8 {
     Pattern {

@@ -252,6 +252,9 @@ config_entries! {
     /// issgp: λ, the weight of everything learned is multiplied by this at each pattern (1:
     /// no forgetting; keep 1/(1 − λ) well above issgp_features).
     issgp_forgetting: f64 = 1.0, "", ISSGP, Within(0.9, 1.0);
+    /// issgp: 1: the answer is anchored at the centred target (no move when cx*, cy*, cz*
+    /// are 0); 0: the paper's plain regression.
+    issgp_anchored: usize = 0, "", ISSGP, Within(0.0, 1.0);
     /// mlp: tanh units in each of the net's two hidden layers.
     mlp_hidden: usize = 32, "", MLP, Within(1.0, 1000.0);
     /// mlp: Adam's step size.
@@ -262,6 +265,9 @@ config_entries! {
     mlp_steps_per_trial: usize = 4, "", MLP, Within(1.0, 10000.0);
     /// mlp: the replay buffer keeps this many most recent patterns.
     mlp_buffer: usize = 10000, "", MLP, Within(1.0, 1e6);
+    /// mlp: 1: the answer is anchored at the centred target (no move when cx*, cy*, cz* are
+    /// 0); 0: a plain net.
+    mlp_anchored: usize = 0, "", MLP, Within(0.0, 1.0);
     /// 0: store learning patterns in the run's pat_file; anything else: in memory.
     use_pat_file: i64 = 1, "", NESTED, Rule::Any;
     /// Memory and the per-level tree error are recorded every this many trials.

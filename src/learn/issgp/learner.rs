@@ -8,7 +8,8 @@ use super::IssgpSettings;
 use crate::learn::change::TrialMiss;
 use crate::learn::net::InputScaling;
 use crate::learn::{
-    adjusted_pattern, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation, Query,
+    adjusted_pattern, centred, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation,
+    Query,
 };
 use nalgebra::{DVector, Vector3};
 use rand::SeedableRng;
@@ -22,8 +23,9 @@ pub struct Issgp {
     scaling: InputScaling<5>,
     features: Features,
     posterior: Posterior,
-    /// The features of the input at hand.
+    /// The features of the input at hand, and (anchored) of its centred twin.
     phi: DVector<f64>,
+    phi_centred: DVector<f64>,
     watch: Option<TrialMiss>,
     /// Patterns trained so far (the watch dates a change by them).
     patterns: u64,
@@ -42,15 +44,27 @@ impl Issgp {
             scaling: InputScaling::new(bounds),
             posterior: Posterior::new(settings.features, settings.noise, settings.forgetting),
             phi: DVector::zeros(features.len()),
+            phi_centred: DVector::zeros(if settings.anchored { features.len() } else { 0 }),
             features,
             watch: settings.change_detection.as_ref().map(TrialMiss::new),
             patterns: 0,
         }
     }
 
+    /// Writes the features of raw input `x` into `phi`: φ(x), anchored φ(x) − φ(x
+    /// centred).
+    fn write_features(&mut self, x: &Input) {
+        self.features.write(&self.scaling.apply(x), &mut self.phi);
+        if self.settings.anchored {
+            let centred = self.scaling.apply(&centred(x));
+            self.features.write(&centred, &mut self.phi_centred);
+            self.phi -= &self.phi_centred;
+        }
+    }
+
     /// The answer (degrees) at raw input `x`.
     pub fn predict(&mut self, x: &Input) -> Vector3<f64> {
-        self.features.write(&self.scaling.apply(x), &mut self.phi);
+        self.write_features(x);
         self.posterior.predict(&self.phi) * self.settings.norm_out
     }
 
@@ -60,7 +74,7 @@ impl Issgp {
         if !x.iter().chain(target.iter()).all(|v| v.is_finite()) {
             return;
         }
-        self.features.write(&self.scaling.apply(x), &mut self.phi);
+        self.write_features(x);
         self.posterior
             .add(&self.phi, &(target / self.settings.norm_out));
         self.patterns += 1;

@@ -20,6 +20,10 @@ pub struct IssgpSettings {
     /// λ, the factor every learned pattern (and the prior) is weighed down by at each new
     /// pattern; 1 by default (no forgetting).
     pub forgetting: f64,
+    /// True: the answer is anchored at the centred target, g(x) − g(x with cx*, cy*, cz*
+    /// = 0), so a centred target gives no move whatever was learned (the features are the
+    /// differences); false by default (the paper's regression).
+    pub anchored: bool,
     /// Outputs Δθ are learned divided by this (degrees); 10 by default.
     pub norm_out: f64,
     /// Which pose pairs are patterns (`minimal_joint_move`).
@@ -39,6 +43,7 @@ impl Default for IssgpSettings {
             noise: 0.01,
             signal: 1.0,
             forgetting: 1.0,
+            anchored: false,
             norm_out: 10.0,
             patterns: PatternSettings::default(),
             seed: 1,

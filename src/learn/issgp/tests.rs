@@ -161,3 +161,32 @@ fn a_restart_keeps_the_answer_and_forgets_the_evidence() {
     posterior.add(&phi, &target);
     assert!((posterior.predict(&phi) - target).amax() < 0.05);
 }
+
+#[test]
+fn an_anchored_learner_never_moves_for_a_centred_target() {
+    use super::{Issgp, IssgpSettings};
+    let settings = IssgpSettings {
+        features: 50,
+        anchored: true,
+        ..IssgpSettings::default()
+    };
+    let mut learner = Issgp::new(
+        settings,
+        [
+            (-10.0, 80.0),
+            (40.0, 145.0),
+            (-512.0, 256.0),
+            (-512.0, 256.0),
+            (-150.0, 300.0),
+        ],
+    );
+    for (u, y) in data(20, 8) {
+        learner.train(&(u * 100.0), &(y * 10.0));
+    }
+    let centred = Input::new(30.0, 90.0, 0.0, 0.0, 0.0);
+    assert_eq!(learner.predict(&centred), Vector3::zeros());
+    assert_ne!(
+        learner.predict(&Input::new(30.0, 90.0, 20.0, 0.0, 0.0)),
+        Vector3::zeros()
+    );
+}

@@ -8,7 +8,8 @@ use super::MlpSettings;
 use crate::learn::change::TrialMiss;
 use crate::learn::net::InputScaling;
 use crate::learn::{
-    adjusted_pattern, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation, Query,
+    adjusted_pattern, centred, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation,
+    Query,
 };
 use nalgebra::Vector3;
 use rand::{Rng, SeedableRng};
@@ -54,7 +55,11 @@ impl Mlp {
 
     /// The answer (degrees) at raw input `x`.
     pub fn predict(&mut self, x: &Input) -> Vector3<f64> {
-        self.net.forward(&self.scaling.apply(x)) * self.settings.norm_out
+        let mut answer = self.net.forward(&self.scaling.apply(x));
+        if self.settings.anchored {
+            answer -= self.net.forward(&self.scaling.apply(&centred(x)));
+        }
+        answer * self.settings.norm_out
     }
 
     /// Keeps one pattern (raw input `x`, joint move `target` in degrees) for replay; one
@@ -72,6 +77,7 @@ impl Mlp {
         }
         self.replay.push(Sample {
             input: self.scaling.apply(x),
+            centred: self.scaling.apply(&centred(x)),
             target: target / self.settings.norm_out,
             seq: self.patterns,
         });
@@ -87,7 +93,17 @@ impl Mlp {
         self.gradient.fill(0.0);
         for _ in 0..self.settings.batch {
             let i = self.rng.random_range(0..held);
-            if let Some(s) = self.replay.get(i) {
+            let Some(s) = self.replay.get(i) else {
+                continue;
+            };
+            if self.settings.anchored {
+                self.net.accumulate_anchored_gradient(
+                    &s.input,
+                    &s.centred,
+                    &s.target,
+                    &mut self.gradient,
+                );
+            } else {
                 self.net
                     .accumulate_gradient(&s.input, &s.target, &mut self.gradient);
             }

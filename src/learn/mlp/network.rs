@@ -93,6 +93,29 @@ impl Network {
         gradient: &mut [f64],
     ) -> f64 {
         let error = self.forward(x) - target;
+        self.backward(x, &error, gradient);
+        0.5 * error.norm_squared()
+    }
+
+    /// Adds the gradient of ½‖f(x) − f(rest) − t‖² to `gradient`; returns that loss.
+    pub(super) fn accumulate_anchored_gradient(
+        &mut self,
+        x: &Input,
+        rest: &Input,
+        target: &Vector3<f64>,
+        gradient: &mut [f64],
+    ) -> f64 {
+        let at_rest = self.forward(rest);
+        let error = self.forward(x) - at_rest - target;
+        self.backward(x, &error, gradient);
+        self.forward(rest);
+        self.backward(rest, &-error, gradient);
+        0.5 * error.norm_squared()
+    }
+
+    /// Adds the gradient of `error`·f(x) to `gradient`, from the activations of the last
+    /// forward pass, which must have been at `x`.
+    fn backward(&mut self, x: &Input, error: &Vector3<f64>, gradient: &mut [f64]) {
         let hidden = self.hidden;
         let [_, (w2, _), (w3, _)] = Self::layers(&self.params, hidden);
         let (g1, rest) = gradient.split_at_mut(hidden * (INPUTS + 1));
@@ -102,7 +125,6 @@ impl Network {
         outer(g2, &self.second_delta, &self.first);
         back(w2, &self.second_delta, &self.first, &mut self.first_delta);
         outer(g1, &self.first_delta, x.as_slice());
-        0.5 * error.norm_squared()
     }
 }
 

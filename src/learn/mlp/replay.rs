@@ -9,6 +9,8 @@ use std::collections::VecDeque;
 pub(super) struct Sample {
     /// The scaled input.
     pub(super) input: Input,
+    /// The scaled input with the target centred (cx*, cy*, cz* = 0).
+    pub(super) centred: Input,
     /// The target in `norm_out` units.
     pub(super) target: Vector3<f64>,
     /// The pattern's number in the run (0 first).

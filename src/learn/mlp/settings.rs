@@ -17,6 +17,10 @@ pub struct MlpSettings {
     pub steps_per_trial: usize,
     /// The replay buffer holds this many most recent patterns; 10,000 by default.
     pub buffer: usize,
+    /// True: the answer is anchored at the centred target, f(x) − f(x with cx*, cy*, cz*
+    /// = 0), so a centred target gives no move whatever the net learned; false by default
+    /// (a plain net).
+    pub anchored: bool,
     /// Outputs Δθ are learned divided by this (degrees); 10 by default.
     pub norm_out: f64,
     /// Which pose pairs are patterns (`minimal_joint_move`).
@@ -36,6 +40,7 @@ impl Default for MlpSettings {
             batch: 32,
             steps_per_trial: 4,
             buffer: 10_000,
+            anchored: false,
             norm_out: 10.0,
             patterns: PatternSettings::default(),
             seed: 1,

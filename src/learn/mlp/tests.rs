@@ -7,31 +7,61 @@ use nalgebra::Vector3;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-#[test]
-fn the_gradient_matches_finite_differences() {
+/// The gradient of `loss` at the net's parameters by central differences.
+fn numeric_gradient(net: &Network, loss: impl Fn(&mut Network) -> f64) -> Vec<f64> {
+    let h = 1e-6;
+    (0..net.params().len())
+        .map(|i| {
+            let at = |delta: f64| {
+                let mut probe = net.clone();
+                probe.params_mut()[i] += delta;
+                loss(&mut probe)
+            };
+            (at(h) - at(-h)) / (2.0 * h)
+        })
+        .collect()
+}
+
+fn assert_close(analytic: &[f64], numeric: &[f64]) {
+    for (i, (a, n)) in analytic.iter().zip(numeric).enumerate() {
+        assert!(
+            (a - n).abs() < 1e-7 * (1.0 + n.abs()),
+            "parameter {i}: {a} against {n}"
+        );
+    }
+}
+
+/// A net with every parameter moved off its start value, an input and a target.
+fn probe() -> (Network, Input, Vector3<f64>) {
     let mut rng = ChaCha8Rng::seed_from_u64(3);
     let mut net = Network::new(6, &mut rng);
-    // Biases away from zero, so that their gradients are checked off the start value too.
     for p in net.params_mut() {
         *p += rng.random_range(-0.3..0.3);
     }
     let x = Input::from_fn(|_, _| rng.random_range(-1.0..1.0));
-    let target = Vector3::new(0.4, -1.1, 0.7);
+    (net, x, Vector3::new(0.4, -1.1, 0.7))
+}
+
+#[test]
+fn the_gradient_matches_finite_differences() {
+    let (mut net, x, target) = probe();
     let mut gradient = vec![0.0; net.params().len()];
     net.accumulate_gradient(&x, &target, &mut gradient);
-    let h = 1e-6;
-    for (i, analytic) in gradient.iter().enumerate() {
-        let loss_at = |delta: f64| {
-            let mut probe = net.clone();
-            probe.params_mut()[i] += delta;
-            0.5 * (probe.forward(&x) - target).norm_squared()
-        };
-        let numeric = (loss_at(h) - loss_at(-h)) / (2.0 * h);
-        assert!(
-            (numeric - analytic).abs() < 1e-7 * (1.0 + numeric.abs()),
-            "parameter {i}: {analytic} against {numeric}"
-        );
-    }
+    let numeric = numeric_gradient(&net, |n| 0.5 * (n.forward(&x) - target).norm_squared());
+    assert_close(&gradient, &numeric);
+}
+
+#[test]
+fn the_anchored_gradient_matches_finite_differences() {
+    let (mut net, x, target) = probe();
+    let rest = Input::new(x[0], x[1], -0.3, 0.2, 0.5);
+    let mut gradient = vec![0.0; net.params().len()];
+    net.accumulate_anchored_gradient(&x, &rest, &target, &mut gradient);
+    let numeric = numeric_gradient(&net, |n| {
+        let at_rest = n.forward(&rest);
+        0.5 * (n.forward(&x) - at_rest - target).norm_squared()
+    });
+    assert_close(&gradient, &numeric);
 }
 
 #[test]
@@ -52,6 +82,7 @@ fn adam_finds_the_minimum_of_a_quadratic() {
 fn the_buffer_keeps_the_newest_and_drops_before_a_number() {
     let sample = |seq| Sample {
         input: Input::zeros(),
+        centred: Input::zeros(),
         target: Vector3::zeros(),
         seq,
     };
@@ -62,4 +93,30 @@ fn the_buffer_keeps_the_newest_and_drops_before_a_number() {
     replay.drop_before(4);
     assert_eq!(replay.len(), 1);
     assert_eq!(replay.get(0).map(|s| s.seq), Some(4));
+}
+
+#[test]
+fn an_anchored_learner_never_moves_for_a_centred_target() {
+    use super::{Mlp, MlpSettings};
+    let settings = MlpSettings {
+        hidden: 8,
+        anchored: true,
+        ..MlpSettings::default()
+    };
+    let bounds = [
+        (-10.0, 80.0),
+        (40.0, 145.0),
+        (-512.0, 256.0),
+        (-512.0, 256.0),
+        (-150.0, 300.0),
+    ];
+    let mut learner = Mlp::new(settings, bounds);
+    assert_eq!(
+        learner.predict(&Input::new(30.0, 90.0, 0.0, 0.0, 0.0)),
+        Vector3::zeros()
+    );
+    assert_ne!(
+        learner.predict(&Input::new(30.0, 90.0, 20.0, 0.0, 0.0)),
+        Vector3::zeros()
+    );
 }

@@ -7,7 +7,8 @@
 //! `boundary_4`, each output divided by `norm_out` degrees.
 //!
 //! - The net ([`network`]): two layers of `mlp_hidden` tanh units and three linear
-//!   outputs, Glorot-initialised from the run's seed.
+//!   outputs, the hidden layers Glorot-initialised from the run's seed, the output layer
+//!   zero (the untrained net proposes no move).
 //! - Every pattern of a trial goes into a buffer of the `mlp_buffer` most recent ones
 //!   ([`replay`]); after the trial, `mlp_steps_per_trial` Adam steps ([`adam`], step size
 //!   `mlp_rate`) each on the mean squared error of `mlp_batch` patterns drawn uniformly

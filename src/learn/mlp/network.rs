@@ -30,15 +30,18 @@ pub(super) struct Network {
 type Layer<'a> = (&'a [f64], &'a [f64]);
 
 impl Network {
-    /// A net with `hidden` units per layer, weights drawn uniformly in ±√(6/(fan-in +
-    /// fan-out)) (Glorot), biases zero.
+    /// A net with `hidden` units per layer: the hidden layers' weights drawn uniformly in
+    /// ±√(6/(fan-in + fan-out)) (Glorot), the output layer's and every bias zero, so the
+    /// untrained net proposes no move (a random one would lose the target in most of the
+    /// first trials, as a learner with no data should not).
     pub(super) fn new(hidden: usize, rng: &mut impl Rng) -> Network {
         let mut params = Vec::with_capacity(Self::param_count(hidden));
-        for (inputs, outputs) in [(INPUTS, hidden), (hidden, hidden), (hidden, OUTPUTS)] {
+        for (inputs, outputs) in [(INPUTS, hidden), (hidden, hidden)] {
             let limit = (6.0 / (inputs + outputs) as f64).sqrt();
             params.extend((0..inputs * outputs).map(|_| rng.random_range(-limit..=limit)));
             params.extend(std::iter::repeat_n(0.0, outputs));
         }
+        params.resize(Self::param_count(hidden), 0.0);
         Network {
             hidden,
             params,

@@ -98,6 +98,7 @@ fn the_buffer_keeps_the_newest_and_drops_before_a_number() {
 #[test]
 fn an_anchored_learner_never_moves_for_a_centred_target() {
     use super::{Mlp, MlpSettings};
+    use crate::learn::{Learner, Observation};
     let settings = MlpSettings {
         hidden: 8,
         anchored: true,
@@ -111,10 +112,19 @@ fn an_anchored_learner_never_moves_for_a_centred_target() {
         (-150.0, 300.0),
     ];
     let mut learner = Mlp::new(settings, bounds);
-    assert_eq!(
-        learner.predict(&Input::new(30.0, 90.0, 0.0, 0.0, 0.0)),
-        Vector3::zeros()
-    );
+    let centred = Input::new(30.0, 90.0, 0.0, 0.0, 0.0);
+    assert_eq!(learner.predict(&centred), Vector3::zeros(), "untrained");
+    let pose = |theta: [f64; 3], c: [f64; 3]| Observation {
+        theta_deg: Vector3::from(theta),
+        c: Vector3::from(c),
+    };
+    let path = [
+        pose([0.0, 30.0, 90.0], [40.0, -20.0, 30.0]),
+        pose([3.0, 32.0, 87.0], [10.0, -5.0, 8.0]),
+        pose([4.0, 33.0, 86.0], [0.0, 0.0, 0.0]),
+    ];
+    learner.learn(&path).unwrap();
+    assert_eq!(learner.predict(&centred), Vector3::zeros(), "trained");
     assert_ne!(
         learner.predict(&Input::new(30.0, 90.0, 20.0, 0.0, 0.0)),
         Vector3::zeros()

@@ -8,6 +8,7 @@ use super::scope::{
     Scope, BOUNDED, DYNAMIC, FFN, KOHONEN, LIN8, LWPR, NESTED, NETS, NNW, PERCEPTRONS, RAYCAST,
     WATCHING,
 };
+use super::urdf_file::UrdfFile;
 use super::values::{CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind};
 use super::{ConfigErrorKind, Rule};
 use crate::control::ServoMode;
@@ -96,6 +97,9 @@ config_entries! {
     /// Height of the floor (world frame; −22 is the lowest target's bottom): a move stops
     /// where a link or the camera would go below it.
     floor_z: f64 = -22.0, "cm", All, Within(-1000.0, 0.0);
+    /// The arm's URDF file (a relative one is taken from the config file's folder), or
+    /// `shipped` for the OSCAR-6 built in; `--urdf` overrides it.
+    urdf: UrdfFile = UrdfFile::default(), "", All, Rule::Any;
     /// The link the camera is fixed to, the chain from the URDF's root to it the arm; `auto`:
     /// the link named camera_link, else where the chain ends (tool0, a hand, the last link).
     camera_link: CameraLink = CameraLink::Auto, "", All, Rule::Any;

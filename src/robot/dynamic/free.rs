@@ -2,6 +2,7 @@
 //! gravity) or holding the pose — to hold the simulator against another engine.
 
 use super::builder::Arm;
+use super::energy::Energy;
 use super::settings::DynamicSettings;
 use crate::robot::{ArmModel, Joints, RobotError};
 
@@ -105,6 +106,12 @@ impl FreeArm {
     /// The joint speeds (rad/s).
     pub fn speeds(&self) -> Joints {
         self.arm.speeds()
+    }
+
+    /// The arm's mechanical energy now (J): kinetic and potential, from the model's
+    /// kinematics and the simulated masses.
+    pub fn energy(&self) -> Energy {
+        self.arm.energy(&self.model, &self.joints(), &self.speeds())
     }
 
     /// The joint accelerations (rad/s²) of the arm at rest at `q` with its servos off:

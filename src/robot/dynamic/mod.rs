@@ -7,6 +7,7 @@ mod builder;
 mod colliders;
 mod contacts;
 mod convert;
+mod energy;
 mod free;
 mod gravity;
 mod inertia;
@@ -19,6 +20,7 @@ mod sim;
 
 pub(super) use colliders::parts;
 pub(super) use convert::{to_pose, to_vector};
+pub use energy::Energy;
 pub use free::{Drive, FreeArm};
 pub(super) use seen::compound;
 pub use settings::DynamicSettings;

@@ -126,8 +126,16 @@ config_entries! {
     /// Sensor noise: σ of each joint encoder's reading (0: exact).
     joint_noise_deg: f64 = 0.0, "°", All, Within(0.0, 10.0);
     /// Frames per second of a free-running camera; 0: a frame the moment each move has
-    /// settled (the study's). Needs sim dynamic when above 0.
-    camera_fps: f64 = 0.0, "frames/s", DYNAMIC, Within(0.0, 1000.0);
+    /// settled (the study's). Needs sim dynamic when above 0, but for learn_during_moves
+    /// on the kinematic simulator (frames along each move's profile).
+    camera_fps: f64 = 0.0, "frames/s", All, Within(0.0, 1000.0);
+    /// 1: the frames the camera takes during each move (at camera_fps, which must be above
+    /// 0) are poses of the trial's path too, and the learning patterns come from all of
+    /// them; 0: only the poses at which moves ended (the study's).
+    learn_during_moves: usize = 0, "", All, Within(0.0, 1.0);
+    /// With learn_during_moves: at most this many of each move's frames are learned,
+    /// evenly spread, the last the latest before the move ended.
+    move_frames_learned: usize = 4, "", All, Within(1.0, 100.0);
     /// A frame shows the world as it was this long before it is delivered (a whole number
     /// of dt steps).
     camera_latency_ms: f64 = 0.0, "ms", DYNAMIC, Within(0.0, 1000.0);

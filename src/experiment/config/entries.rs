@@ -135,7 +135,7 @@ config_entries! {
     learn_during_moves: usize = 0, "", All, Within(0.0, 1.0);
     /// With learn_during_moves: at most this many of each move's frames are learned,
     /// evenly spread, the last the latest before the move ended.
-    move_frames_learned: usize = 4, "", All, Within(1.0, 100.0);
+    move_frames_learned: usize = 1, "", All, Within(1.0, 100.0);
     /// A frame shows the world as it was this long before it is delivered (a whole number
     /// of dt steps).
     camera_latency_ms: f64 = 0.0, "ms", DYNAMIC, Within(0.0, 1000.0);

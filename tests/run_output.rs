@@ -286,4 +286,12 @@ fn failures_are_counted_by_reason_and_a_learner_without_a_tree_prints_none() {
         stdout.contains("\nmap: 16807 cells; "),
         "its own size: {stdout}"
     );
+    // --method without --config: the declared defaults, and the run says so.
+    assert_eq!(json["config_file"], "defaults", "{json}");
+    assert!(
+        stdout.contains(
+            "kohonen on the kinematic simulator (projection camera), config defaults, seed 1: "
+        ),
+        "{stdout}"
+    );
 }

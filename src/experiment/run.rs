@@ -235,6 +235,7 @@ fn drive(
         method: learner.name().to_string(),
         sim: config.sim.to_string(),
         camera: config.camera.to_string(),
+        config_file: options.config_name.clone(),
         seed: config.seed,
         trials: finished,
         wall_seconds,

@@ -174,3 +174,40 @@ fn energy_shows_the_swing_and_what_the_integration_bleeds() {
     let (_, coarse) = swing_energy("0.005", "1");
     assert!(coarse < 3.0 * fine, "{coarse} against {fine}");
 }
+
+/// `--torques`: what each joint took in the tick. Held, the shoulder carries the arm's
+/// weight (over 100 N·m at 30°, 80°); swinging free, the joints take next to nothing.
+#[test]
+fn torques_show_what_the_servos_hold_and_a_free_swing_takes_none() {
+    let last_torques = |drive: &str| {
+        let args = [
+            "--from",
+            "0,30,80,0,40,0",
+            "--duration",
+            "0.2",
+            "--dt",
+            "0.001",
+        ];
+        let mut args = args.to_vec();
+        args.extend([drive, "--no-contacts", "--torques", "--csv"]);
+        let out = simulate(&args);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+        let header = stdout.lines().next().unwrap().to_string();
+        assert!(
+            header.ends_with(",tau1_Nm,tau2_Nm,tau3_Nm,tau4_Nm,tau5_Nm,tau6_Nm"),
+            "{header}"
+        );
+        let last = stdout.lines().last().unwrap();
+        let values: Vec<f64> = last.split(',').map(|v| v.parse().unwrap()).collect();
+        values[values.len() - 6..].to_vec()
+    };
+    let held = last_torques("--hold");
+    assert!(held[1] > 100.0, "{held:?}");
+    let free = last_torques("--passive");
+    assert!(free.iter().all(|t| t.abs() < 1.0), "{free:?}");
+}

@@ -52,12 +52,18 @@ pub(super) struct SimulateArgs {
     /// far the total drifted from the start.
     #[arg(long)]
     energy: bool,
+    /// Adds the torque each joint took in the tick (tau1_Nm..tauN_Nm: the model's inverse
+    /// dynamics at the tick's start with its change of speed; servos, feed-forward,
+    /// damping and friction together; 0 at the start).
+    #[arg(long)]
+    torques: bool,
     /// Prints one JSON document: {"dt_s", "ticks": [{"t_s", "joints_deg", "speeds_deg_s"}]}
-    /// (with `--energy`, each tick's "kinetic_J", "potential_J", "total_J").
+    /// (with `--energy`, each tick's "kinetic_J", "potential_J", "total_J"; with
+    /// `--torques`, "torques_Nm").
     #[arg(long, conflicts_with = "csv")]
     json: bool,
     /// Prints CSV: t_s, q1_deg..qN_deg, v1_deg_s..vN_deg_s (then kinetic_J, potential_J,
-    /// total_J with `--energy`).
+    /// total_J with `--energy`, tau1_Nm..tauN_Nm with `--torques`).
     #[arg(long)]
     csv: bool,
     #[command(flatten)]
@@ -95,12 +101,16 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
         let deg = |x: &Joints| x.iter().map(|a| a.to_degrees()).collect::<Vec<_>>();
         let energy = args.energy.then(|| arm.energy());
         let joules = energy.map(|e| [e.kinetic, e.potential, e.total()]);
+        let torques = args.torques.then(|| arm.torques());
         if args.json {
             let mut tick = serde_json::json!({"t_s": arm.time(), "joints_deg": deg(&q), "speeds_deg_s": deg(&v)});
             if let Some([kinetic, potential, total]) = joules {
                 tick["kinetic_J"] = kinetic.into();
                 tick["potential_J"] = potential.into();
                 tick["total_J"] = total.into();
+            }
+            if let Some(torques) = &torques {
+                tick["torques_Nm"] = torques.iter().copied().collect::<Vec<f64>>().into();
             }
             write!(out, "{}{tick}", if first { "" } else { "," })
         } else {
@@ -109,6 +119,7 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
                 .chain(deg(&q))
                 .chain(deg(&v))
                 .chain(joules.into_iter().flatten())
+                .chain(torques.iter().flat_map(|t| t.iter().copied()))
                 .map(|x| format!("{x:.9}"))
                 .collect();
             writeln!(out, "{}", values.join(sep))
@@ -127,6 +138,11 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
                     .into_iter()
                     .filter(|_| args.energy)
                     .map(String::from),
+            )
+            .chain(
+                (1..=joints)
+                    .filter(|_| args.torques)
+                    .map(|i| format!("tau{i}_Nm")),
             )
             .collect::<Vec<_>>();
         format!("{}\n", names.join(if args.csv { "," } else { " " }))

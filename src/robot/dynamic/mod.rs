@@ -11,6 +11,7 @@ mod energy;
 mod free;
 mod gravity;
 mod inertia;
+mod inverse_dynamics;
 mod motors;
 mod seen;
 mod servo;

@@ -95,22 +95,6 @@ fn title_of(run_dir: &Path, info: &str, trials: usize, smooth: usize) -> String 
     )
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_title_names_the_method_the_simulator_the_seed_and_the_trials() {
-        let info = "# eyehand run\nconfig_file defaults\n\n# config\nmethod lin8  # --method\n\
-                    sim dynamic  # default\nseed 7  # --seed\n";
-        let title = title_of(Path::new("data/lin8/3"), info, 10_000, 50);
-        assert_eq!(
-            title,
-            "lin8 on the dynamic simulator, seed 7, 10000 trials: data/lin8/3 (smoothed over 50 trials)"
-        );
-    }
-}
-
 /// A panel's title, y label, points and whether its y axis is logarithmic.
 type PanelLine = (String, &'static str, Vec<(f64, f64)>, bool);
 
@@ -135,4 +119,20 @@ fn draw_panels(out: &Path, title: &str, lines: &[PanelLine], events: &[f64]) -> 
         draw_panel(area, &panel)?;
     }
     root.present().map_err(|e| e.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_title_names_the_method_the_simulator_the_seed_and_the_trials() {
+        let info = "# eyehand run\nconfig_file defaults\n\n# config\nmethod lin8  # --method\n\
+                    sim dynamic  # default\nseed 7  # --seed\n";
+        let title = title_of(Path::new("data/lin8/3"), info, 10_000, 50);
+        assert_eq!(
+            title,
+            "lin8 on the dynamic simulator, seed 7, 10000 trials: data/lin8/3 (smoothed over 50 trials)"
+        );
+    }
 }

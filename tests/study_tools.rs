@@ -102,8 +102,9 @@ fn compare_gives_the_numbers_of_separate_runs() {
     for done in 1..=4 {
         assert!(
             stderr.contains(" finished after ")
-                && stderr.contains(&format!("({done} of 4 done; log: ")),
-            "a line per finished cell: {stderr}"
+                && stderr.contains(" trials/s (")
+                && stderr.contains(&format!("({done} of 4 done, about ")),
+            "a line per finished cell with its pace: {stderr}"
         );
     }
     let stdout = text(&out.stdout);

@@ -198,7 +198,13 @@ impl<'a> GeometryReader<'a> {
                 filename: filename.to_string(),
             });
         }
-        let Some(path) = resolve_mesh(filename, self.urdf_folder, self.package_paths) else {
+        let found = resolve_mesh(filename, self.urdf_folder, self.package_paths).map_err(|_| {
+            Kind::MeshOutsidePackage {
+                link: link.to_string(),
+                filename: filename.to_string(),
+            }
+        })?;
+        let Some(path) = found else {
             if !collision {
                 self.warnings.push(DescriptionWarning::MissingVisualMesh {
                     link: link.to_string(),

@@ -3,24 +3,35 @@
 
 use std::path::{Path, PathBuf};
 
-/// A `package://` mesh that would be read from outside its search folder: a `..`, root or
-/// empty part in its name, or a file that a symbolic link puts elsewhere.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct OutsidePackage;
+/// Why a mesh's `filename` names no file that may be read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MeshPathError {
+    /// A `package://` mesh that would be read from outside its search folder: a `..`,
+    /// root or empty part in its name, or a file that a symbolic link puts elsewhere.
+    OutsidePackage,
+    /// Something is there, but not a regular file (a folder, a FIFO, a device).
+    NotAFile,
+}
 
-/// Finds the file a mesh `filename` names, or `None` when no candidate exists.
+/// Finds the file a mesh `filename` names, or `None` when nothing is at any candidate.
 ///
 /// `package://NAME/REST` is tried as `SEARCH/NAME/REST` for every search path, then as
 /// `SEARCH/REST` for a search path that is itself the package folder NAME; the file must
-/// stay inside that search folder (after resolving `..` and symbolic links).
+/// stay inside that search folder (after resolving `..` and symbolic links). The first
+/// candidate at which something is must be a regular file.
 pub fn resolve_mesh(
     filename: &str,
     urdf_folder: &Path,
     package_paths: &[PathBuf],
-) -> Result<Option<PathBuf>, OutsidePackage> {
+) -> Result<Option<PathBuf>, MeshPathError> {
+    let regular = |path: PathBuf| match path.metadata() {
+        Ok(meta) if meta.is_file() => Some(Ok(path)),
+        Ok(_) => Some(Err(MeshPathError::NotAFile)),
+        Err(_) => None,
+    };
     let Some(rest) = filename.strip_prefix("package://") else {
         let found = mesh_candidates(filename, urdf_folder, package_paths);
-        return Ok(found.into_iter().find(|path| path.is_file()));
+        return found.into_iter().find_map(regular).transpose();
     };
     let plain = |part: &str| {
         !part.is_empty()
@@ -30,10 +41,11 @@ pub fn resolve_mesh(
     };
     let (package, inside) = rest.split_once('/').unwrap_or((rest, ""));
     if !plain(package) || !plain(inside) {
-        return Err(OutsidePackage);
+        return Err(MeshPathError::OutsidePackage);
     }
     for (search, path) in package_candidates(package, inside, package_paths) {
-        if path.is_file() {
+        if let Some(found) = regular(path) {
+            let path = found?;
             let inside_search = match (path.canonicalize(), search.canonicalize()) {
                 (Ok(file), Ok(folder)) => file.starts_with(folder),
                 _ => false,
@@ -41,7 +53,7 @@ pub fn resolve_mesh(
             return if inside_search {
                 Ok(Some(path))
             } else {
-                Err(OutsidePackage)
+                Err(MeshPathError::OutsidePackage)
             };
         }
     }
@@ -146,14 +158,30 @@ mod tests {
         ] {
             assert_eq!(
                 resolve_mesh(escape, &urdf, &search),
-                Err(OutsidePackage),
+                Err(MeshPathError::OutsidePackage),
                 "{escape}"
             );
         }
         std::os::unix::fs::symlink(&secret, root.join("robots/oscar/meshes/link.stl")).unwrap();
         assert_eq!(
             resolve_mesh("package://oscar/meshes/link.stl", &urdf, &search),
-            Err(OutsidePackage)
+            Err(MeshPathError::OutsidePackage)
         );
+    }
+
+    /// A folder, or a link to a device, named like a mesh is no mesh.
+    #[test]
+    fn only_a_regular_file_is_a_mesh() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path();
+        fs::create_dir_all(root.join("folder.stl")).unwrap();
+        std::os::unix::fs::symlink("/dev/zero", root.join("zero.stl")).unwrap();
+        for name in ["folder.stl", "zero.stl"] {
+            assert_eq!(
+                resolve_mesh(name, root, &[]),
+                Err(MeshPathError::NotAFile),
+                "{name}"
+            );
+        }
     }
 }

@@ -15,6 +15,11 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::StandardNormal;
 
+/// The least a blob's area is scaled by its noise: a draw below it (σ past about 0.3 makes
+/// them common) is clamped here, keeping cz finite and within the blob's own scale (√10 the
+/// reading's distance factor at most).
+const MIN_AREA_FACTOR: f64 = 0.1;
+
 /// The stream of the run's seed the sensor noise is drawn from.
 const NOISE_STREAM: u64 = 0x006e_6f69_7365;
 
@@ -62,7 +67,7 @@ impl NoisySensors {
         }
         if area_relative > 0.0 {
             let factor = 1.0 + area_relative * self.gaussian();
-            let area = model.area_from_cz(seen.c.z) * factor.max(f64::MIN_POSITIVE);
+            let area = model.area_from_cz(seen.c.z) * factor.max(MIN_AREA_FACTOR);
             seen.c.z = model.cz_from_area(area);
         }
         seen

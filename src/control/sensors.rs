@@ -131,6 +131,33 @@ mod tests {
         }
     }
 
+    /// The largest area noise the config allows: no reading leaves the blob's own scale
+    /// (before the clamp, σ 0.45 wrote inf into a run's `abs_err`).
+    #[test]
+    fn the_noisiest_area_keeps_cz_finite_and_within_the_clamp() {
+        let model = CameraModel::default();
+        let noise = SensorNoise {
+            area_relative: 0.5,
+            ..SensorNoise::default()
+        };
+        let mut sensors = NoisySensors::new(noise, 3);
+        let exact = Observation {
+            theta_deg: Vector3::zeros(),
+            c: Vector3::new(0.0, 0.0, 20.0),
+        };
+        let top = model.cz_from_area(model.area_from_cz(20.0) * MIN_AREA_FACTOR);
+        let mut clamped = 0;
+        for _ in 0..10_000 {
+            let cz = sensors.report(exact, &model).c.z;
+            assert!(cz.is_finite() && cz <= top * (1.0 + 1e-12), "{cz}");
+            clamped += usize::from(cz >= top * (1.0 - 1e-12));
+        }
+        assert!(
+            clamped > 100,
+            "draws under a tenth of the area are common: {clamped}"
+        );
+    }
+
     #[test]
     fn exact_sensors_report_the_truth_and_draw_nothing() {
         let mut sensors = NoisySensors::new(SensorNoise::default(), 7);

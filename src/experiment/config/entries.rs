@@ -152,7 +152,7 @@ config_entries! {
     /// The link stretched at elongate_trial: 1, 2 or 3.
     elongate_link: usize = 2, "", All, Rule::Any;
     /// Signed length added to that link (negative shortens it).
-    elongate_cm: f64 = 0.0, "cm", All, Rule::Any;
+    elongate_cm: f64 = 0.0, "cm", All, Within(-1000.0, 1000.0);
     /// The tree is not split deeper than this.
     tree_depth: usize = 8, "", NESTED, Within(1.0, 12.0);
     /// A sub-box is split off when its stored patterns' error in its parent exceeds this.

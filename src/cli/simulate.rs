@@ -203,9 +203,9 @@ fn check(args: &SimulateArgs, joints: usize, dt: f64) -> Result<u64, Failure> {
         )));
     }
     let ticks = (args.duration / dt).round();
-    if !(args.duration > 0.0 && ticks <= MAX_TICKS) {
+    if !(ticks >= 1.0 && ticks <= MAX_TICKS) {
         return Err(bad_input(format!(
-            "--duration {} s must be positive and at most {MAX_TICKS} ticks of {dt} s",
+            "--duration {} s must be from one tick to {MAX_TICKS} ticks of {dt} s",
             args.duration
         )));
     }

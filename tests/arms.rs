@@ -3,7 +3,7 @@
 //! kinematic simulator, and the camera link rides with the camera. Wrong arm entries are
 //! clear errors.
 
-use eyehand::experiment::setup::load_arm;
+use eyehand::experiment::setup::{fit_reach, fitted_boundaries, load_arm};
 use eyehand::experiment::{run, Config, RunOptions};
 use eyehand::robot::description::{DescriptionOptions, RobotDescription};
 use eyehand::robot::{
@@ -364,6 +364,104 @@ fn auto_picks_the_camera_link_and_the_learned_joints_of_every_test_arm() {
         let camera = &model.links().last().unwrap().name;
         assert_eq!(camera, camera_link, "{urdf:?}");
     }
+}
+
+/// The UR-style arm with its shoulder limited to ±360° and its elbow `continuous`: the
+/// description a real UR gives.
+fn full_turn_ur_style(folder: &Path) -> std::path::PathBuf {
+    let urdf = std::fs::read_to_string(UR_STYLE.urdf()).unwrap();
+    let edits = [
+        (
+            r#"lower="-3.1416" upper="0.5""#,
+            r#"lower="-6.2832" upper="6.2832""#,
+        ),
+        (
+            r#"<joint name="elbow_joint" type="revolute">"#,
+            r#"<joint name="elbow_joint" type="continuous">"#,
+        ),
+        (
+            r#"<limit lower="-2.8" upper="3.0" effort="150""#,
+            r#"<limit effort="150""#,
+        ),
+    ];
+    let edited = edits.iter().fold(urdf, |text, (from, to)| {
+        assert!(text.contains(from), "{from} in the UR-style fixture");
+        text.replace(from, to)
+    });
+    let path = folder.join("ur_full_turn.urdf");
+    std::fs::write(&path, edited).unwrap();
+    path
+}
+
+/// Joints limited to a turn either way or not at all still fit a reach space, with the
+/// learned joints' boundaries inside one turn, and lin5 learns there.
+#[test]
+fn an_arm_with_full_turn_and_continuous_joints_fits_a_reach_space_and_learns() {
+    let folder = tempfile::tempdir().unwrap();
+    let urdf = full_turn_ur_style(folder.path());
+    let config = Config {
+        trials: 3_000,
+        ..Config::default_config()
+    };
+    let model = load_arm(&config, Some(&urdf)).unwrap().model;
+    let fit = fit_reach(&config, &model).unwrap();
+    assert!(fit.space.volume() > 0.1, "{fit:?}");
+    let boundaries = fitted_boundaries(&model, &fit.space).unwrap();
+    for (low, high) in boundaries {
+        assert!(
+            -180.0 <= low && high <= 180.0 && high - low < 180.0,
+            "{boundaries:?}"
+        );
+    }
+    let options = RunOptions {
+        urdf: Some(urdf),
+        ..RunOptions::new(config, folder.path())
+    };
+    let summary = run(&options).unwrap().summary;
+    let mean = summary.mean_distance_mm;
+    assert!(mean[3].is_some_and(|m| m <= 0.5), "4-step mean {mean:?} mm");
+    assert!(
+        summary.stopped_by_contact as f64 <= 0.01 * summary.moves as f64,
+        "{} of {} moves stopped by a contact",
+        summary.stopped_by_contact,
+        summary.moves
+    );
+}
+
+/// `configs/arms/ur_style.conf` names the arm by its `urdf` entry (relative to the file's
+/// folder): the run it gives is the run of `--urdf`, distance for distance, and `info`
+/// records the URDF either way.
+#[test]
+fn an_arm_config_file_runs_the_arm_its_urdf_entry_names() {
+    let data = tempfile::tempdir().unwrap();
+    let root = env!("CARGO_MANIFEST_DIR");
+    let conf = format!("{root}/configs/arms/ur_style.conf");
+    let urdf = UR_STYLE.urdf();
+    let runs = [
+        ("from-config", vec!["--config", conf.as_str()]),
+        ("from-flag", vec!["--urdf", urdf.to_str().unwrap()]),
+    ];
+    let mut steps = Vec::new();
+    for (folder, arm) in runs {
+        let out = data.path().join(folder);
+        let mut args = vec!["run", "--trials", "200", "--quiet", "--no-plot", "--data"];
+        args.push(out.to_str().unwrap());
+        args.extend(arm);
+        let (code, _, err) = eyehand(&args);
+        assert_eq!(code, 0, "{err}");
+        let run = out.join("lin5/0");
+        let info = std::fs::read_to_string(run.join("info")).unwrap();
+        let recorded = info.lines().find(|l| l.starts_with("urdf ")).unwrap();
+        assert!(recorded.contains("ur_style.urdf"), "{recorded}");
+        // Trial and distance; the last column is the time the run took.
+        let text = std::fs::read_to_string(run.join("1step")).unwrap();
+        let lines = text
+            .lines()
+            .map(|l| l.rsplit_once(' ').unwrap().0.to_string());
+        steps.push(lines.collect::<Vec<_>>());
+    }
+    assert!(steps[0].len() > 150, "{} trials", steps[0].len());
+    assert!(steps[0] == steps[1], "the two runs differ");
 }
 
 /// The `eyehand …` commands of docs/ARMS.md's first `sh` block, each on one line.

@@ -16,6 +16,7 @@ fn trial_loop(seed: u64) -> TrialLoop {
         epsilon: EPSILON_MM / 1000.0,
         noise: SensorNoise::default(),
         timing: Default::default(),
+        move_frames: None,
     };
     TrialLoop::new(
         Box::new(sim),

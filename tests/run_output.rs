@@ -286,4 +286,32 @@ fn failures_are_counted_by_reason_and_a_learner_without_a_tree_prints_none() {
         stdout.contains("\nmap: 16807 cells; "),
         "its own size: {stdout}"
     );
+    // --method without --config: the declared defaults, and the run says so.
+    assert_eq!(json["config_file"], "defaults", "{json}");
+    assert!(
+        stdout.contains(
+            "kohonen on the kinematic simulator (projection camera), config defaults, seed 1: "
+        ),
+        "{stdout}"
+    );
+}
+
+/// Text that cannot reach a full standard output is a failure, `--help` and `--version`
+/// included (clap's own printing used to exit 0 there).
+#[test]
+fn a_full_stdout_fails_the_command() {
+    for args in [&["--help"][..], &["--version"], &["config", "defaults"]] {
+        let full = std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_eyehand"))
+            .args(args)
+            .stdout(full)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains("writing to stdout"), "{args:?}: {stderr}");
+    }
 }

@@ -26,6 +26,7 @@ fn continuous_loop(latency: f64, noise: SensorNoise, seed: u64) -> TrialLoop {
             latency,
             servo: ServoMode::Continuous,
         },
+        move_frames: None,
     };
     TrialLoop::new(
         Box::new(sim),

@@ -7,6 +7,7 @@
 #[path = "common/slurm.rs"]
 mod slurm;
 
+use eyehand::experiment::study::shell_quote;
 use slurm::{eyehand, rows_but_speed, submit, text, without_minutes, Cluster};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -30,7 +31,8 @@ fn a_sweep_on_a_local_slurm_cluster_equals_the_same_sweep_run_here() {
         "--seeds",
         "1,2",
         "--data",
-        "data",
+        // A folder name a shell would expand or split, as a user may have one.
+        "d s/it's \"q\" $HOME `x`",
     ];
     let local = eyehand(&sweep, work.path());
     assert!(local.status.success(), "{}", text(&local.stderr));
@@ -84,7 +86,7 @@ fn a_sweep_on_a_local_slurm_cluster_equals_the_same_sweep_run_here() {
         .lines()
         .find_map(|l| l.strip_prefix("rerun them: "))
         .unwrap_or_else(|| panic!("a resubmit line in\n{stdout}"));
-    assert_eq!(line, format!("sbatch --array=2 {script}"));
+    assert_eq!(line, format!("sbatch --array=2 {}", shell_quote(&script)));
     let job = submit(&cluster, &["--array=2", &script], elsewhere.path());
     cluster.wait_for(&job);
     let again = eyehand(

@@ -102,8 +102,9 @@ fn compare_gives_the_numbers_of_separate_runs() {
     for done in 1..=4 {
         assert!(
             stderr.contains(" finished after ")
-                && stderr.contains(&format!("({done} of 4 done; log: ")),
-            "a line per finished cell: {stderr}"
+                && stderr.contains(" trials/s (")
+                && stderr.contains(&format!("({done} of 4 done, about ")),
+            "a line per finished cell with its pace: {stderr}"
         );
     }
     let stdout = text(&out.stdout);
@@ -390,8 +391,8 @@ fn the_slurm_script_runs_a_cell_from_any_folder_and_gather_lists_the_rest() {
     let body = std::fs::read_to_string(&script).unwrap();
     for line in [
         "#SBATCH --array=0-3".to_string(),
-        format!("#SBATCH --chdir={}", study.display()),
-        format!("#SBATCH --output={}/logs/%A_%a.out", study.display()),
+        format!("#SBATCH --chdir=\"{}\"", study.display()),
+        format!("#SBATCH --output=\"{}/logs/%A_%a.out\"", study.display()),
         "#SBATCH --mem=256M".into(),
         "#SBATCH --time=0:10:00".into(),
         "#SBATCH --partition=short".into(),

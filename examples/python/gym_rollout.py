@@ -21,7 +21,7 @@ def rollout(env, policy, episodes, learner=None):
             obs, reward, terminated, truncated, info = env.step(policy(obs))
             if terminated or truncated:
                 break
-        finals.append(-reward)
+        finals.append(info["distance_mm"])
         reached += terminated
         steps.append(step)
         if learner is not None:
@@ -40,7 +40,8 @@ def main():
     env = gym.make("eyehand/Reach-v0", max_move_deg=180.0)
     lin5 = eyehand.Learner("lin5")
     env.unwrapped.prelearn(lin5)
-    result = rollout(env, lin5.propose, episodes, learner=lin5)
+    policy = lambda obs: env.unwrapped.action_for(lin5.propose(obs))  # noqa: E731
+    result = rollout(env, policy, episodes, learner=lin5)
     print("| lin5, learning as it goes | {} | {:.1f} | {:.1%} | {:.2f} |".format(episodes, *result))
 
 

@@ -1,14 +1,19 @@
 """The Gymnasium environment ``eyehand/Reach-v0``: one episode is one trial of the testbed.
 
-Observation Box(5) = (cx, cy, cz, θ2, θ3), as the learners see it (pixels, the area
-measure, degrees). Action Box(3) = (Δθ1, Δθ2, Δθ3) in degrees, each within ±``max_move_deg``
-(default 5°, a move that keeps the object in view from most starts; a number or one per
-joint); actions are clipped to it. Reward: minus the distance
-(mm) from the camera to the target after the move. ``terminated`` once the camera is within
-ε after at least ``min_feedback_steps`` steps; ``truncated`` after ``feedback_steps`` steps or
-when the object leaves the image (the observation then repeats the last one seen). ``info``:
-``distance_mm``, ``joints_deg`` (θ1, θ2, θ3), ``seen`` and ``end`` (None, "reached",
-"steps_used" or "lost").
+Observation Box(5, float32) = (cx, cy, cz, θ2, θ3), as the learners see it (pixels, the area
+measure, degrees); cz is bounded at ``CZ_HIGH`` (the object 20 standoffs, 4 m, away: farther
+than any arm here reaches) and clipped there. Action Box(3, float32) in [−1, 1]: the move
+(Δθ1, Δθ2, Δθ3) as a share of ``max_move_deg`` (default 8° per joint: the smallest whole
+degree at which the model-based ``ik`` policy reaches all of 300 seeded targets within the
+ten steps; at 5°, 97%; a number or one per joint);
+actions are clipped to [−1, 1] and ``action_for(move_deg)`` gives the action of a move in
+degrees (scaled down as a whole to the bound). Reward: minus the distance (mm) from the camera to the target after the move; when
+the move loses the object, minus ``feedback_steps`` × ``WORST_DISTANCE_MM`` instead (worse
+than any whole episode that keeps the object in view, so losing it never pays).
+``terminated`` once the camera is within ε after at least ``min_feedback_steps`` steps;
+``truncated`` after ``feedback_steps`` steps or when the object leaves the image (the
+observation then repeats the last one seen). ``info``: ``distance_mm``, ``joints_deg`` (θ1,
+θ2, θ3), ``seen`` and ``end`` (None, "reached", "steps_used" or "lost").
 
 ``reset(seed=…)`` restarts the draws of targets and starts from the seed; ``reset(options=
 {"sim": …, "camera": …, "events": […]})`` builds a fresh testbed with that simulator, camera
@@ -21,6 +26,14 @@ import numpy as np
 from gymnasium import spaces
 
 from ._eyehand import Testbed, parse_event
+
+#: The move bound's default (degrees per joint and step).
+MAX_MOVE_DEG = 8.0
+#: The observation's bound on cz: the object 20 standoffs away (cz = 100·(depth/standoff − 1)).
+CZ_HIGH = 1900.0
+#: The farthest the camera can be from the target while it sees the object (mm): the
+#: object at ``CZ_HIGH``'s 4 m, the target a standoff above it.
+WORST_DISTANCE_MM = 4200.0
 
 
 class ReachEnv(gym.Env):
@@ -35,7 +48,7 @@ class ReachEnv(gym.Env):
         camera="projection",
         urdf=None,
         events=(),
-        max_move_deg=5.0,
+        max_move_deg=MAX_MOVE_DEG,
         seed=1,
         **entries,
     ):
@@ -50,10 +63,14 @@ class ReachEnv(gym.Env):
         move = np.broadcast_to(np.asarray(max_move_deg, dtype=np.float64), (3,)).copy()
         if not np.all(np.isfinite(move) & (move > 0)):
             raise ValueError(f"max_move_deg must be positive and finite, not {max_move_deg}")
-        self.action_space = spaces.Box(-move, move, dtype=np.float64)
+        self.max_move_deg = move
+        self.action_space = spaces.Box(-1.0, 1.0, shape=(3,), dtype=np.float32)
         low = np.concatenate([reading[:, 0], limits[1:, 0]])
         high = np.concatenate([reading[:, 1], limits[1:, 1]])
-        self.observation_space = spaces.Box(low, high, dtype=np.float64)
+        high[2] = min(high[2], CZ_HIGH)
+        self.observation_space = spaces.Box(
+            low.astype(np.float32), high.astype(np.float32), dtype=np.float32
+        )
 
     def _rebuild(self, sim, camera, events):
         build = self._build
@@ -82,16 +99,32 @@ class ReachEnv(gym.Env):
                 else:
                     self.testbed.stretch_link(link, amount)
         obs = self.testbed.reset(seed=seed)
-        return obs, self._info(seen=True)
+        return self._observation(obs), self._info(seen=True)
+
+    def action_for(self, move_deg):
+        """The action (in [−1, 1], float32) of the move ``move_deg`` (Δθ1, Δθ2, Δθ3 in
+        degrees), scaled down as a whole where it passes the move bound (its direction
+        kept): to use a learner's answer as the policy."""
+        share = np.asarray(move_deg, dtype=np.float64) / self.max_move_deg
+        largest = np.max(np.abs(share))
+        if largest > 1.0:
+            share = share / largest
+        return share.astype(np.float32)
 
     def step(self, action):
-        move = np.clip(np.asarray(action, dtype=np.float64), self.action_space.low, self.action_space.high)
-        _reading, joints, distance, seen = self.testbed.step(move)
+        share = np.clip(np.asarray(action, dtype=np.float64), -1.0, 1.0)
+        _reading, joints, distance, seen = self.testbed.step(share * self.max_move_deg)
         end = self.testbed.end
         info = {"distance_mm": distance, "joints_deg": joints, "seen": seen, "end": end}
         terminated = end == "reached"
         truncated = end in ("steps_used", "lost")
-        return self.testbed.observation, -distance, terminated, truncated, info
+        reward = -self.testbed.feedback_steps * WORST_DISTANCE_MM if end == "lost" else -distance
+        return self._observation(self.testbed.observation), float(reward), terminated, truncated, info
+
+    def _observation(self, obs):
+        """``obs`` as the observation space holds it: float32, cz clipped at ``CZ_HIGH``."""
+        space = self.observation_space
+        return np.clip(np.asarray(obs, dtype=np.float64), space.low, space.high).astype(np.float32)
 
     def _info(self, seen):
         path = self.testbed.path

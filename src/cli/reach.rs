@@ -8,10 +8,11 @@ use crate::experiment::setup::{
     fit_reach, fitted_boundaries, learned_ranges, load_arm, reach_space, BOUNDARY_MARGIN_DEG,
 };
 use crate::experiment::{
-    contact_stopped_moves, fit_reach_space_to_arm, reachable_points, Config, PreflightError,
-    ReachSetting, RunRequest, Sources, REACH_SAMPLES,
+    contact_stopped_moves, fit_reach_space_to_arm, reachable_points, target_poses_in_contact,
+    Config, PreflightError, ReachSetting, RunRequest, Sources, REACH_SAMPLES,
 };
-use crate::robot::{ArmModel, Wrist};
+use crate::robot::{ArmModel, Wrist, CONTACT_MARGIN};
+use crate::units::M_PER_CM;
 use std::fmt::Write;
 use std::path::PathBuf;
 
@@ -58,7 +59,8 @@ impl ArmConfigArgs {
 
 pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
     let (mut config, mut sources) = args.arm.sourced_config()?;
-    if args.urdf.is_some() {
+    let own_arm = args.urdf.is_some() || config.urdf.path().is_some();
+    if own_arm {
         fit_reach_space_to_arm(&mut config, &mut sources);
     }
     let model = warned(load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?);
@@ -101,6 +103,13 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
         "covered              {:.1}% of {REACH_SAMPLES} points sampled in the reach space are reached looking down",
         100.0 * reachable as f64 / REACH_SAMPLES as f64
     );
+    let (solved, touching) = target_poses_in_contact(&config, &model, &space, REACH_SAMPLES);
+    let _ = writeln!(
+        report,
+        "target contact       {touching} of the {solved} reached points put a link within {:.0} cm of the floor or of another link ({:.1}%)",
+        CONTACT_MARGIN / M_PER_CM,
+        100.0 * touching as f64 / solved.max(1) as f64
+    );
     let (made, stopped) = contact_stopped_moves(&config, &model, &space, CONTACT_MOVES);
     let _ = writeln!(
         report,
@@ -112,7 +121,7 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
         let _ = writeln!(
             report,
             "learned θ2, θ3       {low2:.1}..{high2:.1}°, {low3:.1}..{high3:.1}° over the reach space (boundary_0, boundary_1 with {BOUNDARY_MARGIN_DEG}° to spare: {b0} {b1}, {b2} {b3}; {})",
-            if args.urdf.is_some() { "a run of this arm takes them unless the config gives its own" } else { "the OSCAR-6's config gives its own" }
+            if own_arm { "a run of this arm takes them unless the config gives its own" } else { "the OSCAR-6's config gives its own" }
         );
     }
     match prelearning_moves(&model, &CameraModel::default(), &space) {

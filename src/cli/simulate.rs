@@ -47,10 +47,23 @@ pub(super) struct SimulateArgs {
     /// `floor_z` default) and each other.
     #[arg(long)]
     no_contacts: bool,
-    /// Prints one JSON document: {"dt_s", "ticks": [{"t_s", "joints_deg", "speeds_deg_s"}]}.
+    /// Adds the arm's energy to every tick (kinetic_J, potential_J, total_J: from the
+    /// model's kinematics and masses, the potential zero at z = 0) and says on stderr how
+    /// far the total drifted from the start.
+    #[arg(long)]
+    energy: bool,
+    /// Adds the torque each joint took in the tick (tau1_Nm..tauN_Nm: the model's inverse
+    /// dynamics at the tick's start with its change of speed; servos, feed-forward,
+    /// damping and friction together; 0 at the start).
+    #[arg(long)]
+    torques: bool,
+    /// Prints one JSON document: {"dt_s", "ticks": [{"t_s", "joints_deg", "speeds_deg_s"}]}
+    /// (with `--energy`, each tick's "kinetic_J", "potential_J", "total_J"; with
+    /// `--torques`, "torques_Nm").
     #[arg(long, conflicts_with = "csv")]
     json: bool,
-    /// Prints CSV: t_s, q1_deg..qN_deg, v1_deg_s..vN_deg_s.
+    /// Prints CSV: t_s, q1_deg..qN_deg, v1_deg_s..vN_deg_s (then kinetic_J, potential_J,
+    /// total_J with `--energy`, tau1_Nm..tauN_Nm with `--torques`).
     #[arg(long)]
     csv: bool,
     #[command(flatten)]
@@ -86,14 +99,27 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
     let write = |out: &mut dyn Write, arm: &FreeArm, first: bool| {
         let (q, v) = (arm.joints(), arm.speeds());
         let deg = |x: &Joints| x.iter().map(|a| a.to_degrees()).collect::<Vec<_>>();
+        let energy = args.energy.then(|| arm.energy());
+        let joules = energy.map(|e| [e.kinetic, e.potential, e.total()]);
+        let torques = args.torques.then(|| arm.torques());
         if args.json {
-            let tick = serde_json::json!({"t_s": arm.time(), "joints_deg": deg(&q), "speeds_deg_s": deg(&v)});
+            let mut tick = serde_json::json!({"t_s": arm.time(), "joints_deg": deg(&q), "speeds_deg_s": deg(&v)});
+            if let Some([kinetic, potential, total]) = joules {
+                tick["kinetic_J"] = kinetic.into();
+                tick["potential_J"] = potential.into();
+                tick["total_J"] = total.into();
+            }
+            if let Some(torques) = &torques {
+                tick["torques_Nm"] = torques.iter().copied().collect::<Vec<f64>>().into();
+            }
             write!(out, "{}{tick}", if first { "" } else { "," })
         } else {
             let sep = if args.csv { "," } else { " " };
             let values: Vec<String> = std::iter::once(arm.time())
                 .chain(deg(&q))
                 .chain(deg(&v))
+                .chain(joules.into_iter().flatten())
+                .chain(torques.iter().flat_map(|t| t.iter().copied()))
                 .map(|x| format!("{x:.9}"))
                 .collect();
             writeln!(out, "{}", values.join(sep))
@@ -107,24 +133,59 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
             .map(String::from)
             .chain((1..=joints).map(|i| format!("q{i}_deg")))
             .chain((1..=joints).map(|i| format!("v{i}_deg_s")))
+            .chain(
+                ["kinetic_J", "potential_J", "total_J"]
+                    .into_iter()
+                    .filter(|_| args.energy)
+                    .map(String::from),
+            )
+            .chain(
+                (1..=joints)
+                    .filter(|_| args.torques)
+                    .map(|i| format!("tau{i}_Nm")),
+            )
             .collect::<Vec<_>>();
         format!("{}\n", names.join(if args.csv { "," } else { " " }))
     };
+    let start_energy = arm.energy().total();
+    let mut peak_kinetic = 0.0f64;
     let printed = (|| {
         write!(out, "{header}")?;
         write(&mut out, &arm, true)?;
         for _ in 0..ticks {
             arm.step();
             write(&mut out, &arm, false)?;
+            if args.energy {
+                peak_kinetic = peak_kinetic.max(arm.energy().kinetic);
+            }
         }
         if args.json {
             writeln!(out, "]}}")?;
         }
         out.flush()
     })();
-    printed.map_err(|e| failed(format!("cannot write the ticks: {e}")))
+    printed.map_err(|e| failed(format!("cannot write the ticks: {e}")))?;
+    if args.energy {
+        let drift = arm.energy().total() - start_energy;
+        eprintln!("{}", energy_drift_line(drift, peak_kinetic, arm.time()));
+    }
+    Ok(())
 }
 
+/// How far the total energy drifted (J) over a run of `seconds` in which the kinetic
+/// energy reached at most `peak_kinetic` (J): the drift's measure, the potential energy
+/// having no natural zero.
+fn energy_drift_line(drift: f64, peak_kinetic: f64, seconds: f64) -> String {
+    let share = if peak_kinetic > 0.0 {
+        format!("{:+.3}%", 100.0 * drift / peak_kinetic)
+    } else {
+        "-".to_string()
+    };
+    format!(
+        "energy: the total drifted {drift:+.6} J in {seconds} s ({share} of the largest \
+         kinetic energy, {peak_kinetic:.6} J)"
+    )
+}
 /// Checks the numbers before any work, for an arm of `joints` joints stepped by `dt`: the
 /// ticks to run.
 fn check(args: &SimulateArgs, joints: usize, dt: f64) -> Result<u64, Failure> {
@@ -142,9 +203,9 @@ fn check(args: &SimulateArgs, joints: usize, dt: f64) -> Result<u64, Failure> {
         )));
     }
     let ticks = (args.duration / dt).round();
-    if !(args.duration > 0.0 && ticks <= MAX_TICKS) {
+    if !(ticks >= 1.0 && ticks <= MAX_TICKS) {
         return Err(bad_input(format!(
-            "--duration {} s must be positive and at most {MAX_TICKS} ticks of {dt} s",
+            "--duration {} s must be from one tick to {MAX_TICKS} ticks of {dt} s",
             args.duration
         )));
     }

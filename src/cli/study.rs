@@ -4,9 +4,9 @@
 
 use super::{bad_input, failed, say, Failure};
 use crate::experiment::study::{
-    compare_plan, gather, parse_seeds, run_cell, run_locally, sweep_plan, write_slurm_script,
-    CellLauncher, CellRunError, CompareRequest, LocalRunEnd, Setting, SlurmOptions, StudyError,
-    StudyFolder, StudyKind, StudyPlan,
+    check_slurm_folder, compare_plan, gather, parse_seeds, run_cell, run_locally, shell_quote,
+    sweep_plan, write_slurm_script, CellLauncher, CellRunError, CompareRequest, LocalRunEnd,
+    Setting, SlurmOptions, StudyError, StudyFolder, StudyKind, StudyPlan,
 };
 use crate::experiment::{Event, RunError, StopRequest};
 use crate::learn::Method;
@@ -192,6 +192,10 @@ fn carry_out(plan: StudyPlan, data: &std::path::Path, slurm: SlurmArgs) -> Resul
         extra: slurm.slurm_extra,
     };
     options.check().map_err(study_failure)?;
+    if slurm.slurm {
+        let data = std::path::absolute(data).map_err(bad_input)?;
+        check_slurm_folder(&data).map_err(study_failure)?;
+    }
     let binary = match slurm.slurm_binary {
         Some(path) => std::path::absolute(&path).map_err(bad_input)?,
         None => this_program()?,
@@ -207,10 +211,12 @@ fn carry_out(plan: StudyPlan, data: &std::path::Path, slurm: SlurmArgs) -> Resul
     let script =
         write_slurm_script(&folder, &plan, &configs, &launcher, &options).map_err(study_failure)?;
     if slurm.slurm {
-        let script = script.display();
-        let dir = folder.0.display();
+        // Quoted for a shell: the lines are meant to be pasted.
+        let quoted = shell_quote(&script.display().to_string());
+        let dir = shell_quote(&folder.0.display().to_string());
         say(&format!(
-            "{script}\nsubmit: sbatch {script}\ngather: eyehand {} gather {dir}\n",
+            "{}\nsubmit: sbatch {quoted}\ngather: eyehand {} gather {dir}\n",
+            script.display(),
             kind.name()
         ))?;
         return Ok(());

@@ -62,6 +62,9 @@ impl TrialLoop {
             return self.run_to_delivery(clock, object);
         }
         let report = self.sim.execute(delta);
+        if let Some(frames) = self.settings().move_frames {
+            self.learn_frames_of_move(&frames, report.duration, object);
+        }
         self.frames.now += (report.duration / clock.seconds(1)).round() as u64;
         let taken = clock.next_capture(self.frames.now);
         self.hold_until(taken);

@@ -92,6 +92,7 @@ mod tests {
             epsilon: 0.001,
             noise: Default::default(),
             timing: Default::default(),
+            move_frames: None,
         };
         TrialLoop::new(
             Box::new(sim),

@@ -4,6 +4,7 @@
 
 mod clocked;
 mod feedback;
+mod move_frames;
 mod prelearn;
 mod sensors;
 mod timing;
@@ -11,6 +12,7 @@ mod trial;
 mod world_scene;
 
 pub use feedback::{StepError, StepReport, TrialEnd};
+pub use move_frames::MoveFrames;
 pub use prelearn::{prelearning_moves, PrelearnMove};
 pub use sensors::SensorNoise;
 pub use timing::{CameraTiming, ServoMode};

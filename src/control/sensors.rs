@@ -15,6 +15,11 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::StandardNormal;
 
+/// The least a blob's area is scaled by its noise: a draw below it (σ past about 0.3 makes
+/// them common) is clamped here, keeping cz finite and within the blob's own scale (√10 the
+/// reading's distance factor at most).
+const MIN_AREA_FACTOR: f64 = 0.1;
+
 /// The stream of the run's seed the sensor noise is drawn from.
 const NOISE_STREAM: u64 = 0x006e_6f69_7365;
 
@@ -62,7 +67,7 @@ impl NoisySensors {
         }
         if area_relative > 0.0 {
             let factor = 1.0 + area_relative * self.gaussian();
-            let area = model.area_from_cz(seen.c.z) * factor.max(f64::MIN_POSITIVE);
+            let area = model.area_from_cz(seen.c.z) * factor.max(MIN_AREA_FACTOR);
             seen.c.z = model.cz_from_area(area);
         }
         seen
@@ -124,6 +129,33 @@ mod tests {
                 "{name}: mean {mean}"
             );
         }
+    }
+
+    /// The largest area noise the config allows: no reading leaves the blob's own scale
+    /// (before the clamp, σ 0.45 wrote inf into a run's `abs_err`).
+    #[test]
+    fn the_noisiest_area_keeps_cz_finite_and_within_the_clamp() {
+        let model = CameraModel::default();
+        let noise = SensorNoise {
+            area_relative: 0.5,
+            ..SensorNoise::default()
+        };
+        let mut sensors = NoisySensors::new(noise, 3);
+        let exact = Observation {
+            theta_deg: Vector3::zeros(),
+            c: Vector3::new(0.0, 0.0, 20.0),
+        };
+        let top = model.cz_from_area(model.area_from_cz(20.0) * MIN_AREA_FACTOR);
+        let mut clamped = 0;
+        for _ in 0..10_000 {
+            let cz = sensors.report(exact, &model).c.z;
+            assert!(cz.is_finite() && cz <= top * (1.0 + 1e-12), "{cz}");
+            clamped += usize::from(cz >= top * (1.0 - 1e-12));
+        }
+        assert!(
+            clamped > 100,
+            "draws under a tenth of the area are common: {clamped}"
+        );
     }
 
     #[test]

@@ -5,6 +5,7 @@
 
 use super::clocked::FrameQueue;
 use super::feedback::{ActiveTrial, StepError, StepReport, TrialEnd};
+use super::move_frames::MoveFrames;
 use super::sensors::{NoisySensors, SensorNoise};
 use super::timing::{CameraTiming, FrameClock};
 use crate::camera::{Camera, NotSeen};
@@ -34,6 +35,9 @@ pub struct TrialSettings {
     pub noise: SensorNoise,
     /// When the camera delivers frames, and whether the arm settles between them.
     pub timing: CameraTiming,
+    /// The frames taken during moves that are learned too (`None`: only the poses at
+    /// which moves ended, the study's; see [`MoveFrames`]).
+    pub move_frames: Option<MoveFrames>,
 }
 
 /// Why a trial could not be completed; counted, never fatal.
@@ -71,12 +75,15 @@ pub(super) type Sight = Result<Observation, (NotSeen, Vector3<f64>)>;
 #[derive(Debug)]
 pub struct TrialLoop {
     pub(super) sim: Box<dyn Simulator>,
-    camera: Box<dyn Camera>,
+    pub(super) camera: Box<dyn Camera>,
     reach: ReachSpace,
     settings: TrialSettings,
     rng: ChaCha8Rng,
-    sensors: NoisySensors,
+    pub(super) sensors: NoisySensors,
     pub(super) path: Vec<Observation>,
+    /// The path with the frames learned during moves between its poses, when they are
+    /// (`settings.move_frames`).
+    pub(super) learning_path: Vec<Observation>,
     active: Option<ActiveTrial>,
     /// The camera's clock; `None` for the study's timing or a simulator without a clock.
     clock: Option<FrameClock>,
@@ -94,6 +101,8 @@ impl TrialLoop {
         seed: u64,
     ) -> TrialLoop {
         let clock = FrameClock::new(&settings.timing, sim.tick_seconds());
+        let mut sim = sim;
+        sim.keep_move_poses(settings.move_frames.is_some());
         TrialLoop {
             sim,
             camera,
@@ -102,6 +111,7 @@ impl TrialLoop {
             rng: ChaCha8Rng::seed_from_u64(seed),
             sensors: NoisySensors::new(settings.noise, seed),
             path: Vec::with_capacity(settings.feedback_steps + 1),
+            learning_path: Vec::new(),
             active: None,
             clock,
             frames: FrameQueue::default(),
@@ -187,9 +197,11 @@ impl TrialLoop {
     pub fn begin_trial(&mut self) -> Result<Observation, Failure> {
         self.active = None;
         self.path.clear();
+        self.learning_path.clear();
         let object = self.draw_target()?;
         let start = self.draw_start(&object)?;
         self.path.push(start);
+        self.learning_path.push(start);
         if let Some(clock) = self.clock {
             self.start_clock(&clock, &object);
         }
@@ -226,6 +238,9 @@ impl TrialLoop {
             }
             None => {
                 let duration = self.sim.execute(&delta).duration;
+                if let Some(frames) = self.settings.move_frames {
+                    self.learn_frames_of_move(&frames, duration, &trial.object);
+                }
                 (self.look(&trial.object), trial.seconds + duration)
             }
         };
@@ -233,6 +248,7 @@ impl TrialLoop {
         let (theta_deg, reading) = match sight {
             Ok(seen) => {
                 self.path.push(seen);
+                self.learning_path.push(seen);
                 (seen.theta_deg, Ok(seen.c))
             }
             Err((not_seen, exact)) => (exact, Err(not_seen)),
@@ -265,10 +281,12 @@ impl TrialLoop {
         })
     }
 
-    /// Finishes the trial begun last, over or not: `learner` learns from its poses. Does
-    /// nothing when no trial was begun since the last finish (or the draw failed).
+    /// Finishes the trial begun last, over or not: `learner` learns from its poses (and the
+    /// frames learned during its moves, when they are). Does nothing when no trial was
+    /// begun since the last finish (or the draw failed).
     pub fn finish_trial(&mut self, learner: &mut dyn Learner) -> Result<(), LearnError> {
         match self.active.take() {
+            Some(_) if self.settings.move_frames.is_some() => learner.learn(&self.learning_path),
             Some(_) => learner.learn(&self.path),
             None => Ok(()),
         }

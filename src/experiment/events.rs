@@ -94,6 +94,11 @@ impl fmt::Display for Event {
     }
 }
 
+/// The largest camera turn an event may make (degrees), as `rotate_degrees` allows.
+const MAX_TURN_DEG: f64 = 360.0;
+/// The largest change of a link's length an event may make (cm), as `elongate_cm` allows.
+const MAX_STRETCH_CM: f64 = 1000.0;
+
 impl FromStr for Event {
     type Err = EventError;
 
@@ -107,14 +112,17 @@ impl FromStr for Event {
             Ok(t) if t >= 1 => Ok(t),
             _ => Err(fail("TRIAL must be an integer ≥ 1")),
         };
-        let real = |s: &str, what: &str| match s.parse::<f64>() {
-            Ok(v) if v.is_finite() => Ok(v),
-            _ => Err(fail(&format!("{what} must be a finite number"))),
+        // The bounds of the config's rotate_degrees and elongate_cm.
+        let real = |s: &str, what: &str, bound: f64| match s.parse::<f64>() {
+            Ok(v) if v.abs() <= bound => Ok(v),
+            _ => Err(fail(&format!(
+                "{what} must be a number from -{bound} to {bound}"
+            ))),
         };
         match parts.as_slice() {
             ["rotate", t, deg] => Ok(Event::Rotate {
                 trial: trial(t)?,
-                degrees: real(deg, "DEG")?,
+                degrees: real(deg, "DEG", MAX_TURN_DEG)?,
             }),
             ["elongate", t, link, cm] => {
                 let link = match link.parse::<usize>() {
@@ -124,7 +132,7 @@ impl FromStr for Event {
                 Ok(Event::Elongate {
                     trial: trial(t)?,
                     link,
-                    cm: real(cm, "CM")?,
+                    cm: real(cm, "CM", MAX_STRETCH_CM)?,
                 })
             }
             _ => Err(fail("unknown form")),

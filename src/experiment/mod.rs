@@ -27,7 +27,7 @@ pub(crate) use config::shown;
 pub use config::{
     declarations, defaults_text, docs_table, unused_entries, CameraKind, Config, ConfigError,
     ConfigErrorKind, Declaration, ObstacleBox, PackagePaths, ReachSetting, Rule, Scope, SimKind,
-    Source, Sources, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES, REPEATED_ENTRY_NAMES,
+    Source, Sources, UrdfFile, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES, REPEATED_ENTRY_NAMES,
 };
 pub use events::{Event, EventError};
 pub use failures::FailureTally;
@@ -35,8 +35,8 @@ pub use interrupt::StopRequest;
 pub use memory::{peak_rss_kb, resident_kb};
 pub use output::DataFiles;
 pub use preflight::{
-    contact_stopped_moves, preflight, reachable_points, PreflightError, MIN_REACHABLE_SHARE,
-    REACH_SAMPLES,
+    contact_stopped_moves, preflight, reachable_points, target_poses_in_contact, PreflightError,
+    MIN_REACHABLE_SHARE, REACH_SAMPLES,
 };
 pub use run::{run, run_learner, RunError, RunOptions, RunResult};
 pub use run_folder::{allocate_run_folder, fresh_run_folder, RunFolderError, RUN_IDS};

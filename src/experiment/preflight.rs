@@ -4,7 +4,8 @@
 
 use super::setup::{build_simulator, reach_space};
 use super::{Config, ConfigErrorKind, Event, SimKind};
-use crate::robot::{ArmModel, ReachFitFailure, ReachSpace, RobotError};
+use crate::robot::{ArmModel, ContactRule, ReachFitFailure, ReachSpace, RobotError};
+use crate::units::M_PER_CM;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
@@ -95,6 +96,29 @@ pub fn reachable_points(model: &ArmModel, reach: &ReachSpace, samples: usize) ->
         .count()
 }
 
+/// Reach-space points (of `samples` drawn with a fixed seed, as [`reachable_points`]
+/// draws them) that `model` reaches looking down, and how many of those poses bring a link
+/// within [`CONTACT_MARGIN`](crate::robot::CONTACT_MARGIN) of the config's floor or of
+/// another link.
+pub fn target_poses_in_contact(
+    config: &Config,
+    model: &ArmModel,
+    reach: &ReachSpace,
+    samples: usize,
+) -> (usize, usize) {
+    let rule = ContactRule::new(model, config.floor_z * M_PER_CM);
+    let mut rng = ChaCha8Rng::seed_from_u64(REACH_SEED);
+    let (mut reached, mut touching) = (0, 0);
+    for _ in 0..samples {
+        let point = reach.sample(&mut rng);
+        if let Ok(theta) = model.solve_camera_position(&point) {
+            reached += 1;
+            touching += usize::from(rule.touch(model, &model.pose_of(&theta)).is_some());
+        }
+    }
+    (reached, touching)
+}
+
 /// Checks `config`, `events` (sorted by trial) and the arm before a run starts, and
 /// returns the run's reach space (given, or fitted to the arm).
 pub fn preflight(
@@ -117,7 +141,7 @@ pub fn preflight(
     for event in events {
         if let Event::Elongate { link, cm, .. } = *event {
             changed
-                .stretch_link(link, cm * crate::units::M_PER_CM)
+                .stretch_link(link, cm * M_PER_CM)
                 .map_err(|source| PreflightError::Event {
                     event: *event,
                     source,

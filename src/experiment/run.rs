@@ -235,6 +235,7 @@ fn drive(
         method: learner.name().to_string(),
         sim: config.sim.to_string(),
         camera: config.camera.to_string(),
+        config_file: options.config_name.clone(),
         seed: config.seed,
         trials: finished,
         wall_seconds,
@@ -332,9 +333,10 @@ fn write_info_header(folder: &Path, options: &RunOptions, setup: &RunSetup) -> i
     writeln!(info, "# eyehand {} run", env!("CARGO_PKG_VERSION"))?;
     writeln!(info, "host {}", host_name())?;
     writeln!(info, "config_file {}", options.config_name)?;
-    let urdf = options
+    let urdf = setup
+        .config
         .urdf
-        .as_ref()
+        .path()
         .map_or(crate::robot::DEFAULT_URDF_NAME.to_string(), |p| {
             p.display().to_string()
         });

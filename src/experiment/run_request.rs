@@ -272,8 +272,14 @@ mod tests {
     #[test]
     fn an_override_that_changes_nothing_gives_the_same_config_for_every_shipped_config() {
         let configs = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs");
-        for entry in std::fs::read_dir(configs).unwrap() {
-            let path = entry.unwrap().path();
+        let files = |folder: &Path| {
+            let entries = std::fs::read_dir(folder).unwrap();
+            let paths = entries.map(|entry| entry.unwrap().path());
+            paths.filter(|path| path.is_file()).collect::<Vec<_>>()
+        };
+        let arms = files(&configs.join("arms"));
+        assert_eq!(arms.len(), 2, "{arms:?}");
+        for path in files(&configs).into_iter().chain(arms) {
             let base = Config::from_file(&path).unwrap();
             let same = RunRequest {
                 config: Some(path.clone()),

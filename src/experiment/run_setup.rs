@@ -8,7 +8,7 @@ use super::setup::{
     arm_entry, build_camera, build_learner, build_simulator, fitted_boundaries, load_arm,
     trial_settings,
 };
-use super::{Config, Event, PreflightError, ReachSetting, RunError, Source, Sources};
+use super::{Config, Event, PreflightError, ReachSetting, RunError, Source, Sources, UrdfFile};
 use crate::camera::Camera;
 use crate::control::TrialLoop;
 use crate::learn::{LearnError, Learner};
@@ -73,7 +73,8 @@ pub struct RunSetup {
 }
 
 impl RunSetup {
-    /// Reads the arm of `urdf` (the shipped OSCAR-6 without one) as the config's arm
+    /// Reads the arm of `urdf` (else the config's `urdf`; the shipped OSCAR-6 without
+    /// either; `urdf` becomes the config's, from `--urdf`) as the config's arm
     /// entries pick it out, and checks the config, `events` (every event of the run, in
     /// trial order: see [`Event::of_run`]) and the arm's reach before anything is built; an
     /// arm entry the URDF contradicts is reported where its value came from (`file:line`,
@@ -87,6 +88,12 @@ impl RunSetup {
         sources: &Sources,
     ) -> Result<RunSetup, RunError> {
         let mut sources = sources.clone();
+        if let Some(file) = urdf {
+            config.urdf = UrdfFile(Some(file.to_path_buf()));
+            sources.record("urdf", Source::Flag("--urdf"));
+        }
+        let urdf = config.urdf.0.clone();
+        let urdf = urdf.as_deref();
         let arm = load_arm(&config, urdf).map_err(|source| match arm_entry(&source) {
             Some(entry) => RunError::ArmEntry {
                 at: config.source_of(entry, &sources).to_string(),

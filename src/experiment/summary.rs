@@ -17,6 +17,10 @@ pub struct RunSummary {
     pub sim: String,
     /// The camera model.
     pub camera: String,
+    /// The config file the run read (`defaults` for none: every entry at its declared
+    /// default but what flags and `--set` gave; absent in older summaries).
+    #[serde(default)]
+    pub config_file: String,
     /// The run's seed.
     pub seed: u64,
     /// Trials run.
@@ -178,8 +182,8 @@ impl RunSummary {
             n => format!("{n} failed: {}", self.failures_by_reason),
         };
         let mut text = format!(
-            "{} on the {} simulator ({} camera), seed {}: {} trials in {:.2} s ({:.0} trials/s), {failed}\n",
-            self.method, self.sim, self.camera, self.seed, self.trials, self.wall_seconds, self.trials_per_second
+            "{} on the {} simulator ({} camera), config {}, seed {}: {} trials in {:.2} s ({:.0} trials/s), {failed}\n",
+            self.method, self.sim, self.camera, self.config_file, self.seed, self.trials, self.wall_seconds, self.trials_per_second
         );
         if self.interrupted {
             text += "interrupted: the trials above are those finished before the signal\n";

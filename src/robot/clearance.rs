@@ -148,6 +148,12 @@ impl ArmGeometry {
         (allow, nearest)
     }
 
+    /// The smallest distance (m) between two bodies that may touch, with the links placed
+    /// at `links`: exact under [`NEAR`], a lower bound above it; 0 or less when they touch.
+    pub(crate) fn nearest_gap(&self, links: &Frames) -> f64 {
+        self.allowance_at(links, &[0.0; MAX_BODIES], &[]).1
+    }
+
     /// How fast (m per move) the joints turning at `rates` can bring bodies `i` < `j`
     /// together: the turns of the joints between them times how far body j reaches from
     /// their axes.

@@ -33,6 +33,21 @@ pub struct KinematicSim {
     /// The bodies for the self-collision and obstacle rule.
     geometry: ArmGeometry,
     work: SimWork,
+    /// The last move, when the poses along moves are kept (for frames taken during them).
+    last_move: Option<LastMove>,
+    /// Whether the poses along moves are kept.
+    keep_moves: bool,
+}
+
+/// A move as made, to give the poses along it.
+#[derive(Debug, Clone, Copy)]
+struct LastMove {
+    /// The learned angles and every joint where it began.
+    from: Controlled,
+    near: Joints,
+    /// The move made (rad) and its profile in time.
+    executed: Controlled,
+    profile: TrapezoidProfile,
 }
 
 impl KinematicSim {
@@ -50,6 +65,8 @@ impl KinematicSim {
             obstacles: Vec::new(),
             geometry: ArmGeometry::default(),
             work: SimWork::default(),
+            last_move: None,
+            keep_moves: false,
         };
         sim.refresh_collision();
         sim
@@ -187,13 +204,22 @@ impl Simulator for KinematicSim {
         {
             end_pose = self.model.pose_near(&after, &self.here.pose.joints);
         }
+        let near = self.here.pose.joints;
         self.here = MoveStart::at(&self.model, end_pose);
         let executed = after - theta;
         self.nearest = (self.nearest - self.geometry.closing(&self.model, &executed)).max(0.0);
         report.executed = executed;
-        report.duration =
-            TrapezoidProfile::new(executed.amax(), self.settings.speed, self.settings.accel)
-                .duration();
+        let profile =
+            TrapezoidProfile::new(executed.amax(), self.settings.speed, self.settings.accel);
+        report.duration = profile.duration();
+        if self.keep_moves {
+            self.last_move = Some(LastMove {
+                from: theta,
+                near,
+                executed,
+                profile,
+            });
+        }
         self.work.moves += 1;
         self.work.simulated_seconds += report.duration;
         report
@@ -232,6 +258,17 @@ impl Simulator for KinematicSim {
 
     fn obstacles(&self) -> &[Obstacle] {
         &self.obstacles
+    }
+
+    fn keep_move_poses(&mut self, keep: bool) {
+        self.keep_moves = keep;
+        self.last_move = None;
+    }
+
+    fn move_pose_at(&self, t: f64) -> Option<Joints> {
+        let last = self.last_move?;
+        let theta = last.from + last.executed * last.profile.fraction_at(t);
+        Some(self.model.pose_near(&theta, &last.near).joints)
     }
 }
 

@@ -3,6 +3,7 @@
 
 mod clearance;
 mod collision;
+mod contact_free;
 pub mod description;
 mod dynamic;
 mod error;
@@ -21,8 +22,9 @@ mod urdf;
 mod world;
 
 pub use collision::DEFAULT_FLOOR_Z;
+pub use contact_free::{ContactRule, Touch, CONTACT_MARGIN};
 pub use description::{Chain, DescriptionError, DescriptionOptions, RobotDescription, Shape};
-pub use dynamic::{Drive, DynamicSettings, DynamicSim, FreeArm, SimCounters};
+pub use dynamic::{Drive, DynamicSettings, DynamicSim, Energy, FreeArm, SimCounters};
 pub use error::RobotError;
 pub use joint::{LinkBody, RevoluteJoint};
 pub use joint_vector::{Joints, MAX_JOINTS};

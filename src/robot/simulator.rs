@@ -133,4 +133,16 @@ pub trait Simulator: std::fmt::Debug {
     /// Moves the joint angles of the ticks kept since the last call into `sink`, oldest
     /// first (one per `dt`).
     fn drain_ticks(&mut self, _sink: &mut Vec<Joints>) {}
+
+    /// Starts (`true`) or stops keeping the poses along each move (only the last move's),
+    /// for the frames a camera takes while the arm moves.
+    fn keep_move_poses(&mut self, _keep: bool) {}
+
+    /// Every joint's angle `t` seconds after the last move (or pre-learning move) began —
+    /// the kinematic simulator along the move's trapezoidal profile, the dynamic one at
+    /// its physics tick then — the pose it ended at from its end on; `None` when move
+    /// poses are not kept or no move was made since.
+    fn move_pose_at(&self, _t: f64) -> Option<Joints> {
+        None
+    }
 }

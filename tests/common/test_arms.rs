@@ -24,7 +24,7 @@ pub const PANDA: TestArm = TestArm {
     file: "panda/panda.urdf",
     camera_link: "panda_hand",
     learned: ["panda_joint1", "panda_joint2", "panda_joint4"],
-    boundaries: [-40.0, 82.0, -171.0, -54.0],
+    boundaries: [-36.0, 84.0, -168.0, -49.0],
 };
 
 /// The UR-style arm, its camera on `tool0`.
@@ -32,7 +32,7 @@ pub const UR_STYLE: TestArm = TestArm {
     file: "ur_style.urdf",
     camera_link: "tool0",
     learned: ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint"],
-    boundaries: [-98.0, -16.0, 29.0, 134.0],
+    boundaries: [-97.0, -13.0, 30.0, 133.0],
 };
 
 impl TestArm {

@@ -8,6 +8,7 @@ use super::scope::{
     Scope, BOUNDED, DYNAMIC, FFN, ISSGP, KOHONEN, LIN8, LWPR, MLP, NESTED, NETS, NNW, PERCEPTRONS,
     RAYCAST, REGRESSORS, WATCHING,
 };
+use super::urdf_file::UrdfFile;
 use super::values::{CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind};
 use super::{ConfigErrorKind, Rule};
 use crate::control::ServoMode;
@@ -96,6 +97,9 @@ config_entries! {
     /// Height of the floor (world frame; −22 is the lowest target's bottom): a move stops
     /// where a link or the camera would go below it.
     floor_z: f64 = -22.0, "cm", All, Within(-1000.0, 0.0);
+    /// The arm's URDF file (a relative one is taken from the config file's folder), or
+    /// `shipped` for the OSCAR-6 built in; `--urdf` overrides it.
+    urdf: UrdfFile = UrdfFile::default(), "", All, Rule::Any;
     /// The link the camera is fixed to, the chain from the URDF's root to it the arm; `auto`:
     /// the link named camera_link, else where the chain ends (tool0, a hand, the last link).
     camera_link: CameraLink = CameraLink::Auto, "", All, Rule::Any;
@@ -122,8 +126,16 @@ config_entries! {
     /// Sensor noise: σ of each joint encoder's reading (0: exact).
     joint_noise_deg: f64 = 0.0, "°", All, Within(0.0, 10.0);
     /// Frames per second of a free-running camera; 0: a frame the moment each move has
-    /// settled (the study's). Needs sim dynamic when above 0.
-    camera_fps: f64 = 0.0, "frames/s", DYNAMIC, Within(0.0, 1000.0);
+    /// settled (the study's). Needs sim dynamic when above 0, but for learn_during_moves
+    /// on the kinematic simulator (frames along each move's profile).
+    camera_fps: f64 = 0.0, "frames/s", All, Within(0.0, 1000.0);
+    /// 1: the frames the camera takes during each move (at camera_fps, which must be above
+    /// 0) are poses of the trial's path too, and the learning patterns come from all of
+    /// them; 0: only the poses at which moves ended (the study's).
+    learn_during_moves: usize = 0, "", All, Within(0.0, 1.0);
+    /// With learn_during_moves: at most this many of each move's frames are learned,
+    /// evenly spread, the last the latest before the move ended.
+    move_frames_learned: usize = 1, "", All, Within(1.0, 100.0);
     /// A frame shows the world as it was this long before it is delivered (a whole number
     /// of dt steps).
     camera_latency_ms: f64 = 0.0, "ms", DYNAMIC, Within(0.0, 1000.0);
@@ -140,7 +152,7 @@ config_entries! {
     /// The link stretched at elongate_trial: 1, 2 or 3.
     elongate_link: usize = 2, "", All, Rule::Any;
     /// Signed length added to that link (negative shortens it).
-    elongate_cm: f64 = 0.0, "cm", All, Rule::Any;
+    elongate_cm: f64 = 0.0, "cm", All, Within(-1000.0, 1000.0);
     /// The tree is not split deeper than this.
     tree_depth: usize = 8, "", NESTED, Within(1.0, 12.0);
     /// A sub-box is split off when its stored patterns' error in its parent exceeds this.

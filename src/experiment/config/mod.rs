@@ -16,6 +16,7 @@ mod package_paths;
 mod rule;
 mod scope;
 mod source;
+mod urdf_file;
 mod validate;
 mod values;
 
@@ -28,6 +29,7 @@ pub use package_paths::PackagePaths;
 pub use rule::Rule;
 pub use scope::Scope;
 pub use source::{Source, Sources};
+pub use urdf_file::UrdfFile;
 pub use values::{CameraKind, ObstacleBox, ReachSetting, SimKind};
 
 use std::fmt;
@@ -124,6 +126,7 @@ impl Config {
         }
         if let Some(folder) = Path::new(file).parent() {
             config.package_paths.relative_to(folder);
+            config.urdf.relative_to(folder);
         }
         config.check().map_err(|kind| ConfigError {
             file: file.to_string(),

@@ -49,13 +49,20 @@ pub(super) struct Line<'a> {
 
 type Area<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
 
-fn bounds(lines: &[Line<'_>], log_y: bool) -> ((f64, f64), (f64, f64)) {
-    let floor = if log_y { 1e-6 } else { f64::MIN };
+/// A panel's x range and y range. A log axis spans whole decades from the smallest
+/// positive value's to the largest's, so every panel has labels across its data; when some
+/// value is 0 (or below), the range reaches one decade lower, and that bottom is the
+/// floor the zeros are drawn on.
+pub(super) fn bounds(lines: &[Line<'_>], log_y: bool) -> ((f64, f64), (f64, f64)) {
     let points = lines.iter().flat_map(|l| l.points.iter());
     let (mut x, mut y) = ((f64::MAX, f64::MIN), (f64::MAX, f64::MIN));
+    let mut not_positive = false;
     for &(px, py) in points {
-        let py = py.max(floor);
         x = (x.0.min(px), x.1.max(px));
+        if log_y && py <= 0.0 {
+            not_positive = true;
+            continue;
+        }
         y = (y.0.min(py), y.1.max(py));
     }
     if x.0 > x.1 {
@@ -63,7 +70,15 @@ fn bounds(lines: &[Line<'_>], log_y: bool) -> ((f64, f64), (f64, f64)) {
     }
     let x = if x.1 > x.0 { x } else { (x.0 - 0.5, x.1 + 0.5) };
     let y = if log_y {
-        (y.0 / 1.5, (y.1 * 1.5).max(y.0 * 10.0))
+        if y.0 > y.1 {
+            (0.1, 1.0)
+        } else {
+            let decade = |v: f64, round: fn(f64) -> f64| 10f64.powf(round(v.log10()));
+            let low = decade(y.0, f64::floor) / if not_positive { 10.0 } else { 1.0 };
+            // A hair wider, so the decades at both ends get their labels.
+            let high = decade(y.1, f64::ceil).max(low * 10.0);
+            (low * (1.0 - 1e-9), high * (1.0 + 1e-9))
+        }
     } else {
         let span = y.1 - y.0;
         let pad = if span > 0.0 {
@@ -88,9 +103,17 @@ pub(super) fn draw_panel(area: &Area<'_>, panel: &Panel<'_>) -> Result<(), Strin
     builder
         .caption(panel.title, (FAMILY, 18))
         .margin(8)
+        // Room for the last x label, centred on the axis's end.
+        .margin_right(36)
         .x_label_area_size(32)
         .y_label_area_size(62);
-    let floor = if panel.log_y { 1e-6 } else { f64::MIN };
+    // On a log axis the zeros lie on its bottom, the floor.
+    let floor = if panel.log_y { y0 } else { f64::MIN };
+    let zeros = panel.log_y
+        && panel
+            .lines
+            .iter()
+            .any(|l| l.points.iter().any(|p| p.1 <= 0.0));
     macro_rules! finish {
         ($chart:expr) => {{
             let mut chart = $chart.map_err(|e| e.to_string())?;
@@ -100,10 +123,23 @@ pub(super) fn draw_panel(area: &Area<'_>, panel: &Panel<'_>) -> Result<(), Strin
                 .max_light_lines(2)
                 .y_desc(panel.y_label)
                 .label_style((FAMILY, 12))
+                .y_labels(12)
                 .x_label_formatter(&|x| format!("{x:.0}"))
                 .y_label_formatter(&|y| compact(*y))
                 .draw()
                 .map_err(|e| e.to_string())?;
+            if zeros {
+                chart
+                    .draw_series(DashedLineSeries::new(
+                        [(x0, floor), (x1, floor)],
+                        6,
+                        4,
+                        BLACK.stroke_width(1),
+                    ))
+                    .map_err(|e| e.to_string())?
+                    .label("0 (drawn on the floor)")
+                    .legend(|(x, y)| PathElement::new([(x, y), (x + 16, y)], BLACK));
+            }
             for &trial in panel.events {
                 chart
                     .draw_series(LineSeries::new(
@@ -125,7 +161,7 @@ pub(super) fn draw_panel(area: &Area<'_>, panel: &Panel<'_>) -> Result<(), Strin
                         .legend(move |(x, y)| PathElement::new([(x, y), (x + 16, y)], colour));
                 }
             }
-            if many {
+            if many || zeros {
                 chart
                     .configure_series_labels()
                     .label_font((FAMILY, 13))
@@ -172,3 +208,39 @@ pub(super) const PALETTE: [RGBColor; 6] = [
     RGBColor(140, 86, 75),
     RGBColor(23, 190, 207),
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(points: &[(f64, f64)]) -> Line<'_> {
+        Line {
+            points,
+            colour: BLACK,
+            label: String::new(),
+        }
+    }
+
+    #[test]
+    fn a_log_axis_spans_whole_decades_over_its_data() {
+        // A sweep's 4-step curves from 0.2 to 40 mm: labels from 0.1 to 100.
+        let points = [(1.0, 40.0), (10_000.0, 0.2)];
+        let (x, y) = bounds(&[line(&points)], true);
+        assert_eq!(x, (1.0, 10_000.0));
+        let near = |a: f64, b: f64| (a / b - 1.0).abs() < 1e-6;
+        assert!(near(y.0, 0.1) && y.0 < 0.1, "{y:?}");
+        assert!(near(y.1, 100.0) && y.1 > 100.0, "{y:?}");
+    }
+
+    #[test]
+    fn zeros_lie_on_a_floor_one_decade_below_the_smallest_value() {
+        // ik's zeros beside learners at 0.01..30 mm: the floor at 1e-3, not at 1e-6.
+        let ik = [(1.0, 0.0), (100.0, 0.0)];
+        let learner = [(1.0, 30.0), (100.0, 0.01)];
+        let (_, y) = bounds(&[line(&ik), line(&learner)], true);
+        let near = |a: f64, b: f64| (a / b - 1.0).abs() < 1e-6;
+        assert!(near(y.0, 1e-3) && near(y.1, 100.0), "{y:?}");
+        let (_, only_zeros) = bounds(&[line(&ik)], true);
+        assert_eq!(only_zeros, (0.1, 1.0));
+    }
+}

@@ -65,7 +65,8 @@ pub fn plot_run(run_dir: &Path, smooth: usize) -> Result<PathBuf, PlotError> {
     };
     register_font().map_err(draw_error)?;
     let drawn = run_dir.join(".plot.partial.png");
-    let result = draw_panels(&drawn, &title_of(run_dir, smooth), &lines, &events)
+    let title = title_of(run_dir, &info, nodes.points.len(), smooth);
+    let result = draw_panels(&drawn, &title, &lines, &events)
         .and_then(|()| std::fs::rename(&drawn, &out).map_err(|e| e.to_string()));
     if let Err(reason) = result {
         let _ = std::fs::remove_file(&drawn);
@@ -74,8 +75,24 @@ pub fn plot_run(run_dir: &Path, smooth: usize) -> Result<PathBuf, PlotError> {
     Ok(out)
 }
 
-fn title_of(run_dir: &Path, smooth: usize) -> String {
-    format!("{} (smoothed over {smooth} trials)", run_dir.display())
+/// The plot's title: the method, simulator and seed the run's `info` records, the trials
+/// it holds and the folder.
+fn title_of(run_dir: &Path, info: &str, trials: usize, smooth: usize) -> String {
+    let entry = |name: &str| {
+        info.lines()
+            .filter_map(|line| line.strip_prefix(name)?.strip_prefix(' '))
+            .map(|rest| rest.split('#').next().unwrap_or("").trim())
+            .next_back()
+            .unwrap_or("?")
+            .to_string()
+    };
+    format!(
+        "{} on the {} simulator, seed {}, {trials} trials: {} (smoothed over {smooth} trials)",
+        entry("method"),
+        entry("sim"),
+        entry("seed"),
+        run_dir.display()
+    )
 }
 
 /// A panel's title, y label, points and whether its y axis is logarithmic.
@@ -102,4 +119,20 @@ fn draw_panels(out: &Path, title: &str, lines: &[PanelLine], events: &[f64]) -> 
         draw_panel(area, &panel)?;
     }
     root.present().map_err(|e| e.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_title_names_the_method_the_simulator_the_seed_and_the_trials() {
+        let info = "# eyehand run\nconfig_file defaults\n\n# config\nmethod lin8  # --method\n\
+                    sim dynamic  # default\nseed 7  # --seed\n";
+        let title = title_of(Path::new("data/lin8/3"), info, 10_000, 50);
+        assert_eq!(
+            title,
+            "lin8 on the dynamic simulator, seed 7, 10000 trials: data/lin8/3 (smoothed over 50 trials)"
+        );
+    }
 }

@@ -36,9 +36,10 @@ pub struct LoadedArm {
     pub warnings: Vec<String>,
 }
 
-/// The arm of `urdf` (the shipped OSCAR-6 without one) as the config's arm entries pick
-/// it out of its robot description, `package://` meshes looked up in `package_paths`.
+/// The arm of `urdf` (else the config's `urdf`; the shipped OSCAR-6 without either) as
+/// the config's arm entries pick it out of its robot description, `package://` meshes looked up in `package_paths`.
 pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<LoadedArm, DescriptionError> {
+    let urdf = urdf.or(config.urdf.path());
     let options = DescriptionOptions {
         package_paths: config.package_paths.0.clone(),
     };

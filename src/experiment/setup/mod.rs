@@ -15,7 +15,7 @@ pub use learners::{
 
 use super::{CameraKind, Config, ObstacleBox, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
-use crate::control::{CameraTiming, SensorNoise, TrialSettings};
+use crate::control::{CameraTiming, MoveFrames, SensorNoise, TrialSettings};
 use crate::learn::{
     FfnLearner, IkLearner, Issgp, KohonenLearner, LearnError, Learner, Lin5, Lin8, Lwpr, Method,
     Mlp, Nnw,
@@ -58,7 +58,8 @@ pub fn build_camera(config: &Config) -> Box<dyn Camera> {
 
 /// The trial loop's settings: `feedback_steps`, `min_feedback_steps`,
 /// `min_target_distance`, the sensor noise entries and the camera's
-/// timing (`camera_fps`, `camera_latency_ms`, `servo_mode`).
+/// timing (`camera_fps`, `camera_latency_ms`, `servo_mode`) and the frames learned during
+/// moves (`learn_during_moves`, `move_frames_learned`).
 pub fn trial_settings(config: &Config) -> TrialSettings {
     TrialSettings {
         feedback_steps: config.feedback_steps,
@@ -74,6 +75,10 @@ pub fn trial_settings(config: &Config) -> TrialSettings {
             latency: config.camera_latency_ms / 1000.0,
             servo: config.servo_mode,
         },
+        move_frames: (config.learn_during_moves == 1).then_some(MoveFrames {
+            fps: config.camera_fps,
+            per_move: config.move_frames_learned,
+        }),
     }
 }
 

@@ -102,7 +102,8 @@ pub enum LocalRunEnd {
 
 /// Runs every cell of the study, `jobs` at a time, each as `launcher`'s process with its
 /// output in `logs/local_<i>.out`, and says on stderr as each cell ends (how it ended, how
-/// long it took, how many are done). If a cell cannot be started, none after it is, and
+/// long it took, its trials and trials per second, how many are done and about how long the
+/// rest will take at the cells' pace so far). If a cell cannot be started, none after it is, and
 /// the running ones are waited for before the error is returned.
 pub fn run_locally(
     folder: &StudyFolder,
@@ -113,6 +114,7 @@ pub fn run_locally(
     let mut interrupts = Interrupts::catch().map_err(StudyError::io("signal handlers"))?;
     let mut next = 0;
     let mut done = 0;
+    let mut cell_seconds = 0.0;
     let mut running: Vec<(usize, Child, Instant)> = Vec::new();
     let mut forwarded = None;
     let mut failure = None;
@@ -145,8 +147,18 @@ pub fn run_locally(
                     _ => "could not be waited for".to_string(),
                 };
                 let seconds = started.elapsed().as_secs_f64();
+                cell_seconds += seconds;
+                let left = (cells - done) as f64 * cell_seconds / done as f64 / jobs.max(1) as f64;
+                let pace =
+                    super::gather::read_summary(&folder.cell(*index)).map_or(String::new(), |s| {
+                        format!(
+                            ": {} trials at {:.0} trials/s",
+                            s.trials, s.trials_per_second
+                        )
+                    });
                 eprintln!(
-                    "eyehand: cell {index} {how} after {seconds:.2} s ({done} of {cells} done; log: {})",
+                    "eyehand: cell {index} {how} after {seconds:.2} s{pace} ({done} of {cells} \
+                     done, about {left:.0} s left; log: {})",
                     folder.local_log(*index).display()
                 );
                 false

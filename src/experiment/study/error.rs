@@ -89,6 +89,19 @@ pub enum StudyError {
         /// Why it is refused.
         reason: &'static str,
     },
+    /// A study folder whose path the job script's `#SBATCH` lines cannot carry.
+    #[error(
+        "{}: a Slurm job script cannot name this folder in its #SBATCH lines (it holds \
+         {character:?}; Slurm reads % as a pattern in file names); give --data a path \
+         without % or line breaks, or run the cells here",
+        path.display()
+    )]
+    SlurmPath {
+        /// The study's folder.
+        path: std::path::PathBuf,
+        /// The first character #SBATCH lines cannot carry.
+        character: char,
+    },
     /// No folder for the study.
     #[error(transparent)]
     Folder(#[from] RunFolderError),

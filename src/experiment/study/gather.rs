@@ -93,7 +93,9 @@ pub fn gather(folder: &StudyFolder) -> Result<GatherReport, StudyError> {
 }
 
 /// A cell's summary, or why there is none.
-fn read_summary(run_folder: &std::path::Path) -> Result<crate::experiment::RunSummary, String> {
+pub(super) fn read_summary(
+    run_folder: &std::path::Path,
+) -> Result<crate::experiment::RunSummary, String> {
     let path = run_folder.join("summary.json");
     let text = std::fs::read_to_string(&path).map_err(|e| {
         if e.kind() == std::io::ErrorKind::NotFound {

@@ -16,6 +16,9 @@ pub use compare::{compare_plan, CompareRequest, DEFAULT_CONFIGS};
 pub use error::StudyError;
 pub use gather::{gather, GatherReport, Unfinished};
 pub use plan::{Cell, StudyFolder, StudyKind, StudyPlan, MAX_CELLS};
-pub use slurm::{memory_class_mb, resubmit_line, slurm_script, write_slurm_script, SlurmOptions};
+pub use slurm::{
+    check_slurm_folder, memory_class_mb, resubmit_line, slurm_script, write_slurm_script,
+    SlurmOptions,
+};
 pub use sweep::{combinations, parse_seeds, sweep_plan, Setting};
 pub use table::{compare_table, four_step_curves, study_table, sweep_table, CellResult};

@@ -38,10 +38,21 @@ impl SlurmOptions {
             .filter_map(|(flag, value)| value.as_ref().map(|v| (flag, v)))
             .chain(self.extra.iter().map(|v| ("extra", v)));
         for (flag, value) in given {
+            let word = |c: char| c.is_ascii_alphanumeric() || "_.-".contains(c);
             let reason = if value.trim().is_empty() {
                 "is empty"
             } else if value.contains(['\n', '\r']) {
                 "holds a line break"
+            } else if flag == "mem" && !is_memory(value) {
+                "is not a memory size (a whole number, optionally K, M, G or T: 2G, 512M)"
+            } else if flag == "time"
+                && !value
+                    .chars()
+                    .all(|c| c.is_ascii_digit() || c == ':' || c == '-')
+            {
+                "is not a Slurm time (minutes, or [days-]hours:minutes:seconds: 90, 1:30:00)"
+            } else if (flag == "partition" || flag == "account") && !value.chars().all(word) {
+                "is not a name (letters, digits, _ . -)"
             } else {
                 continue;
             };
@@ -53,6 +64,14 @@ impl SlurmOptions {
         }
         Ok(())
     }
+}
+
+/// True for a Slurm memory size: digits, then at most one of K, M, G, T.
+fn is_memory(value: &str) -> bool {
+    let digits = value.trim_end_matches(['K', 'M', 'G', 'T', 'k', 'm', 'g', 't']);
+    !digits.is_empty()
+        && digits.chars().all(|c| c.is_ascii_digit())
+        && value.len() - digits.len() <= 1
 }
 
 /// A cell's peak memory class (MB): twice the estimate from measured peaks (docs/RESULTS.md:
@@ -97,8 +116,11 @@ pub fn slurm_script(
         format!("#SBATCH --job-name=eyehand-{}", plan.kind.name()),
         format!("#SBATCH --array=0-{last}"),
         "#SBATCH --cpus-per-task=1".into(),
-        format!("#SBATCH --chdir={dir}"),
-        format!("#SBATCH --output={dir}/logs/%A_%a.out"),
+        format!("#SBATCH --chdir={}", sbatch_quote(&dir)),
+        format!(
+            "#SBATCH --output={}",
+            sbatch_quote(&format!("{dir}/logs/%A_%a.out"))
+        ),
         format!("#SBATCH --mem={mem}"),
     ];
     let optional = [
@@ -117,16 +139,21 @@ pub fn slurm_script(
             None => lines.push(format!("#SBATCH {}", extra.trim())),
         }
     }
+    // The script's own path, quoted once for the shell and never inside double quotes: a
+    // folder's `$`, backquotes and quotes stay characters.
     let script = shell_quote(&script_path(folder, plan));
     lines.extend([
         "set -euo pipefail".into(),
+        format!("script={script}"),
         "cell=\"${SLURM_ARRAY_TASK_ID:-${1:-}}\"".into(),
         "if [ -z \"$cell\" ]; then".into(),
         format!(
-            "  echo \"submit all {} cells: sbatch {script}\" >&2",
+            "  printf 'submit all {} cells: sbatch %q\\n' \"$script\" >&2",
             plan.cells.len()
         ),
-        format!("  echo \"or run one here:   bash {script} CELL   (CELL = 0..{last})\" >&2"),
+        format!(
+            "  printf 'or run one here:   bash %q CELL   (CELL = 0..{last})\\n' \"$script\" >&2"
+        ),
         "  exit 2".into(),
         "fi".into(),
         format!("exec {} \"$cell\"", launcher.command_line(&folder.0)),
@@ -136,6 +163,34 @@ pub fn slurm_script(
 
 fn script_path(folder: &StudyFolder, plan: &StudyPlan) -> String {
     folder.script(plan.kind).display().to_string()
+}
+
+/// Refuses a data folder (absolute) whose studies' paths the job script's `#SBATCH --chdir`
+/// and `--output` lines cannot carry: a line break, or `%` (which Slurm reads as a file
+/// name pattern there). Anything else is quoted ([`sbatch_quote`]).
+pub fn check_slurm_folder(data: &Path) -> Result<(), StudyError> {
+    let text = data.display().to_string();
+    match text.chars().find(|c| "\n\r%".contains(*c)) {
+        Some(character) => Err(StudyError::SlurmPath {
+            path: data.to_path_buf(),
+            character,
+        }),
+        None => Ok(()),
+    }
+}
+
+/// A value as an `#SBATCH` line carries it: as it is when plain, else in double quotes with
+/// `\` and `"` escaped by a backslash (sbatch reads its script's option lines so; a `#`
+/// outside quotes would start a comment there).
+fn sbatch_quote(value: &str) -> String {
+    let plain = value
+        .chars()
+        .all(|c| c.is_ascii_alphanumeric() || "-_./=:,+@".contains(c));
+    if plain {
+        value.to_string()
+    } else {
+        format!("\"{}\"", value.replace('\\', "\\\\").replace('"', "\\\""))
+    }
 }
 
 /// Writes the study's job script (`<kind>.sbatch`) and returns its path.

@@ -159,6 +159,18 @@ pub enum DescriptionErrorKind {
         /// What is wrong with it.
         reason: String,
     },
+    /// A `package://` mesh that would be read from outside its `package_paths` folder.
+    #[error(
+        "link `{link}`: mesh `{filename}` leads outside its package folder (`..`, a root or an \
+         empty part, or a symbolic link out of it); only files inside a package_paths folder \
+         are read"
+    )]
+    MeshOutsidePackage {
+        /// The link.
+        link: String,
+        /// The mesh as the URDF names it.
+        filename: String,
+    },
     /// A collision mesh in a format other than OBJ and STL.
     #[error("link `{link}`: collision mesh `{filename}` is neither OBJ nor STL")]
     UnsupportedMesh {

@@ -4,7 +4,7 @@
 
 use super::convert::pose;
 use super::mesh::{MeshFormat, TriangleMesh};
-use super::resolve::resolve_mesh;
+use super::resolve::{resolve_mesh, MeshPathError};
 use super::{DescriptionErrorKind as Kind, DescriptionWarning};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use std::collections::HashMap;
@@ -198,7 +198,21 @@ impl<'a> GeometryReader<'a> {
                 filename: filename.to_string(),
             });
         }
-        let Some(path) = resolve_mesh(filename, self.urdf_folder, self.package_paths) else {
+        let found =
+            resolve_mesh(filename, self.urdf_folder, self.package_paths).map_err(|error| {
+                match error {
+                    MeshPathError::OutsidePackage => Kind::MeshOutsidePackage {
+                        link: link.to_string(),
+                        filename: filename.to_string(),
+                    },
+                    MeshPathError::NotAFile => Kind::NotAMesh {
+                        link: link.to_string(),
+                        filename: filename.to_string(),
+                        reason: "not a regular file (a folder, a FIFO or a device)".into(),
+                    },
+                }
+            })?;
+        let Some(path) = found else {
             if !collision {
                 self.warnings.push(DescriptionWarning::MissingVisualMesh {
                     link: link.to_string(),

@@ -3,18 +3,77 @@
 
 use std::path::{Path, PathBuf};
 
-/// Finds the file a mesh `filename` names, or `None` when no candidate exists.
+/// Why a mesh's `filename` names no file that may be read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MeshPathError {
+    /// A `package://` mesh that would be read from outside its search folder: a `..`,
+    /// root or empty part in its name, or a file that a symbolic link puts elsewhere.
+    OutsidePackage,
+    /// Something is there, but not a regular file (a folder, a FIFO, a device).
+    NotAFile,
+}
+
+/// Finds the file a mesh `filename` names, or `None` when nothing is at any candidate.
 ///
 /// `package://NAME/REST` is tried as `SEARCH/NAME/REST` for every search path, then as
-/// `SEARCH/REST` for a search path that is itself the package folder NAME.
+/// `SEARCH/REST` for a search path that is itself the package folder NAME; the file must
+/// stay inside that search folder (after resolving `..` and symbolic links). The first
+/// candidate at which something is must be a regular file.
 pub fn resolve_mesh(
     filename: &str,
     urdf_folder: &Path,
     package_paths: &[PathBuf],
-) -> Option<PathBuf> {
-    mesh_candidates(filename, urdf_folder, package_paths)
-        .into_iter()
-        .find(|path| path.is_file())
+) -> Result<Option<PathBuf>, MeshPathError> {
+    let regular = |path: PathBuf| match path.metadata() {
+        Ok(meta) if meta.is_file() => Some(Ok(path)),
+        Ok(_) => Some(Err(MeshPathError::NotAFile)),
+        Err(_) => None,
+    };
+    let Some(rest) = filename.strip_prefix("package://") else {
+        let found = mesh_candidates(filename, urdf_folder, package_paths);
+        return found.into_iter().find_map(regular).transpose();
+    };
+    let plain = |part: &str| {
+        !part.is_empty()
+            && Path::new(part)
+                .components()
+                .all(|c| matches!(c, std::path::Component::Normal(_)))
+    };
+    let (package, inside) = rest.split_once('/').unwrap_or((rest, ""));
+    if !plain(package) || !plain(inside) {
+        return Err(MeshPathError::OutsidePackage);
+    }
+    for (search, path) in package_candidates(package, inside, package_paths) {
+        if let Some(found) = regular(path) {
+            let path = found?;
+            let inside_search = match (path.canonicalize(), search.canonicalize()) {
+                (Ok(file), Ok(folder)) => file.starts_with(folder),
+                _ => false,
+            };
+            return if inside_search {
+                Ok(Some(path))
+            } else {
+                Err(MeshPathError::OutsidePackage)
+            };
+        }
+    }
+    Ok(None)
+}
+
+/// The search folder and path of every place `package://PACKAGE/INSIDE` may be, in order.
+fn package_candidates<'a>(
+    package: &'a str,
+    inside: &'a str,
+    package_paths: &'a [PathBuf],
+) -> impl Iterator<Item = (&'a Path, PathBuf)> {
+    let nested = package_paths
+        .iter()
+        .map(move |search| (search.as_path(), search.join(package).join(inside)));
+    let itself = package_paths
+        .iter()
+        .filter(move |search| search.file_name().is_some_and(|name| name == package))
+        .map(move |search| (search.as_path(), search.join(inside)));
+    nested.chain(itself)
 }
 
 /// Every path a mesh `filename` may be at, in the order they are tried (none for a
@@ -26,17 +85,9 @@ pub fn mesh_candidates(
 ) -> Vec<PathBuf> {
     if let Some(rest) = filename.strip_prefix("package://") {
         let (package, inside) = rest.split_once('/').unwrap_or((rest, ""));
-        let mut found: Vec<PathBuf> = package_paths
-            .iter()
-            .map(|search| search.join(package).join(inside))
+        return package_candidates(package, inside, package_paths)
+            .map(|(_, path)| path)
             .collect();
-        found.extend(
-            package_paths
-                .iter()
-                .filter(|search| search.file_name().is_some_and(|name| name == package))
-                .map(|search| search.join(inside)),
-        );
-        return found;
     }
     let plain = filename.strip_prefix("file://").unwrap_or(filename);
     vec![urdf_folder.join(plain)]
@@ -59,27 +110,78 @@ mod tests {
         let none: &[PathBuf] = &[];
         assert_eq!(
             resolve_mesh("../robots/arm/meshes/a.stl", &urdf, none),
-            Some(urdf.join("../robots/arm/meshes/a.stl"))
+            Ok(Some(urdf.join("../robots/arm/meshes/a.stl")))
         );
         let absolute = format!("file://{}", mesh.display());
-        assert_eq!(resolve_mesh(&absolute, &urdf, none), Some(mesh.clone()));
+        assert_eq!(resolve_mesh(&absolute, &urdf, none), Ok(Some(mesh.clone())));
         assert_eq!(
             resolve_mesh("package://arm/meshes/a.stl", &urdf, none),
-            None
+            Ok(None)
         );
         let search = [root.join("elsewhere"), root.join("robots")];
         assert_eq!(
             resolve_mesh("package://arm/meshes/a.stl", &urdf, &search),
-            Some(mesh.clone())
+            Ok(Some(mesh.clone()))
         );
         let package_itself = [root.join("robots/arm")];
         assert_eq!(
             resolve_mesh("package://arm/meshes/a.stl", &urdf, &package_itself),
-            Some(mesh)
+            Ok(Some(mesh))
         );
         assert_eq!(
             resolve_mesh("package://arm/meshes/b.stl", &urdf, &search),
-            None
+            Ok(None)
         );
+    }
+
+    /// The escapes a hostile URDF tried: `..` out of the package, an absolute path after
+    /// the package's name, `..` as the package, and a symbolic link out of the folder.
+    #[test]
+    fn a_package_mesh_never_leads_outside_its_search_folder() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path();
+        fs::create_dir_all(root.join("robots/oscar/meshes")).unwrap();
+        fs::create_dir_all(root.join("x")).unwrap();
+        let secret = root.join("x/secret.stl");
+        fs::write(&secret, "solid").unwrap();
+        let urdf = root.join("robots/oscar");
+        let search = [root.join("robots")];
+        let depth = root.components().count() + 4;
+        let climb = "../".repeat(depth);
+        let up_and_out = format!("package://oscar/{climb}{}", secret.display());
+        let absolute = format!("package://oscar/{}", secret.display());
+        for escape in [
+            up_and_out.as_str(),
+            absolute.as_str(),
+            "package://../x/secret.stl",
+            "package://oscar/meshes/../../../x/secret.stl",
+        ] {
+            assert_eq!(
+                resolve_mesh(escape, &urdf, &search),
+                Err(MeshPathError::OutsidePackage),
+                "{escape}"
+            );
+        }
+        std::os::unix::fs::symlink(&secret, root.join("robots/oscar/meshes/link.stl")).unwrap();
+        assert_eq!(
+            resolve_mesh("package://oscar/meshes/link.stl", &urdf, &search),
+            Err(MeshPathError::OutsidePackage)
+        );
+    }
+
+    /// A folder, or a link to a device, named like a mesh is no mesh.
+    #[test]
+    fn only_a_regular_file_is_a_mesh() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path();
+        fs::create_dir_all(root.join("folder.stl")).unwrap();
+        std::os::unix::fs::symlink("/dev/zero", root.join("zero.stl")).unwrap();
+        for name in ["folder.stl", "zero.stl"] {
+            assert_eq!(
+                resolve_mesh(name, root, &[]),
+                Err(MeshPathError::NotAFile),
+                "{name}"
+            );
+        }
     }
 }

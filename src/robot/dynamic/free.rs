@@ -2,6 +2,7 @@
 //! gravity) or holding the pose — to hold the simulator against another engine.
 
 use super::builder::Arm;
+use super::energy::Energy;
 use super::settings::DynamicSettings;
 use crate::robot::{ArmModel, Joints, RobotError};
 
@@ -23,6 +24,8 @@ pub struct FreeArm {
     drive: Drive,
     settings: DynamicSettings,
     steps: u64,
+    /// The joint angles and speeds before the last step.
+    before: Option<(Joints, Joints)>,
 }
 
 impl FreeArm {
@@ -69,11 +72,13 @@ impl FreeArm {
             drive,
             settings,
             steps: 0,
+            before: None,
         })
     }
 
     /// One physics step of `dt`.
     pub fn step(&mut self) {
+        self.before = Some((self.joints(), self.speeds()));
         if self.drive == Drive::Hold {
             let efforts = self.arm.hold_weight(&self.model, &self.hold);
             self.arm.drive(
@@ -105,6 +110,26 @@ impl FreeArm {
     /// The joint speeds (rad/s).
     pub fn speeds(&self) -> Joints {
         self.arm.speeds()
+    }
+
+    /// The arm's mechanical energy now (J): kinetic and potential, from the model's
+    /// kinematics and the simulated masses.
+    pub fn energy(&self) -> Energy {
+        self.arm.energy(&self.model, &self.joints(), &self.speeds())
+    }
+
+    /// The torque about each joint's axis (N·m) that the last step's motion took: the
+    /// model's inverse dynamics at the pose and speeds it started from, with its change of
+    /// speed over `dt` as the acceleration — everything acting on the joints together
+    /// (servos, gravity feed-forward, damping, friction, limits). Zero before the first step.
+    pub fn torques(&self) -> Joints {
+        match &self.before {
+            Some((q, v)) => {
+                let a = (self.speeds() - v) / self.dt();
+                self.arm.joint_torques(&self.model, q, v, &a)
+            }
+            None => Joints::zeros(self.model.dof()),
+        }
     }
 
     /// The joint accelerations (rad/s²) of the arm at rest at `q` with its servos off:
@@ -157,6 +182,47 @@ mod tests {
             arm.step();
         }
         arm.joints()[1] - q[1]
+    }
+
+    /// The inverse dynamics holds Rapier's motion to account: a passive swing (nothing on
+    /// the joints) takes no torque but the integration's error, a held pose its weight's.
+    #[test]
+    fn the_torques_a_motion_took_are_none_free_and_the_weight_held() {
+        let oscar6 = ArmModel::oscar6();
+        let q = Joints::from_slice(&[0.3, 0.6, 1.2, 0.4, 0.5, 0.2]);
+        let settings = DynamicSettings {
+            dt: 1e-4,
+            ..DynamicSettings::default()
+        };
+        let arm = Arm::build(&oscar6, &settings.sanitized());
+        let weight = arm.weight_torques(&oscar6, &q).0;
+        let scale = weight.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+        let mut free =
+            FreeArm::new(oscar6.clone(), &q, settings, Drive::Passive, false, false).unwrap();
+        let mut worst = 0.0f64;
+        for _ in 0..2000 {
+            free.step();
+            worst = free.torques().iter().fold(worst, |m, t| m.max(t.abs()));
+        }
+        assert!(
+            free.speeds().iter().any(|v| v.abs() > 1.0),
+            "the arm swings"
+        );
+        assert!(
+            worst < 1e-3 * scale,
+            "{worst} N·m against the weight's {scale}"
+        );
+        let mut held = FreeArm::new(oscar6, &q, settings, Drive::Hold, true, false).unwrap();
+        for _ in 0..2000 {
+            held.step();
+        }
+        let torques = held.torques();
+        for (t, w) in torques.iter().zip(weight.iter()) {
+            assert!(
+                (t - w).abs() < 0.01 * scale,
+                "{torques:?} against {weight:?}"
+            );
+        }
     }
 
     #[test]

@@ -15,6 +15,9 @@ impl DynamicSim {
         if let Some(ticks) = &mut self.kept_ticks {
             ticks.push(self.arm.joints());
         }
+        if let Some(ticks) = &mut self.move_ticks {
+            ticks.push(self.arm.joints());
+        }
     }
 
     /// The set-point of the line from `start` (the learned angles) along `delta` at

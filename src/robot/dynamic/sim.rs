@@ -107,6 +107,8 @@ pub struct DynamicSim {
     pub(super) counters: Arc<SimCounters>,
     /// The joints after every tick since the last drain, when a recording asks for them.
     pub(super) kept_ticks: Option<Vec<Joints>>,
+    /// The joints after every tick of the last move, when the poses along moves are kept.
+    pub(super) move_ticks: Option<Vec<Joints>>,
     /// The set-point of continuous servoing, while it goes on.
     pub(super) tracker: Option<SetPointTracker>,
 }
@@ -124,6 +126,7 @@ impl DynamicSim {
             settings,
             counters: Arc::default(),
             kept_ticks: None,
+            move_ticks: None,
             tracker: None,
         };
         let start = sim.plan.joints();
@@ -185,6 +188,9 @@ impl Simulator for DynamicSim {
 
     fn execute(&mut self, delta: &Controlled) -> MoveReport {
         self.end_servoing();
+        if let Some(ticks) = &mut self.move_ticks {
+            ticks.clear();
+        }
         let start = self.plan.joints();
         let before = self.arm.joints();
         let mut report = self.plan.execute(delta);
@@ -296,6 +302,19 @@ impl Simulator for DynamicSim {
         if let Some(ticks) = &mut self.kept_ticks {
             sink.append(ticks);
         }
+    }
+
+    fn keep_move_poses(&mut self, keep: bool) {
+        self.move_ticks = keep.then(Vec::new);
+    }
+
+    fn move_pose_at(&self, t: f64) -> Option<Joints> {
+        let ticks = self.move_ticks.as_ref()?;
+        let tick = (t / self.settings.dt).round() as usize;
+        ticks
+            .get(tick.saturating_sub(1))
+            .or_else(|| ticks.last())
+            .copied()
     }
 }
 

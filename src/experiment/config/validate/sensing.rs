@@ -12,11 +12,20 @@ impl Config {
         let needs_clock = " needs the dynamic simulator (sim dynamic): the kinematic one has \
                            no clock, its frames come as each move ends";
         let ticks_per_second = 1.0 / self.dt;
+        let learning = self.learn_during_moves == 1;
         rule(
-            self.camera_fps == 0.0 || dynamic,
+            self.camera_fps == 0.0 || dynamic || learning,
             "camera_fps",
             &self.camera_fps,
-            &format!("above 0{needs_clock}"),
+            "above 0 needs the dynamic simulator (sim dynamic), or learn_during_moves 1 \
+             (frames along the kinematic simulator's moves): the kinematic one has no clock, \
+             its frames come as each move ends",
+        )?;
+        rule(
+            !learning || self.camera_fps > 0.0,
+            "learn_during_moves",
+            &self.learn_during_moves,
+            "1 needs camera_fps above 0: the rate of the frames taken during a move",
         )?;
         rule(
             self.camera_fps <= ticks_per_second * (1.0 + 1e-9),

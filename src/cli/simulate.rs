@@ -203,7 +203,7 @@ fn check(args: &SimulateArgs, joints: usize, dt: f64) -> Result<u64, Failure> {
         )));
     }
     let ticks = (args.duration / dt).round();
-    if !(ticks >= 1.0 && ticks <= MAX_TICKS) {
+    if !(1.0..=MAX_TICKS).contains(&ticks) {
         return Err(bad_input(format!(
             "--duration {} s must be from one tick to {MAX_TICKS} ticks of {dt} s",
             args.duration

@@ -75,9 +75,9 @@ config_entries! {
     /// A pose pair is a learning pattern only if at least one joint moved this much.
     minimal_joint_move: f64 = 0.01, "°", All, Within(0.0, 10.0);
     /// Top joint speed of a move's trapezoidal profile.
-    robot_speed: f64 = 90.0, "°/s", All, PositiveUpTo(3600.0);
+    robot_speed: f64 = 90.0, "°/s", All, Within(0.1, 3600.0);
     /// Joint acceleration of a move's trapezoidal profile.
-    robot_accel: f64 = 180.0, "°/s²", All, PositiveUpTo(100_000.0);
+    robot_accel: f64 = 180.0, "°/s²", All, Within(1.0, 100_000.0);
     /// Physics and servo time step (0.005: a 200 Hz control loop).
     dt: f64 = 0.005, "s", DYNAMIC, Within(1e-5, 0.1);
     /// Constraint solver iterations per physics step.

@@ -68,16 +68,16 @@ impl Config {
         Config::read_file(path).map(|(config, _)| config)
     }
 
-    /// Reads and checks a config file, with where each value came from.
+    /// Reads and checks a config file (at most [`MAX_CONFIG_BYTES`]), with where each value
+    /// came from.
     pub fn read_file(path: &Path) -> Result<(Config, Sources), ConfigError> {
         let name = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| ConfigError {
+        let unreadable = |reason: String| ConfigError {
             file: name.clone(),
             line: None,
-            kind: ConfigErrorKind::Unreadable {
-                reason: e.to_string(),
-            },
-        })?;
+            kind: ConfigErrorKind::Unreadable { reason },
+        };
+        let text = read_bounded(path).map_err(unreadable)?;
         Config::read(&text, &name)
     }
 
@@ -230,4 +230,24 @@ impl fmt::Display for Config {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.to_text())
     }
+}
+
+/// The longest config file read (bytes): the complete default config is about 20 kB, and a
+/// file without end (`/dev/zero`) must not be read for ever.
+const MAX_CONFIG_BYTES: u64 = 1 << 20;
+
+/// The text of `path`, refused past [`MAX_CONFIG_BYTES`] or when not UTF-8.
+fn read_bounded(path: &Path) -> Result<String, String> {
+    use std::io::Read;
+    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    let mut bytes = Vec::new();
+    file.take(MAX_CONFIG_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| e.to_string())?;
+    if bytes.len() as u64 > MAX_CONFIG_BYTES {
+        return Err(format!(
+            "longer than {MAX_CONFIG_BYTES} bytes: not a config file"
+        ));
+    }
+    String::from_utf8(bytes).map_err(|_| "stream did not contain valid UTF-8".to_string())
 }

@@ -22,6 +22,12 @@ impl Config {
              its frames come as each move ends",
         )?;
         rule(
+            self.camera_fps == 0.0 || self.camera_fps >= 1.0,
+            "camera_fps",
+            &self.camera_fps,
+            "must be 0 or at least 1 frame per second (the arm waits for frames)",
+        )?;
+        rule(
             !learning || self.camera_fps > 0.0,
             "learn_during_moves",
             &self.learn_during_moves,

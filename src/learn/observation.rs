@@ -45,3 +45,13 @@ impl Query {
         )
     }
 }
+
+/// A learner's answer as a move: itself when every component is finite, else no move (a
+/// learner's answer must always be finite, [`Learner::propose`](super::Learner::propose)).
+pub(crate) fn finite_or_still(answer: Vector3<f64>) -> Vector3<f64> {
+    if answer.iter().all(|v| v.is_finite()) {
+        answer
+    } else {
+        Vector3::zeros()
+    }
+}

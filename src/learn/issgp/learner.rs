@@ -7,6 +7,7 @@ use super::posterior::Posterior;
 use super::IssgpSettings;
 use crate::learn::change::TrialMiss;
 use crate::learn::net::InputScaling;
+use crate::learn::observation::finite_or_still;
 use crate::learn::{
     adjusted_pattern, centred, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation,
     Query,
@@ -102,12 +103,7 @@ impl Learner for Issgp {
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        let answer = self.predict(&query.five_inputs());
-        if answer.iter().all(|v| v.is_finite()) {
-            answer
-        } else {
-            Vector3::zeros()
-        }
+        finite_or_still(self.predict(&query.five_inputs()))
     }
 
     /// Trains every pose pair of the trial. Under change detection the watch is first

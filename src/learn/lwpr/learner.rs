@@ -5,6 +5,7 @@ use super::output_model::OutputModel;
 use super::projection::Input;
 use super::LwprSettings;
 use crate::learn::change::TrialMiss;
+use crate::learn::observation::finite_or_still;
 use crate::learn::{
     adjusted_pattern, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation, Query,
 };
@@ -89,12 +90,8 @@ impl Learner for Lwpr {
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        let answer = Vector3::from(self.answer(&query.five_inputs()).map(|a| a.unwrap_or(0.0)));
-        if answer.iter().all(|v| v.is_finite()) {
-            answer
-        } else {
-            Vector3::zeros()
-        }
+        let answer = self.answer(&query.five_inputs()).map(|a| a.unwrap_or(0.0));
+        finite_or_still(Vector3::from(answer))
     }
 
     /// Trains every pose pair of the trial. Under change detection the watch is given

@@ -7,6 +7,7 @@ use super::replay::{Replay, Sample};
 use super::MlpSettings;
 use crate::learn::change::TrialMiss;
 use crate::learn::net::InputScaling;
+use crate::learn::observation::finite_or_still;
 use crate::learn::{
     adjusted_pattern, centred, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation,
     Query,
@@ -120,12 +121,7 @@ impl Learner for Mlp {
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        let answer = self.predict(&query.five_inputs());
-        if answer.iter().all(|v| v.is_finite()) {
-            answer
-        } else {
-            Vector3::zeros()
-        }
+        finite_or_still(self.predict(&query.five_inputs()))
     }
 
     /// Puts every pose pair of the trial into the buffer, then takes

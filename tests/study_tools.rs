@@ -551,3 +551,45 @@ fn a_comparison_for_slurm_runs_by_hand_and_gathers_like_a_sweep() {
         text(&out.stdout)
     );
 }
+
+/// A study whose `cells.json` lists no cells is no study: `gather` refuses it rather than
+/// writing an empty table.
+#[test]
+fn gather_refuses_a_study_without_cells() {
+    let project = tempfile::tempdir().unwrap();
+    let lin5 = configs().join("lin5.conf");
+    let args = [
+        "sweep",
+        "--config",
+        lin5.to_str().unwrap(),
+        "--set",
+        "trials=10",
+    ];
+    let out = eyehand(
+        &[&args[..], &["--data", "d", "--slurm"]].concat(),
+        project.path(),
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let study = project.path().join("d/sweep/0");
+    let plan_path = study.join("cells.json");
+    let mut plan: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&plan_path).unwrap()).unwrap();
+    plan["cells"] = serde_json::json!([]);
+    std::fs::write(&plan_path, plan.to_string()).unwrap();
+    let gathered = eyehand(
+        &["sweep", "gather", study.to_str().unwrap()],
+        project.path(),
+    );
+    assert_eq!(
+        gathered.status.code(),
+        Some(2),
+        "{}",
+        text(&gathered.stdout)
+    );
+    assert!(
+        text(&gathered.stderr).contains("cells.json lists no cells"),
+        "{}",
+        text(&gathered.stderr)
+    );
+    assert!(!study.join("table.md").exists(), "no empty table written");
+}

@@ -105,7 +105,7 @@ impl StudyPlan {
 pub struct StudyFolder(pub PathBuf);
 
 impl StudyFolder {
-    /// The study's plan.
+    /// The study's plan; a plan without cells is no study.
     pub fn plan(&self) -> Result<StudyPlan, StudyError> {
         let path = self.0.join(PLAN_FILE);
         let not_a_study = |reason: String| StudyError::NotAStudy {
@@ -114,7 +114,12 @@ impl StudyFolder {
         };
         let text = std::fs::read_to_string(&path)
             .map_err(|e| not_a_study(format!("{}: {e}", path.display())))?;
-        serde_json::from_str(&text).map_err(|e| not_a_study(format!("{PLAN_FILE}: {e}")))
+        let plan: StudyPlan =
+            serde_json::from_str(&text).map_err(|e| not_a_study(format!("{PLAN_FILE}: {e}")))?;
+        if plan.cells.is_empty() {
+            return Err(not_a_study(format!("{PLAN_FILE} lists no cells")));
+        }
+        Ok(plan)
     }
 
     /// Cell `index`'s run folder.

@@ -4,7 +4,7 @@
 
 use super::setup::{build_simulator, reach_space};
 use super::{Config, ConfigErrorKind, Event, SimKind};
-use crate::robot::{ArmModel, ContactRule, ReachFitFailure, ReachSpace, RobotError};
+use crate::robot::{ArmModel, ContactRule, Controlled, ReachFitFailure, ReachSpace, RobotError};
 use crate::units::M_PER_CM;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -84,16 +84,22 @@ pub fn contact_stopped_moves(
     (made, stopped)
 }
 
+/// The controlled angles of the reach-space points (of `samples` drawn with a fixed seed)
+/// at which `model` puts its camera with every joint inside its limits, elbow up, looking
+/// down.
+fn solved_targets<'a>(
+    model: &'a ArmModel,
+    reach: &'a ReachSpace,
+    samples: usize,
+) -> impl Iterator<Item = Controlled> + 'a {
+    let mut rng = ChaCha8Rng::seed_from_u64(REACH_SEED);
+    (0..samples).filter_map(move |_| model.solve_camera_position(&reach.sample(&mut rng)).ok())
+}
+
 /// Reach-space points (of `samples` drawn with a fixed seed) at which `model` puts its
 /// camera with every joint inside its limits, elbow up, looking down.
 pub fn reachable_points(model: &ArmModel, reach: &ReachSpace, samples: usize) -> usize {
-    let mut rng = ChaCha8Rng::seed_from_u64(REACH_SEED);
-    (0..samples)
-        .filter(|_| {
-            let point = reach.sample(&mut rng);
-            model.solve_camera_position(&point).is_ok()
-        })
-        .count()
+    solved_targets(model, reach, samples).count()
 }
 
 /// Reach-space points (of `samples` drawn with a fixed seed, as [`reachable_points`]
@@ -107,14 +113,10 @@ pub fn target_poses_in_contact(
     samples: usize,
 ) -> (usize, usize) {
     let rule = ContactRule::new(model, config.floor_z * M_PER_CM);
-    let mut rng = ChaCha8Rng::seed_from_u64(REACH_SEED);
     let (mut reached, mut touching) = (0, 0);
-    for _ in 0..samples {
-        let point = reach.sample(&mut rng);
-        if let Ok(theta) = model.solve_camera_position(&point) {
-            reached += 1;
-            touching += usize::from(rule.touch(model, &model.pose_of(&theta)).is_some());
-        }
+    for theta in solved_targets(model, reach, samples) {
+        reached += 1;
+        touching += usize::from(rule.touch(model, &model.pose_of(&theta)).is_some());
     }
     (reached, touching)
 }

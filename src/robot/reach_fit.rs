@@ -267,11 +267,11 @@ fn fill(hit: &mut [bool], (z0, cols): (f64, usize), triangle: &[(f64, f64); 3]) 
     if area == 0.0 {
         return;
     }
-    let low = |f: fn(f64, f64) -> f64, pick: fn(&(f64, f64)) -> f64| {
+    let extreme = |f: fn(f64, f64) -> f64, pick: fn(&(f64, f64)) -> f64| {
         triangle.iter().map(pick).fold(pick(&a), f)
     };
-    let (r0, r1) = (low(f64::min, |p| p.0), low(f64::max, |p| p.0));
-    let (z_lo, z_hi) = (low(f64::min, |p| p.1), low(f64::max, |p| p.1));
+    let (r0, r1) = (extreme(f64::min, |p| p.0), extreme(f64::max, |p| p.0));
+    let (z_lo, z_hi) = (extreme(f64::min, |p| p.1), extreme(f64::max, |p| p.1));
     let rows = hit.len() / cols;
     let first = |v: f64| ((v / CELL - 0.5).ceil().max(0.0)) as usize;
     let last = |v: f64, n: usize| ((v / CELL - 0.5).floor() as usize).min(n - 1);
@@ -293,16 +293,20 @@ fn fill(hit: &mut [bool], (z0, cols): (f64, usize), triangle: &[(f64, f64); 3]) 
 /// away.
 fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) {
     let [yaw, s, e] = model.learned();
-    let span = |j: usize| {
+    let full_turn = [s, e].map(|j| {
         let (lower, upper) = model.joints()[j].one_turn();
-        if upper - lower >= TAU - 1e-9 {
-            (lower, upper - lower)
+        upper - lower >= TAU - 1e-9
+    });
+    let span = |j: usize, full_turn: bool| {
+        let (lower, upper) = model.joints()[j].one_turn();
+        let margin = if full_turn {
+            0.0
         } else {
-            let margin = LIMIT_MARGIN_DEG.to_radians();
-            (lower + margin, (upper - lower - 2.0 * margin).max(0.0))
-        }
+            LIMIT_MARGIN_DEG.to_radians()
+        };
+        (lower + margin, (upper - lower - 2.0 * margin).max(0.0))
     };
-    let (shoulder, elbow) = (span(s), span(e));
+    let (shoulder, elbow) = (span(s, full_turn[0]), span(e, full_turn[1]));
     let mut tally = ReachFitFailure {
         sampled: STEPS * STEPS,
         ..ReachFitFailure::default()
@@ -311,7 +315,7 @@ fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) 
     let base_yaw = model.rest()[yaw];
     let mut samples = Samples {
         points: vec![None; STEPS * STEPS],
-        full_turn: [shoulder, elbow].map(|(_, width)| width >= TAU - 1e-9),
+        full_turn,
     };
     let at = |(lower, width): (f64, f64), n: usize| lower + width * (n as f64 + 0.5) / STEPS as f64;
     let step_of = |(lower, width): (f64, f64), angle: f64| {

@@ -4,7 +4,7 @@
 
 use super::{bad_input, failed, warned, Failure};
 use crate::experiment::setup::{dynamic_settings, load_arm};
-use crate::robot::{Drive, DynamicSettings, FreeArm, Joints};
+use crate::robot::{Drive, DynamicSettings, Energy, FreeArm, Joints};
 use clap::Args;
 use std::io::Write;
 use std::path::PathBuf;
@@ -96,7 +96,11 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
     )
     .map_err(bad_input)?;
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-    let write = |out: &mut dyn Write, arm: &FreeArm, first: bool| {
+    // Writes a tick, and gives back the energy it wrote (with `--energy`).
+    let write = |out: &mut dyn Write,
+                 arm: &FreeArm,
+                 first: bool|
+     -> std::io::Result<Option<Energy>> {
         let (q, v) = (arm.joints(), arm.speeds());
         let deg = |x: &Joints| x.iter().map(|a| a.to_degrees()).collect::<Vec<_>>();
         let energy = args.energy.then(|| arm.energy());
@@ -112,7 +116,7 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
             if let Some(torques) = &torques {
                 tick["torques_Nm"] = torques.iter().copied().collect::<Vec<f64>>().into();
             }
-            write!(out, "{}{tick}", if first { "" } else { "," })
+            write!(out, "{}{tick}", if first { "" } else { "," })?;
         } else {
             let sep = if args.csv { "," } else { " " };
             let values: Vec<String> = std::iter::once(arm.time())
@@ -122,8 +126,9 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
                 .chain(torques.iter().flat_map(|t| t.iter().copied()))
                 .map(|x| format!("{x:.9}"))
                 .collect();
-            writeln!(out, "{}", values.join(sep))
+            writeln!(out, "{}", values.join(sep))?;
         }
+        Ok(energy)
     };
     let header = if args.json {
         format!("{{\"dt_s\":{dt},\"ticks\":[")
@@ -147,26 +152,26 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
             .collect::<Vec<_>>();
         format!("{}\n", names.join(if args.csv { "," } else { " " }))
     };
-    let start_energy = arm.energy().total();
-    let mut peak_kinetic = 0.0f64;
     let printed = (|| {
         write!(out, "{header}")?;
-        write(&mut out, &arm, true)?;
+        let start = write(&mut out, &arm, true)?;
+        let (mut last, mut peak_kinetic) = (start, 0.0f64);
         for _ in 0..ticks {
             arm.step();
-            write(&mut out, &arm, false)?;
-            if args.energy {
-                peak_kinetic = peak_kinetic.max(arm.energy().kinetic);
-            }
+            last = write(&mut out, &arm, false)?;
+            peak_kinetic = last.map_or(peak_kinetic, |e| peak_kinetic.max(e.kinetic));
         }
         if args.json {
             writeln!(out, "]}}")?;
         }
-        out.flush()
+        out.flush()?;
+        Ok(start
+            .zip(last)
+            .map(|(s, e)| (e.total() - s.total(), peak_kinetic)))
     })();
-    printed.map_err(|e| failed(format!("cannot write the ticks: {e}")))?;
-    if args.energy {
-        let drift = arm.energy().total() - start_energy;
+    let drift =
+        printed.map_err(|e: std::io::Error| failed(format!("cannot write the ticks: {e}")))?;
+    if let Some((drift, peak_kinetic)) = drift {
         eprintln!("{}", energy_drift_line(drift, peak_kinetic, arm.time()));
     }
     Ok(())
@@ -186,6 +191,7 @@ fn energy_drift_line(drift: f64, peak_kinetic: f64, seconds: f64) -> String {
          kinetic energy, {peak_kinetic:.6} J)"
     )
 }
+
 /// Checks the numbers before any work, for an arm of `joints` joints stepped by `dt`: the
 /// ticks to run.
 fn check(args: &SimulateArgs, joints: usize, dt: f64) -> Result<u64, Failure> {

@@ -200,8 +200,7 @@ impl TrialLoop {
         self.learning_path.clear();
         let object = self.draw_target()?;
         let start = self.draw_start(&object)?;
-        self.path.push(start);
-        self.learning_path.push(start);
+        self.keep_pose(start);
         if let Some(clock) = self.clock {
             self.start_clock(&clock, &object);
         }
@@ -247,8 +246,7 @@ impl TrialLoop {
         let step = trial.steps + 1;
         let (theta_deg, reading) = match sight {
             Ok(seen) => {
-                self.path.push(seen);
-                self.learning_path.push(seen);
+                self.keep_pose(seen);
                 (seen.theta_deg, Ok(seen.c))
             }
             Err((not_seen, exact)) => (exact, Err(not_seen)),
@@ -279,6 +277,15 @@ impl TrialLoop {
             seconds,
             end,
         })
+    }
+
+    /// Adds a pose at which a move ended (or the start) to the trial's path, and to the
+    /// learning path when frames during moves are learned too.
+    fn keep_pose(&mut self, seen: Observation) {
+        self.path.push(seen);
+        if self.settings.move_frames.is_some() {
+            self.learning_path.push(seen);
+        }
     }
 
     /// Finishes the trial begun last, over or not: `learner` learns from its poses (and the

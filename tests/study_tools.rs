@@ -1,6 +1,7 @@
 //! Plots, comparisons and sweeps: the PNG has its panels, a comparison reproduces separate
 //! runs, a sweep expands exactly, its Slurm script runs a cell from any folder, bad study
-//! requests are refused before anything runs, and a study passes signals on to its cells.
+//! requests are refused before anything runs, and a study passes signals on to its cells
+//! and shows its progress on a terminal.
 
 #[path = "common/slurm.rs"]
 mod slurm;
@@ -592,4 +593,39 @@ fn gather_refuses_a_study_without_cells() {
         text(&gathered.stderr)
     );
     assert!(!study.join("table.md").exists(), "no empty table written");
+}
+
+/// Runs `compare` under `script`, whose pseudo-terminal is the study's stderr, and returns
+/// what the terminal was sent.
+fn compare_on_a_terminal(data: &Path) -> String {
+    let command = format!(
+        "{EYEHAND} compare --methods lin5,lin8 --trials 2000 --seeds 1 --configs {} --data {}",
+        configs().display(),
+        data.display()
+    );
+    let out = Command::new("script")
+        .args(["-q", "-e", "-c", &command, "/dev/null"])
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("script (util-linux) runs the study on a pseudo-terminal");
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    text(&out.stdout)
+}
+
+#[test]
+fn a_study_on_a_terminal_shows_cells_done_and_trials_per_second() {
+    let data = tempfile::tempdir().unwrap();
+    let screen = compare_on_a_terminal(data.path());
+    assert!(
+        screen.contains("2/2 cells"),
+        "no bar of cells done in {screen:?}"
+    );
+    assert!(
+        screen.contains("trials/s"),
+        "no trials per second in {screen:?}"
+    );
+    assert!(
+        screen.contains("cell 1 finished"),
+        "no line per cell in {screen:?}"
+    );
 }

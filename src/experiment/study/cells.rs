@@ -3,6 +3,7 @@
 //! subcommand that runs one cell; several side by side; signals passed on to them.
 
 use super::plan::StudyFolder;
+use super::progress::StudyProgress;
 use super::signals::{forward, Interrupts};
 use super::StudyError;
 use crate::experiment::{run, RunError, RunResult, StopRequest};
@@ -118,6 +119,9 @@ pub fn run_locally(
     let mut running: Vec<(usize, Child, Instant)> = Vec::new();
     let mut forwarded = None;
     let mut failure = None;
+    let mut progress = StudyProgress::new(cells);
+    let mut finished = Vec::new();
+    let mut shown_running = 0;
     loop {
         for signal in interrupts.received() {
             for (_, child, _) in &running {
@@ -136,44 +140,84 @@ pub fn run_locally(
             }
             next += 1;
         }
+        if running.len() != shown_running {
+            shown_running = running.len();
+            progress.running(shown_running);
+        }
         // A child that cannot be waited for is dropped: it was ours and is reaped on exit.
         running.retain_mut(|(index, child, started)| match child.try_wait() {
             Ok(None) => true,
             ended => {
                 done += 1;
-                let how = match ended {
-                    Ok(Some(status)) if status.success() => "finished".to_string(),
-                    Ok(Some(status)) => format!("ended with {status}"),
-                    _ => "could not be waited for".to_string(),
-                };
                 let seconds = started.elapsed().as_secs_f64();
                 cell_seconds += seconds;
                 let left = (cells - done) as f64 * cell_seconds / done as f64 / jobs.max(1) as f64;
-                let pace =
-                    super::gather::read_summary(&folder.cell(*index)).map_or(String::new(), |s| {
-                        format!(
-                            ": {} trials at {:.0} trials/s",
-                            s.trials, s.trials_per_second
-                        )
-                    });
-                eprintln!(
-                    "eyehand: cell {index} {how} after {seconds:.2} s{pace} ({done} of {cells} \
-                     done, about {left:.0} s left; log: {})",
-                    folder.local_log(*index).display()
-                );
+                let ended = CellEnd {
+                    index: *index,
+                    ended,
+                    seconds,
+                    done,
+                    cells,
+                    left,
+                };
+                finished.push(ended.line(folder));
                 false
             }
         });
+        for (line, trials) in finished.drain(..) {
+            shown_running = running.len();
+            progress.cell_done(&line, trials, shown_running);
+        }
         let more = forwarded.is_none() && failure.is_none() && next < cells;
         if running.is_empty() && !more {
             break;
         }
         std::thread::sleep(POLL);
     }
+    progress.finish();
     match (failure, forwarded) {
         (Some(e), _) => Err(e),
         (None, Some(signal)) => Ok(LocalRunEnd::Interrupted(signal)),
         (None, None) => Ok(LocalRunEnd::Completed),
+    }
+}
+
+/// How one cell ended, and where the study stands after it.
+struct CellEnd {
+    index: usize,
+    ended: std::io::Result<Option<std::process::ExitStatus>>,
+    seconds: f64,
+    done: usize,
+    cells: usize,
+    left: f64,
+}
+
+impl CellEnd {
+    /// The line that says it, and the cell's trials (0 when its summary cannot be read).
+    fn line(self, folder: &StudyFolder) -> (String, u64) {
+        let how = match self.ended {
+            Ok(Some(status)) if status.success() => "finished".to_string(),
+            Ok(Some(status)) => format!("ended with {status}"),
+            _ => "could not be waited for".to_string(),
+        };
+        let summary = super::gather::read_summary(&folder.cell(self.index)).ok();
+        let pace = summary.as_ref().map_or(String::new(), |s| {
+            format!(
+                ": {} trials at {:.0} trials/s",
+                s.trials, s.trials_per_second
+            )
+        });
+        let line = format!(
+            "eyehand: cell {} {how} after {:.2} s{pace} ({} of {} done, about {:.0} s left; \
+             log: {})",
+            self.index,
+            self.seconds,
+            self.done,
+            self.cells,
+            self.left,
+            folder.local_log(self.index).display()
+        );
+        (line, summary.map_or(0, |s| s.trials as u64))
     }
 }
 

@@ -6,6 +6,7 @@ mod compare;
 mod error;
 mod gather;
 mod plan;
+mod progress;
 mod signals;
 mod slurm;
 mod sweep;

@@ -16,7 +16,7 @@ pub struct Series {
 impl Series {
     /// Reads a `trial value minutes` file; a missing file is an empty series. A last line
     /// without its newline (a run killed while writing) is left out; any other line that is
-    /// not three numbers is an error naming it.
+    /// not three finite numbers (a run writes no `nan` or `inf`) is an error naming it.
     pub fn read(path: &Path) -> io::Result<Series> {
         let text = match std::fs::read_to_string(path) {
             Ok(text) => text,
@@ -30,22 +30,25 @@ impl Series {
         let mut series = Series::default();
         for (index, line) in whole.lines().enumerate() {
             let mut fields = line.split_whitespace().map(str::parse::<f64>);
-            match (fields.next(), fields.next(), fields.next(), fields.next()) {
+            let fault = match (fields.next(), fields.next(), fields.next(), fields.next()) {
                 (Some(Ok(trial)), Some(Ok(value)), Some(Ok(minutes)), None) => {
-                    series.points.push((trial, value));
-                    series.minutes.push((trial, minutes));
+                    if [trial, value, minutes].iter().all(|v| v.is_finite()) {
+                        series.points.push((trial, value));
+                        series.minutes.push((trial, minutes));
+                        continue;
+                    }
+                    "holds a number that is not finite"
                 }
-                _ => {
-                    return Err(io::Error::new(
-                        io::ErrorKind::InvalidData,
-                        format!(
-                            "line {}: `{}` is not `trial value minutes`",
-                            index + 1,
-                            crate::experiment::config::shown(line)
-                        ),
-                    ))
-                }
-            }
+                _ => "is not `trial value minutes`",
+            };
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidData,
+                format!(
+                    "line {}: `{}` {fault}",
+                    index + 1,
+                    crate::experiment::config::shown(line)
+                ),
+            ));
         }
         Ok(series)
     }
@@ -120,6 +123,19 @@ mod tests {
         let err = Series::read(&path).unwrap_err();
         assert_eq!(err.kind(), io::ErrorKind::InvalidData);
         assert!(err.to_string().starts_with("line 2: `not a line`"), "{err}");
+    }
+
+    #[test]
+    fn a_line_with_a_number_that_is_not_finite_is_an_error() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("1step");
+        for bad in ["2 nan 0.2", "2 inf 0.2", "NaN 3.5 0.2", "2 3.5 -inf"] {
+            std::fs::write(&path, format!("1 2.5 0.1\n{bad}\n")).unwrap();
+            let err = Series::read(&path).unwrap_err();
+            assert_eq!(err.kind(), io::ErrorKind::InvalidData);
+            let want = format!("line 2: `{bad}` holds a number that is not finite");
+            assert_eq!(err.to_string(), want);
+        }
     }
 
     #[test]

@@ -7,7 +7,9 @@
 mod slurm;
 
 use eyehand::experiment::plot::{plot_run, PANELS, PLOT_SIZE};
-use eyehand::experiment::study::{compare_plan, sweep_plan, CompareRequest, Setting, StudyError};
+use eyehand::experiment::study::{
+    compare_plan, shell_quote, sweep_plan, CompareRequest, Setting, StudyError,
+};
 use eyehand::experiment::{run, Config, RequestError, RunOptions};
 use eyehand::learn::Method;
 use slurm::{eyehand, text, without_minutes};
@@ -599,9 +601,10 @@ fn gather_refuses_a_study_without_cells() {
 /// what the terminal was sent.
 fn compare_on_a_terminal(data: &Path) -> String {
     let command = format!(
-        "{EYEHAND} compare --methods lin5,lin8 --trials 2000 --seeds 1 --configs {} --data {}",
-        configs().display(),
-        data.display()
+        "{} compare --methods lin5,lin8 --trials 2000 --seeds 1 --configs {} --data {}",
+        shell_quote(EYEHAND),
+        shell_quote(&configs().display().to_string()),
+        shell_quote(&data.display().to_string())
     );
     let out = Command::new("script")
         .args(["-q", "-e", "-c", &command, "/dev/null"])
@@ -616,13 +619,14 @@ fn compare_on_a_terminal(data: &Path) -> String {
 fn a_study_on_a_terminal_shows_cells_done_and_trials_per_second() {
     let data = tempfile::tempdir().unwrap();
     let screen = compare_on_a_terminal(data.path());
+    // The terminal's redraws are separated by carriage returns; a bar is one of them.
+    let bar = screen
+        .split(['\r', '\n'])
+        .find(|shown| shown.contains("2/2 cells"))
+        .unwrap_or_else(|| panic!("no bar of cells done in {screen:?}"));
     assert!(
-        screen.contains("2/2 cells"),
-        "no bar of cells done in {screen:?}"
-    );
-    assert!(
-        screen.contains("trials/s"),
-        "no trials per second in {screen:?}"
+        bar.contains(" running, ") && bar.contains(" trials/s"),
+        "no cells running and trials per second in the bar {bar:?}"
     );
     assert!(
         screen.contains("cell 1 finished"),

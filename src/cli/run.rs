@@ -118,8 +118,9 @@ const CONTACT_STOPS_WORTH_A_WARNING: f64 = 0.01;
 /// Root merges in a run past which the run says that its learner kept starting over.
 const ROOT_MERGES_WORTH_A_WARNING: usize = 10;
 
-/// How a finished run exits: 130/143 when a signal stopped it, 1 when every trial failed
-/// (saying why), 0 otherwise (warning when more than 1% of the moves were stopped by a
+/// How a finished run exits: 130/143 when a signal stopped it, 1 when it learned nothing
+/// (saying why, see [`experiment::NotLearned`]; its reason stands for the warnings), 0
+/// otherwise (warning when more than 1% of the moves were stopped by a
 /// contact, or the learner's tree kept being cut at its root).
 fn outcome(result: &RunResult, stop: &StopRequest) -> Result<(), Failure> {
     let summary = &result.summary;
@@ -133,6 +134,12 @@ fn outcome(result: &RunResult, stop: &StopRequest) -> Result<(), Failure> {
                 result.folder.display()
             ),
         ));
+    }
+    if let Some(not_learned) = &summary.not_learned {
+        return Err(failed(format!(
+            "nothing was learned: {}; summary.json says \"learned\": false",
+            not_learned.reason
+        )));
     }
     if summary.stopped_by_contact as f64 > CONTACT_STOPS_WORTH_A_WARNING * summary.moves as f64 {
         eprintln!(
@@ -150,12 +157,6 @@ fn outcome(result: &RunResult, stop: &StopRequest) -> Result<(), Failure> {
              (am_error_tresh, am_error_iters; 20 over 300 patterns does not fire on the OSCAR-6)",
             summary.root_merges, summary.trials
         );
-    }
-    if summary.trials > 0 && summary.failures == summary.trials {
-        return Err(failed(format!(
-            "all {} trials failed ({}): nothing was learned",
-            summary.trials, result.failures
-        )));
     }
     Ok(())
 }

@@ -65,6 +65,12 @@ pub struct TrialOutcome {
     /// Simulated seconds of the feedback steps: from the first frame's delivery to the
     /// last step's frame (moves, settling and waits for frames).
     pub seconds: f64,
+    /// The largest change (degrees) of a controlled joint from the trial's start pose over
+    /// the trial, in the simulator's true angles (no encoder noise): 0 for an arm that
+    /// never left its start.
+    pub moved_deg: f64,
+    /// The largest joint move (degrees) the learner proposed in the trial.
+    pub proposed_deg: f64,
 }
 
 /// What a frame shows: the pose and reading as the sensors report them, or why the object
@@ -159,6 +165,8 @@ impl TrialLoop {
             failure: None,
             reached: false,
             seconds: 0.0,
+            moved_deg: 0.0,
+            proposed_deg: 0.0,
         };
         let mut here = match self.begin_trial() {
             Ok(start) => start,
@@ -167,8 +175,10 @@ impl TrialLoop {
                 return Ok(outcome);
             }
         };
+        let start_deg = self.true_controlled_deg();
         for _ in 0..self.settings.feedback_steps {
             let delta_deg = learner.propose(&here.query());
+            outcome.proposed_deg = outcome.proposed_deg.max(delta_deg.amax());
             let report = match self.step_trial(&delta_deg) {
                 Ok(report) => report,
                 Err(_) => {
@@ -177,6 +187,8 @@ impl TrialLoop {
                 }
             };
             outcome.seconds = report.seconds;
+            let moved = (self.true_controlled_deg() - start_deg).amax();
+            outcome.moved_deg = outcome.moved_deg.max(moved);
             if report.reading.is_ok() {
                 outcome.distances_mm.push(report.distance_mm);
                 here = self.path[self.path.len() - 1];
@@ -189,6 +201,13 @@ impl TrialLoop {
         }
         self.finish_trial(learner)?;
         Ok(outcome)
+    }
+
+    /// The controlled joint angles (degrees) the simulator's arm is at, without encoder
+    /// noise.
+    fn true_controlled_deg(&self) -> Vector3<f64> {
+        let model = self.sim.model();
+        model.controlled_of(&self.sim.joints()).map(f64::to_degrees)
     }
 
     /// Begins a trial: draws a reachable target and a start from which the object is seen,

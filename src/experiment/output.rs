@@ -240,6 +240,8 @@ mod tests {
             failure: None,
             reached: true,
             seconds: 4.0,
+            moved_deg: 3.0,
+            proposed_deg: 3.0,
         };
         files
             .record_trial(1, &outcome, &LearnerStats::default())

@@ -3,6 +3,7 @@
 //! reaches its reach space with the camera looking down.
 
 use super::setup::{build_simulator, reach_space};
+use super::start_check::{check_start, PrelearningFault};
 use super::{Config, ConfigErrorKind, Event, SimKind};
 use crate::robot::{ArmModel, ContactRule, Controlled, ReachFitFailure, ReachSpace, RobotError};
 use crate::units::M_PER_CM;
@@ -35,6 +36,38 @@ pub enum PreflightError {
     /// `reach_space auto` and no part of the study's shape fits what the arm reaches.
     #[error("reach_space auto: no half annulus of the study's shape fits inside what this arm reaches with the camera looking down above the floor: {0}")]
     NoReachSpace(ReachFitFailure),
+    /// The lowest targets' bottom lies under the floor.
+    #[error("floor_z {floor_cm} cm lies above the lowest targets' bottom ({bottom_cm:.2} cm: reach_space's lowest camera height less the camera's standoff and the object's radius): those targets would be under the floor")]
+    TargetsUnderFloor {
+        /// The lowest targets' bottom (cm).
+        bottom_cm: f64,
+        /// The floor (cm).
+        floor_cm: f64,
+    },
+    /// Too many targets lie inside an obstacle.
+    #[error(
+        "obstacle: {inside} of {reached} sampled targets the arm reaches lie inside an obstacle (at most {:.0}% may)",
+        (1.0 - MIN_REACHABLE_SHARE) * 100.0
+    )]
+    TargetsInObstacles {
+        /// Targets inside an obstacle.
+        inside: usize,
+        /// Targets the arm reaches.
+        reached: usize,
+    },
+    /// Too few of the pre-learning moves (made before trial 1 around the middle of the
+    /// reach space) can be made.
+    #[error("only {made} of the {moves} pre-learning moves can be made (at least half must be); move {number}: {fault} (obstacle, floor_z, camera_offset, camera_link)")]
+    Prelearning {
+        /// Moves that can be made.
+        made: usize,
+        /// Moves in all.
+        moves: usize,
+        /// The first move that cannot (1-based).
+        number: usize,
+        /// What is wrong with it.
+        fault: PrelearningFault,
+    },
     /// The arm cannot reach (enough of) its reach space.
     #[error(
         "{reachable} of {sampled} sampled reach-space points are reachable by this arm with the camera looking down{} (at least {:.0}% are needed)",
@@ -139,6 +172,7 @@ pub fn preflight(
     }
     let reach = reach_space(config, model).map_err(PreflightError::NoReachSpace)?;
     check_reach(model, &reach, None)?;
+    check_start(config, model, &reach)?;
     let mut changed = model.clone();
     for event in events {
         if let Event::Elongate { link, cm, .. } = *event {

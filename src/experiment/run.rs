@@ -3,6 +3,7 @@
 
 use super::failures::FailureTally;
 use super::interrupt::StopRequest;
+use super::learning_verdict::{LearningWatch, RunEnd};
 use super::output::DataFiles;
 use super::plot::{plot_run, PlotError};
 use super::progress::RunProgress;
@@ -191,6 +192,7 @@ fn drive(
     let mut files = DataFiles::create(&folder)?;
     let mut figures = StepFigures::new(config.trials, config.feedback_steps);
     let mut failures = FailureTally::default();
+    let mut watch = LearningWatch::default();
     let mut finished = 0;
     let mut progress = RunProgress::new(config.trials, options.progress);
     let started = Instant::now();
@@ -210,6 +212,7 @@ fn drive(
         if let Some(failure) = outcome.failure {
             failures.count(failure);
         }
+        watch.trial_done(trial, &outcome, trials.path(), config.minimal_joint_move);
         let to_epsilon = outcome.reached.then_some(outcome.seconds);
         figures.record(trial, &outcome.distances_mm, to_epsilon);
         let stats = learner.stats();
@@ -231,6 +234,14 @@ fn drive(
     let per_trial = |v: f64| v / config.trials as f64;
     let (mean_final_distance_mm, median_final_distance_mm) = figures.final_distance();
     let (reached_epsilon, mean_seconds_to_epsilon) = figures.reaching();
+    let not_learned = watch.verdict(&RunEnd {
+        failures: &failures,
+        window: figures.window(),
+        moves: work.moves,
+        contact_stops: work.contact_stops,
+        patterns: stats.patterns,
+        minimal_joint_move: config.minimal_joint_move,
+    });
     let summary = RunSummary {
         method: learner.name().to_string(),
         sim: config.sim.to_string(),
@@ -256,11 +267,7 @@ fn drive(
         obstacles: config
             .obstacle
             .iter()
-            .map(|o| {
-                let [x, y, z] = o.centre_cm;
-                let [sx, sy, sz] = o.size_cm;
-                [x, y, z, sx, sy, sz]
-            })
+            .map(|o| o.centre_and_size())
             .collect(),
         window: figures.window(),
         mean_distance_mm: figures.means(),
@@ -272,6 +279,8 @@ fn drive(
         reached_epsilon,
         mean_seconds_to_epsilon,
         sensors: SensorSummary::of(config),
+        learned: not_learned.is_none(),
+        not_learned,
     };
     write_info_tail(&folder, &summary, &stats)?;
     summary.write(&folder)?;
@@ -360,6 +369,9 @@ fn write_info_tail(folder: &Path, summary: &RunSummary, stats: &LearnerStats) ->
         summary.trials_per_second * 3600.0
     )?;
     writeln!(info, "failures {}", summary.failures)?;
+    if let Some(not_learned) = &summary.not_learned {
+        writeln!(info, "not_learned {}", not_learned.reason)?;
+    }
     if summary.interrupted {
         writeln!(info, "interrupted after trial {}", summary.trials)?;
     }

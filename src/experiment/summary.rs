@@ -2,6 +2,7 @@
 //! trials (from [`StepFigures`](super::StepFigures)).
 
 use super::failures::FailureTally;
+use super::learning_verdict::NotLearned;
 use super::Config;
 use crate::control::MAX_RECORDED_STEPS;
 use serde::{Deserialize, Serialize};
@@ -92,6 +93,19 @@ pub struct RunSummary {
     /// The sensors: noise, the ray-cast camera's pixel noise, the camera's clock.
     #[serde(default)]
     pub sensors: SensorSummary,
+    /// False when the run learned nothing: every trial failed, no trial gave the learner a
+    /// pattern, or the arm stayed at its start pose in every trial of the window (absent in
+    /// older summaries: true).
+    #[serde(default = "learned_by_default")]
+    pub learned: bool,
+    /// How the run learned nothing, and the likely cause (null when it learned).
+    #[serde(default)]
+    pub not_learned: Option<NotLearned>,
+}
+
+/// What a summary written before `learned` existed says.
+fn learned_by_default() -> bool {
+    true
 }
 
 /// The run's sensing entries, as `summary.json` reports them (field names are the config

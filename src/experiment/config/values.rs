@@ -237,6 +237,13 @@ pub struct ObstacleBox {
 }
 
 impl ObstacleBox {
+    /// `[x, y, z, sx, sy, sz]`: its centre and side lengths (cm), as the config line and
+    /// `summary.json` give them.
+    pub fn centre_and_size(&self) -> [f64; 6] {
+        let ([x, y, z], [sx, sy, sz]) = (self.centre_cm, self.size_cm);
+        [x, y, z, sx, sy, sz]
+    }
+
     /// The box in the simulators' units (m).
     pub fn obstacle(&self) -> crate::robot::Obstacle {
         let m = |v: [f64; 3]| nalgebra::Vector3::from(v) * crate::units::M_PER_CM;

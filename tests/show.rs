@@ -150,6 +150,52 @@ fn a_trial_the_run_does_not_have_is_a_clear_error() {
     assert!(String::from_utf8_lossy(&missing.stderr).contains("is not a run folder"));
 }
 
+/// `info` with its line starting `entry ` replaced by `line`.
+fn edit_info(folder: &Path, entry: &str, line: &str) {
+    let path = folder.join("info");
+    let info = std::fs::read_to_string(&path).unwrap();
+    let prefix = format!("{entry} ");
+    assert!(
+        info.lines().any(|l| l.starts_with(&prefix)),
+        "{entry} in info"
+    );
+    let edited: Vec<&str> = info
+        .lines()
+        .map(|l| if l.starts_with(&prefix) { line } else { l })
+        .collect();
+    std::fs::write(&path, edited.join("\n") + "\n").unwrap();
+}
+
+#[test]
+fn a_run_whose_info_was_edited_is_refused_naming_the_entry() {
+    let data = tempfile::tempdir().unwrap();
+    let folder = run_in(data.path(), 20, vec![], |_| {});
+    let original = std::fs::read_to_string(folder.join("info")).unwrap();
+    edit_info(&folder, "seed", "seed 5");
+    let output = Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .args(["show", folder.to_str().unwrap(), "--trial", "15"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    let message = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        message.contains("trial 1's distance after step 1 was ")
+            && message
+                .contains("no longer describes this run (its `seed` differs from summary.json's)"),
+        "{message}"
+    );
+    assert!(!folder.join("show/15").exists(), "nothing drawn");
+    std::fs::write(folder.join("info"), &original).unwrap();
+    edit_info(&folder, "known_pattern_perc", "known_pattern_perc 0");
+    let err = show_trials(&folder, TrialRange::single(15)).unwrap_err();
+    assert!(
+        matches!(err, ShowError::Diverged { entry: None, .. }),
+        "an entry summary.json does not hold: {err}"
+    );
+    std::fs::write(folder.join("info"), &original).unwrap();
+    assert!(show_trials(&folder, TrialRange::single(15)).is_ok());
+}
+
 /// An RGB image read back from a PNG: (width, height, pixels).
 fn read_png(path: &Path) -> (usize, usize, Vec<[u8; 3]>) {
     let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));

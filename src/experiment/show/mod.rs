@@ -5,6 +5,7 @@
 
 mod arm_view;
 mod camera_image;
+mod divergence;
 mod recorded_run;
 mod replay;
 mod trial_files;
@@ -28,6 +29,11 @@ pub use trial_range::TrialRange;
 pub use watch::Look;
 
 use std::path::PathBuf;
+
+/// A distance as a `Diverged` error shows it.
+fn mm(distance: &Option<f64>) -> String {
+    distance.map_or("none (no step 1)".to_string(), |d| format!("{d:.6} mm"))
+}
 
 /// Why a run could not be shown or recorded.
 #[derive(Debug, thiserror::Error)]
@@ -66,6 +72,26 @@ pub enum ShowError {
     /// The replay failed as the run would have (learner storage, an event).
     #[error("replaying the run: {0}")]
     Replay(#[from] crate::experiment::RunError),
+    /// The replay does not reproduce the run: a trial's distance after step 1 is not the
+    /// one its `1step` file holds (its `info` was edited, or its learner is not the
+    /// config's).
+    #[error(
+        "{path}: trial {trial}'s distance after step 1 was {} in the run but is {} in the replay: the folder's info no longer describes this run{}",
+        mm(.recorded), mm(.replayed),
+        .entry.map_or(String::new(), |e| format!(" (its `{e}` differs from summary.json's)"))
+    )]
+    Diverged {
+        /// The run's `1step` file.
+        path: PathBuf,
+        /// The first trial that differs.
+        trial: usize,
+        /// Its distance in the run (mm; `None`: no step 1).
+        recorded: Option<f64>,
+        /// Its distance in the replay (mm).
+        replayed: Option<f64>,
+        /// The `info` entry `summary.json` contradicts, where one does.
+        entry: Option<&'static str>,
+    },
     /// Writing a file failed.
     #[error("writing {path}: {reason}")]
     Write {

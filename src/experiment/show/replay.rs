@@ -2,6 +2,7 @@
 //! camera, learner and trial loop, driven through trials 1..=N exactly as the run drove
 //! them (runs are deterministic), with the trials of interest watched.
 
+use super::divergence::StepOneLog;
 use super::watch::{Look, SharedLog, WatchLog, WatchedCamera, WatchedSim};
 use super::{RecordedRun, ShowError};
 use crate::control::{Failure, TrialLoop, TrialOutcome};
@@ -32,7 +33,8 @@ pub struct TrialTrace {
 
 /// Replays trials 1..=`last` of `run`, handing every trial for which `watched` is true to
 /// `on_trial`. `ticks` keeps the dynamic simulator's physics ticks. A learner that stores
-/// its patterns in a file puts it in `scratch`.
+/// its patterns in a file puts it in `scratch`. Every trial's distance after step 1 must be
+/// the run's (its `1step` file), else the replay stops with [`ShowError::Diverged`].
 pub fn replay(
     run: &RecordedRun,
     last: usize,
@@ -42,6 +44,7 @@ pub fn replay(
     mut on_trial: impl FnMut(TrialTrace) -> Result<(), ShowError>,
 ) -> Result<(), ShowError> {
     run.check_trials(1, last)?;
+    let mut step_one = StepOneLog::read(run)?;
     let setup = &run.setup;
     let log = SharedLog::default();
     let sim = WatchedSim::new(setup.simulator(), log.clone());
@@ -59,6 +62,7 @@ pub fn replay(
         log.borrow_mut().clear();
         trials.sim_mut().keep_ticks(ticks && watched(trial));
         let outcome = next_trial(&mut trials, learner.as_mut(), &setup.events, trial)?;
+        step_one.check(run, trial, outcome.distances_mm.first().copied())?;
         learner.drain_events(&mut model_events);
         model_events.clear();
         if watched(trial) {

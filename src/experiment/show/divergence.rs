@@ -1,0 +1,105 @@
+//! A replay held against the run it replays: each trial's distance after step 1 must be the
+//! one the run wrote into its `1step` file, else the folder's `info` no longer describes
+//! that run (an entry was edited) and what would be drawn is another run's trial.
+
+use super::{RecordedRun, ShowError};
+use crate::experiment::RunSummary;
+use std::collections::VecDeque;
+use std::path::PathBuf;
+
+/// The most a replayed distance may differ from the one written with six decimals (mm):
+/// half the last written digit, and rounding.
+const WRITTEN_PRECISION_MM: f64 = 0.5e-6 * 1.01;
+
+/// The run's step-1 distances, trial by trial, to hold a replay against.
+#[derive(Debug, Clone)]
+pub(super) struct StepOneLog {
+    path: PathBuf,
+    lines: VecDeque<(usize, f64)>,
+}
+
+impl StepOneLog {
+    /// Reads `1step` of the run (trial and distance of each trial that took step 1, in trial
+    /// order); a missing file or a line that does not parse is an error.
+    pub(super) fn read(run: &RecordedRun) -> Result<StepOneLog, ShowError> {
+        let path = run.folder.join("1step");
+        let bad = |reason: String| ShowError::BadInfo {
+            path: path.clone(),
+            reason,
+        };
+        let text = std::fs::read_to_string(&path).map_err(|e| bad(e.to_string()))?;
+        let lines = text
+            .lines()
+            .enumerate()
+            .map(|(index, line)| {
+                let mut words = line.split_whitespace();
+                let trial = words.next().and_then(|w| w.parse().ok());
+                let distance = words.next().and_then(|w| w.parse::<f64>().ok());
+                match (trial, distance) {
+                    (Some(trial), Some(mm)) if mm.is_finite() => Ok((trial, mm)),
+                    _ => Err(bad(format!(
+                        "line {}: not `TRIAL DISTANCE MINUTES`",
+                        index + 1
+                    ))),
+                }
+            })
+            .collect::<Result<_, _>>()?;
+        Ok(StepOneLog { path, lines })
+    }
+
+    /// Checks replayed trial `trial`, whose distance after step 1 was `replayed` (`None`: it
+    /// took no step), against the run's line for it.
+    pub(super) fn check(
+        &mut self,
+        run: &RecordedRun,
+        trial: usize,
+        replayed: Option<f64>,
+    ) -> Result<(), ShowError> {
+        let recorded = match self.lines.front() {
+            Some(&(t, mm)) if t == trial => {
+                self.lines.pop_front();
+                Some(mm)
+            }
+            _ => None,
+        };
+        let same = match (recorded, replayed) {
+            (Some(a), Some(b)) => (a - b).abs() <= WRITTEN_PRECISION_MM,
+            (None, None) => true,
+            _ => false,
+        };
+        if same {
+            return Ok(());
+        }
+        Err(ShowError::Diverged {
+            path: self.path.clone(),
+            trial,
+            recorded,
+            replayed,
+            entry: mismatched_entry(run),
+        })
+    }
+}
+
+/// The entry of the folder's `info` that its `summary.json` contradicts, if one does: the
+/// seed, method, simulator, camera, events or obstacles.
+fn mismatched_entry(run: &RecordedRun) -> Option<&'static str> {
+    let text = std::fs::read_to_string(run.folder.join("summary.json")).ok()?;
+    let summary: RunSummary = serde_json::from_str(&text).ok()?;
+    let config = &run.setup.config;
+    let events: Vec<String> = run.setup.events.iter().map(|e| e.to_string()).collect();
+    let obstacles: Vec<[f64; 6]> = config
+        .obstacle
+        .iter()
+        .map(|o| o.centre_and_size())
+        .collect();
+    [
+        ("seed", summary.seed != config.seed),
+        ("method", summary.method != config.method.name()),
+        ("sim", summary.sim != config.sim.to_string()),
+        ("camera", summary.camera != config.camera.to_string()),
+        ("event", summary.events != events),
+        ("obstacle", summary.obstacles != obstacles),
+    ]
+    .into_iter()
+    .find_map(|(entry, differs)| differs.then_some(entry))
+}

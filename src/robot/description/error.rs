@@ -171,6 +171,19 @@ pub enum DescriptionErrorKind {
         /// The mesh as the URDF names it.
         filename: String,
     },
+    /// A relative, absolute or `file://` mesh outside the URDF's folder and every
+    /// `package_paths` folder.
+    #[error(
+        "link `{link}`: mesh `{filename}` lies outside the URDF's folder and every \
+         package_paths folder (after resolving `..` and symbolic links); add its folder to \
+         package_paths to read it"
+    )]
+    MeshOutsideFolders {
+        /// The link.
+        link: String,
+        /// The mesh as the URDF names it.
+        filename: String,
+    },
     /// A collision mesh in a format other than OBJ and STL.
     #[error("link `{link}`: collision mesh `{filename}` is neither OBJ nor STL")]
     UnsupportedMesh {

@@ -205,6 +205,10 @@ impl<'a> GeometryReader<'a> {
                         link: link.to_string(),
                         filename: filename.to_string(),
                     },
+                    MeshPathError::OutsideFolders => Kind::MeshOutsideFolders {
+                        link: link.to_string(),
+                        filename: filename.to_string(),
+                    },
                     MeshPathError::NotAFile => Kind::NotAMesh {
                         link: link.to_string(),
                         filename: filename.to_string(),

@@ -1,5 +1,6 @@
 //! Where a URDF's mesh `filename` points on disk: relative to the URDF's folder, absolute,
-//! `file://`, or `package://NAME/...` looked up in a list of search paths.
+//! `file://`, or `package://NAME/...` looked up in a list of search paths; never outside the
+//! folders a mesh may be read from.
 
 use std::path::{Path, PathBuf};
 
@@ -9,6 +10,9 @@ pub enum MeshPathError {
     /// A `package://` mesh that would be read from outside its search folder: a `..`,
     /// root or empty part in its name, or a file that a symbolic link puts elsewhere.
     OutsidePackage,
+    /// A relative, absolute or `file://` mesh outside the URDF's folder and every search
+    /// folder (after resolving `..` and symbolic links).
+    OutsideFolders,
     /// Something is there, but not a regular file (a folder, a FIFO, a device).
     NotAFile,
 }
@@ -17,8 +21,9 @@ pub enum MeshPathError {
 ///
 /// `package://NAME/REST` is tried as `SEARCH/NAME/REST` for every search path, then as
 /// `SEARCH/REST` for a search path that is itself the package folder NAME; the file must
-/// stay inside that search folder (after resolving `..` and symbolic links). The first
-/// candidate at which something is must be a regular file.
+/// stay inside that search folder (after resolving `..` and symbolic links). Any other name
+/// must lead inside the URDF's folder or one of the search paths. The first candidate at
+/// which something is must be a regular file.
 pub fn resolve_mesh(
     filename: &str,
     urdf_folder: &Path,
@@ -31,7 +36,16 @@ pub fn resolve_mesh(
     };
     let Some(rest) = filename.strip_prefix("package://") else {
         let found = mesh_candidates(filename, urdf_folder, package_paths);
-        return found.into_iter().find_map(regular).transpose();
+        let Some(path) = found.into_iter().find_map(regular).transpose()? else {
+            return Ok(None);
+        };
+        let mut folders =
+            std::iter::once(urdf_folder).chain(package_paths.iter().map(|p| p.as_path()));
+        return if folders.any(|folder| lies_inside(&path, folder)) {
+            Ok(Some(path))
+        } else {
+            Err(MeshPathError::OutsideFolders)
+        };
     };
     let plain = |part: &str| {
         !part.is_empty()
@@ -46,11 +60,7 @@ pub fn resolve_mesh(
     for (search, path) in package_candidates(package, inside, package_paths) {
         if let Some(found) = regular(path) {
             let path = found?;
-            let inside_search = match (path.canonicalize(), search.canonicalize()) {
-                (Ok(file), Ok(folder)) => file.starts_with(folder),
-                _ => false,
-            };
-            return if inside_search {
+            return if lies_inside(&path, search) {
                 Ok(Some(path))
             } else {
                 Err(MeshPathError::OutsidePackage)
@@ -58,6 +68,14 @@ pub fn resolve_mesh(
         }
     }
     Ok(None)
+}
+
+/// True when `path`, with `..` and symbolic links resolved, lies inside `folder`.
+fn lies_inside(path: &Path, folder: &Path) -> bool {
+    match (path.canonicalize(), folder.canonicalize()) {
+        (Ok(file), Ok(folder)) => file.starts_with(folder),
+        _ => false,
+    }
 }
 
 /// The search folder and path of every place `package://PACKAGE/INSIDE` may be, in order.
@@ -108,17 +126,25 @@ mod tests {
         fs::write(&mesh, "solid").unwrap();
         let urdf = root.join("urdf");
         let none: &[PathBuf] = &[];
+        let search = [root.join("elsewhere"), root.join("robots")];
         assert_eq!(
-            resolve_mesh("../robots/arm/meshes/a.stl", &urdf, none),
+            resolve_mesh("../robots/arm/meshes/a.stl", &urdf, &search),
             Ok(Some(urdf.join("../robots/arm/meshes/a.stl")))
         );
         let absolute = format!("file://{}", mesh.display());
-        assert_eq!(resolve_mesh(&absolute, &urdf, none), Ok(Some(mesh.clone())));
+        assert_eq!(
+            resolve_mesh(&absolute, &urdf, &search),
+            Ok(Some(mesh.clone()))
+        );
+        let beside = root.join("robots/arm");
+        assert_eq!(
+            resolve_mesh("meshes/a.stl", &beside, none),
+            Ok(Some(beside.join("meshes/a.stl")))
+        );
         assert_eq!(
             resolve_mesh("package://arm/meshes/a.stl", &urdf, none),
             Ok(None)
         );
-        let search = [root.join("elsewhere"), root.join("robots")];
         assert_eq!(
             resolve_mesh("package://arm/meshes/a.stl", &urdf, &search),
             Ok(Some(mesh.clone()))
@@ -166,6 +192,40 @@ mod tests {
         assert_eq!(
             resolve_mesh("package://oscar/meshes/link.stl", &urdf, &search),
             Err(MeshPathError::OutsidePackage)
+        );
+    }
+
+    /// A relative or absolute mesh outside the URDF's folder and every search path is not
+    /// read: `..` out of the folder, an absolute path elsewhere, a symbolic link out.
+    #[test]
+    fn a_plain_mesh_never_leads_outside_the_urdf_folder_or_the_search_paths() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path();
+        fs::create_dir_all(root.join("robot/meshes")).unwrap();
+        fs::create_dir_all(root.join("x")).unwrap();
+        let secret = root.join("x/secret.stl");
+        fs::write(&secret, "solid").unwrap();
+        let urdf = root.join("robot");
+        std::os::unix::fs::symlink(&secret, urdf.join("meshes/link.stl")).unwrap();
+        let absolute = secret.display().to_string();
+        let file_url = format!("file://{absolute}");
+        for escape in [
+            "../x/secret.stl",
+            "meshes/../../x/secret.stl",
+            absolute.as_str(),
+            file_url.as_str(),
+            "meshes/link.stl",
+        ] {
+            assert_eq!(
+                resolve_mesh(escape, &urdf, &[]),
+                Err(MeshPathError::OutsideFolders),
+                "{escape}"
+            );
+        }
+        let x_searched = [root.join("x")];
+        assert_eq!(
+            resolve_mesh("../x/secret.stl", &urdf, &x_searched),
+            Ok(Some(urdf.join("../x/secret.stl")))
         );
     }
 

@@ -553,6 +553,20 @@ fn a_comparison_for_slurm_runs_by_hand_and_gathers_like_a_sweep() {
         "{}",
         text(&out.stdout)
     );
+    // A cell folder holding another run (seed 2's summary in seed 1's cell) is not
+    // gathered under the cell's label.
+    let cells = script.parent().unwrap().join("cells");
+    std::fs::copy(cells.join("1/summary.json"), cells.join("0/summary.json")).unwrap();
+    let out = eyehand(&["compare", "gather", study], project.path());
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stdout).contains("| ik | 1 |")
+            && text(&out.stdout).contains(
+                "cell 0 (ik, seed 1): its summary.json is another run's (method ik, seed 2; the cell runs method ik, seed 1)"
+            ),
+        "{}",
+        text(&out.stdout)
+    );
 }
 
 /// A study whose `cells.json` lists no cells is no study: `gather` refuses it rather than

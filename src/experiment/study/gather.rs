@@ -53,7 +53,7 @@ pub fn gather(folder: &StudyFolder) -> Result<GatherReport, StudyError> {
     let mut unfinished = Vec::new();
     for (index, cell) in plan.cells.iter().enumerate() {
         let run_folder = folder.cell(index);
-        match read_summary(&run_folder) {
+        match read_summary(&run_folder).and_then(|summary| cell_of(summary, cell)) {
             Ok(summary) => finished.push(CellResult {
                 index,
                 cell: cell.clone(),
@@ -114,6 +114,25 @@ pub(super) fn read_summary(
         return Err(format!(
             "interrupted after trial {} of its summary",
             summary.trials
+        ));
+    }
+    Ok(summary)
+}
+
+/// `summary` when it is the run of `cell` (its method and seed), else why it is not: a
+/// folder holding another study's cells would be gathered under the wrong labels.
+fn cell_of(
+    summary: crate::experiment::RunSummary,
+    cell: &super::plan::Cell,
+) -> Result<crate::experiment::RunSummary, String> {
+    let method = cell.request.method.map(|m| m.name());
+    if summary.seed != cell.seed || method.is_some_and(|m| m != summary.method) {
+        return Err(format!(
+            "its summary.json is another run's (method {}, seed {}; the cell runs {}seed {}): the folder holds another study's cells",
+            summary.method,
+            summary.seed,
+            method.map_or(String::new(), |m| format!("method {m}, ")),
+            cell.seed
         ));
     }
     Ok(summary)

@@ -228,8 +228,10 @@ config_entries! {
     init_D: f64 = 25.0, "", LWPR, PositiveUpTo(1e6);
     /// lwpr: a new field's learning rate of its distance metric.
     init_alpha: f64 = 50.0, "", LWPR, PositiveUpTo(1e6);
-    /// lwpr: a new field is made where no field is activated above this.
-    w_gen: f64 = 0.1, "", LWPR, OpenUnit;
+    /// lwpr: a new field is made where no field is activated above this (at most 0.5:
+    /// nearer 1 almost every pattern makes a field, and a run slows to a few trials per
+    /// second).
+    w_gen: f64 = 0.1, "", LWPR, PositiveUpTo(0.5);
     /// lwpr: of two fields both activated above this, the narrower is dropped (1: never;
     /// above w_gen).
     w_prune: f64 = 1.0, "", LWPR, Rule::Any;

@@ -211,14 +211,17 @@ config_entries! {
     nnw_train_delay: usize = 15, "", NNW, Rule::Any;
     /// Initial weights of a net are drawn in ±wrange.
     wrange: f64 = 0.1, "", NETS, PositiveUpTo(10.0);
-    /// nnw: hidden units of each node's net.
-    hidden_units: usize = 5, "", NNW, Within(1.0, 10000.0);
-    /// ffn: hidden units of the one net (25; the study also tried 45).
-    ffn_hidden_units: usize = 25, "", FFN, Within(1.0, 10000.0);
+    /// nnw: hidden units of each node's net (at most 100: every node trains its own net,
+    /// and 5,000 take 6 s a trial).
+    hidden_units: usize = 5, "", NNW, Within(1.0, 100.0);
+    /// ffn: hidden units of the one net (25; the study also tried 45; at most 1,000:
+    /// 10,000 take 5 s a trial).
+    ffn_hidden_units: usize = 25, "", FFN, Within(1.0, 1000.0);
     /// ffn: the net is trained on this many most recent patterns.
     ffn_window: usize = 1000, "", FFN, Within(1.0, 1e6);
-    /// ffn: conjugate-gradient (Polak-Ribière) iterations after every trial.
-    ffn_cg_iterations: usize = 10, "", FFN, Within(0.0, 10000.0);
+    /// ffn: conjugate-gradient (Polak-Ribière) iterations after every trial (at most
+    /// 1,000: 10,000 take 3 s a trial).
+    ffn_cg_iterations: usize = 10, "", FFN, Within(0.0, 1000.0);
     /// kohonen: neurons per side of the 5-D lattice (7: the study's 16,807).
     kohonen_side: usize = 7, "", KOHONEN, Within(2.0, 12.0);
     /// kohonen: patterns over which the neighbourhood and the learning rates shrink.

@@ -497,3 +497,26 @@ fn every_command_docs_arms_gives_runs() {
         assert_eq!(code, 0, "{command}: {err}");
     }
 }
+
+/// A URDF named without a folder (run from its own folder) reads its meshes: its folder is
+/// the working folder, and every mesh lies inside it (the test copy has collision meshes
+/// only).
+#[test]
+fn a_urdf_named_from_its_own_folder_reads_its_meshes() {
+    let folder = PANDA.urdf().parent().unwrap().to_path_buf();
+    let mut args = vec!["reach".to_string(), "--urdf".into(), "panda.urdf".into()];
+    for (name, value) in PANDA.sets() {
+        args.extend(["--set".to_string(), format!("{name}={value}")]);
+    }
+    let out = Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .args(&args)
+        .current_dir(&folder)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(
+        !err.contains("warning") || err.contains("(0 collision meshes, "),
+        "every collision mesh read: {err}"
+    );
+}

@@ -70,8 +70,14 @@ pub fn resolve_mesh(
     Ok(None)
 }
 
-/// True when `path`, with `..` and symbolic links resolved, lies inside `folder`.
+/// True when `path`, with `..` and symbolic links resolved, lies inside `folder` (the
+/// working folder when empty: the folder of a URDF named without one).
 fn lies_inside(path: &Path, folder: &Path) -> bool {
+    let folder = if folder.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        folder
+    };
     match (path.canonicalize(), folder.canonicalize()) {
         (Ok(file), Ok(folder)) => file.starts_with(folder),
         _ => false,
@@ -227,6 +233,13 @@ mod tests {
             resolve_mesh("../x/secret.stl", &urdf, &x_searched),
             Ok(Some(urdf.join("../x/secret.stl")))
         );
+    }
+
+    /// A URDF named without a folder (`robot.urdf`) has the working folder as its own.
+    #[test]
+    fn the_empty_folder_is_the_working_folder() {
+        assert!(lies_inside(Path::new("Cargo.toml"), Path::new("")));
+        assert!(!lies_inside(Path::new("/etc/hostname"), Path::new("")));
     }
 
     /// A folder, or a link to a device, named like a mesh is no mesh.

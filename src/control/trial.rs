@@ -160,6 +160,17 @@ impl TrialLoop {
     /// [`begin_trial`](Self::begin_trial), [`step_trial`](Self::step_trial) and
     /// [`finish_trial`](Self::finish_trial).
     pub fn run_trial(&mut self, learner: &mut dyn Learner) -> Result<TrialOutcome, LearnError> {
+        self.run_trial_reporting(learner, &mut |_, _| {})
+    }
+
+    /// [`run_trial`](Self::run_trial), calling `after_step` with the step's number and the
+    /// trial's simulated seconds so far after every feedback step: a caller's progress
+    /// report within a long trial.
+    pub fn run_trial_reporting(
+        &mut self,
+        learner: &mut dyn Learner,
+        after_step: &mut dyn FnMut(usize, f64),
+    ) -> Result<TrialOutcome, LearnError> {
         let mut outcome = TrialOutcome {
             distances_mm: Vec::with_capacity(self.settings.feedback_steps),
             failure: None,
@@ -187,6 +198,7 @@ impl TrialLoop {
                 }
             };
             outcome.seconds = report.seconds;
+            after_step(report.step, report.seconds);
             let moved = (self.true_controlled_deg() - start_deg).amax();
             outcome.moved_deg = outcome.moved_deg.max(moved);
             if report.reading.is_ok() {

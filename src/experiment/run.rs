@@ -6,7 +6,7 @@ use super::interrupt::StopRequest;
 use super::learning_verdict::{LearningWatch, RunEnd};
 use super::output::DataFiles;
 use super::plot::{plot_run, PlotError};
-use super::progress::RunProgress;
+use super::progress::{LongTrialWatch, RunProgress};
 use super::summary::{RunSummary, SensorSummary};
 use super::StepFigures;
 use super::{
@@ -195,6 +195,7 @@ fn drive(
     let mut watch = LearningWatch::default();
     let mut finished = 0;
     let mut progress = RunProgress::new(config.trials, options.progress);
+    let mut long = LongTrialWatch::new();
     let started = Instant::now();
     let mut model_events = Vec::new();
     let mut root_merges = 0;
@@ -204,7 +205,18 @@ fn drive(
         if options.stop.signal().is_some() {
             break;
         }
-        let outcome = next_trial(&mut trials, learner.as_mut(), events, trial)?;
+        let mut after_step = |step, simulated| {
+            if let Some(line) = long.step_done(trial, step, simulated, Instant::now()) {
+                progress.println(&line);
+            }
+        };
+        let outcome = next_trial(
+            &mut trials,
+            learner.as_mut(),
+            events,
+            trial,
+            &mut after_step,
+        )?;
         learner.drain_events(&mut model_events);
         files.record_model_events(trial, &model_events)?;
         root_merges += model_events.iter().filter(|e| e.is_root_merge()).count();
@@ -295,13 +307,15 @@ fn drive(
 }
 
 /// Trial `trial` of a run: the events due before it applied, the learner told, pre-learning
-/// repeated if the learner asks, then the trial run and learned. A replay of a run goes
+/// repeated if the learner asks, then the trial run and learned (`after_step` called after
+/// every feedback step: see [`TrialLoop::run_trial_reporting`]). A replay of a run goes
 /// through the same steps, so it reproduces the run exactly.
 pub(crate) fn next_trial(
     trials: &mut TrialLoop,
     learner: &mut dyn Learner,
     events: &[Event],
     trial: usize,
+    after_step: &mut dyn FnMut(usize, f64),
 ) -> Result<TrialOutcome, RunError> {
     for event in events.iter().filter(|e| e.trial() == trial) {
         event
@@ -315,7 +329,7 @@ pub(crate) fn next_trial(
     if learner.take_relearn_request() {
         trials.prelearn(learner)?;
     }
-    Ok(trials.run_trial(learner)?)
+    Ok(trials.run_trial_reporting(learner, after_step)?)
 }
 
 /// One line on how the tree is built up, for `verbose_output`.

@@ -61,7 +61,13 @@ pub fn replay(
     for trial in 1..=last {
         log.borrow_mut().clear();
         trials.sim_mut().keep_ticks(ticks && watched(trial));
-        let outcome = next_trial(&mut trials, learner.as_mut(), &setup.events, trial)?;
+        let outcome = next_trial(
+            &mut trials,
+            learner.as_mut(),
+            &setup.events,
+            trial,
+            &mut |_, _| {},
+        )?;
         step_one.check(run, trial, outcome.distances_mm.first().copied())?;
         learner.drain_events(&mut model_events);
         model_events.clear();

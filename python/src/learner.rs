@@ -2,8 +2,9 @@
 //! [`Learner`], and the built-in learners as the Python class `eyehand.Learner`.
 
 use crate::convert::{load_config, path_array, path_from, query_array, query_from, vector3};
+use crate::named::{NamedQuery, Patterns};
 use eyehand::experiment::setup::build_learner;
-use eyehand::experiment::StopRequest;
+use eyehand::experiment::{Config, StopRequest};
 use eyehand::learn::{LearnError, Learner, LearnerStats, Observation, Query};
 use eyehand::robot::ArmModel;
 use nalgebra::Vector3;
@@ -24,6 +25,8 @@ pub const SIGINT: i32 = 2;
 /// trial loop. The first exception (or non-finite move) is kept in its slot; from then on
 /// it proposes no move and its `learn` fails, which stops the run.
 ///
+/// What its calls are given is its [`Api`].
+///
 /// Given a run's stop request ([`PyLearner::stopping`]), it also lets Python's signal
 /// handlers run before each call: Ctrl-C's `KeyboardInterrupt`, raised there or inside the
 /// learner's own code, asks the run to stop after the current trial (the call it broke
@@ -32,12 +35,43 @@ pub const SIGINT: i32 = 2;
 pub struct PyLearner {
     object: Py<PyAny>,
     name: String,
+    api: Api,
+    minimal_joint_move: f64,
     error: ErrorSlot,
     stop: Option<(StopRequest, ErrorSlot)>,
 }
 
+/// What a Python learner's calls are given, by its `eyehand_api` attribute.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Api {
+    /// No attribute, or `eyehand_api = 1`: `propose` gets the (5,) array (cx, cy, cz, θ2,
+    /// θ3), `learn` the trial's (n, 6) path.
+    Arrays,
+    /// `eyehand_api = 2`: `propose` gets an `eyehand.Query`, `learn` an `eyehand.Patterns`.
+    Named,
+}
+
+impl Api {
+    /// The API `object` asks for; an `eyehand_api` other than 1 or 2 is a `ValueError`.
+    fn of(object: &Bound<'_, PyAny>) -> PyResult<Api> {
+        if !object.hasattr("eyehand_api")? {
+            return Ok(Api::Arrays);
+        }
+        let asked = object.getattr("eyehand_api")?;
+        match asked.extract::<i64>() {
+            Ok(1) => Ok(Api::Arrays),
+            Ok(2) => Ok(Api::Named),
+            _ => Err(PyValueError::new_err(format!(
+                "eyehand_api is 1 (arrays) or 2 (eyehand.Query and eyehand.Patterns), not {}",
+                asked.repr()?
+            ))),
+        }
+    }
+}
+
 impl PyLearner {
     /// Wraps `object`; its runs are filed under its `name` attribute, or its class name.
+    /// Its patterns take the declared default `minimal_joint_move`.
     pub fn new(object: &Bound<'_, PyAny>, error: ErrorSlot) -> PyResult<PyLearner> {
         let name = match object.getattr("name") {
             Ok(name) if name.is_instance_of::<pyo3::types::PyString>() => name.extract()?,
@@ -46,6 +80,8 @@ impl PyLearner {
         Ok(PyLearner {
             object: object.clone().unbind(),
             name,
+            api: Api::of(object)?,
+            minimal_joint_move: Config::default_config().minimal_joint_move,
             error,
             stop: None,
         })
@@ -93,10 +129,11 @@ impl PyLearner {
     }
 
     fn call_propose(&self, py: Python<'_>, query: &Query) -> PyResult<Vector3<f64>> {
-        let answer = self
-            .object
-            .bind(py)
-            .call_method1("propose", (query_array(py, query),))?;
+        let object = self.object.bind(py);
+        let answer = match self.api {
+            Api::Arrays => object.call_method1("propose", (query_array(py, query),))?,
+            Api::Named => object.call_method1("propose", (NamedQuery::of(query),))?,
+        };
         let delta = vector3(&answer, "propose's answer")?;
         if !delta.iter().all(|v| v.is_finite()) {
             return Err(PyValueError::new_err(format!(
@@ -142,11 +179,15 @@ impl Learner for PyLearner {
         if !self.failed() {
             let called = Python::attach(|py| {
                 self.guarded(py, |py| {
-                    let path = path_array(py, path)?;
-                    self.object
-                        .bind(py)
-                        .call_method1("learn", (path,))
-                        .map(drop)
+                    let object = self.object.bind(py);
+                    match self.api {
+                        Api::Arrays => object.call_method1("learn", (path_array(py, path)?,)),
+                        Api::Named => object.call_method1(
+                            "learn",
+                            (Patterns::of(py, path, self.minimal_joint_move)?,),
+                        ),
+                    }
+                    .map(drop)
                 })
             });
             if let Err(error) = called {

@@ -3,6 +3,7 @@
 
 mod convert;
 mod learner;
+mod named;
 mod patterns;
 mod run;
 mod testbed;
@@ -14,6 +15,11 @@ use pyo3::prelude::*;
 fn _eyehand(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<testbed::Testbed>()?;
     m.add_class::<learner::BuiltinLearner>()?;
+    m.add_class::<named::NamedQuery>()?;
+    m.add_class::<named::Patterns>()?;
+    m.add("INPUTS", named::INPUTS.to_vec())?;
+    m.add("INPUT_UNITS", named::INPUT_UNITS.to_vec())?;
+    m.add("TARGETS", named::TARGETS.to_vec())?;
     m.add_function(wrap_pyfunction!(run::run_py, m)?)?;
     m.add_function(wrap_pyfunction!(run::parse_event, m)?)?;
     m.add_function(wrap_pyfunction!(patterns::patterns, m)?)?;

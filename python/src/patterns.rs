@@ -2,15 +2,16 @@
 //! learners written in Python.
 
 use crate::convert::path_from;
+use crate::named::{pattern_rows, INPUTS, TARGETS};
 use eyehand::experiment::Config;
-use eyehand::learn::{adjusted_pattern, pose_pairs};
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 
 /// Inputs (m, 5) and targets (m, 3) of a path's adjusted (lin5) learning patterns: every
 /// pose pair whose move reaches `minimal_joint_move` degrees in some joint (default: the
 /// config entry's declared default, as a run's). Inputs are in the query's order (cx, cy,
-/// cz, θ2, θ3), so a regressor fitted on them answers queries.
+/// cz, θ2, θ3), so a regressor fitted on them answers queries; `eyehand.Patterns` gives
+/// them in the boundaries' order.
 #[pyfunction]
 #[pyo3(signature = (path, minimal_joint_move = None))]
 #[allow(clippy::type_complexity)]
@@ -22,17 +23,14 @@ pub fn patterns<'py>(
     let path = path_from(path)?;
     let minimal_joint_move =
         minimal_joint_move.unwrap_or(Config::default_config().minimal_joint_move);
-    let mut inputs = Vec::new();
-    let mut targets = Vec::new();
-    for (from, to) in pose_pairs(&path, minimal_joint_move) {
-        let pattern = adjusted_pattern(from, to);
-        let x = pattern.input;
-        inputs.extend_from_slice(&[x[2], x[3], x[4], x[0], x[1]]);
-        targets.extend(pattern.target.iter());
-    }
-    let count = targets.len() / 3;
+    let (five, targets) = pattern_rows(&path, minimal_joint_move);
+    let inputs: Vec<f64> = five
+        .chunks_exact(INPUTS.len())
+        .flat_map(|x| [x[2], x[3], x[4], x[0], x[1]])
+        .collect();
+    let count = targets.len() / TARGETS.len();
     Ok((
-        PyArray1::from_vec(py, inputs).reshape([count, 5])?,
-        PyArray1::from_vec(py, targets).reshape([count, 3])?,
+        PyArray1::from_vec(py, inputs).reshape([count, INPUTS.len()])?,
+        PyArray1::from_vec(py, targets).reshape([count, TARGETS.len()])?,
     ))
 }

@@ -1,0 +1,105 @@
+"""The named learner API (``eyehand_api = 2``: ``eyehand.Query`` and ``eyehand.Patterns``)."""
+
+import numpy as np
+import pytest
+
+import eyehand
+
+#: A path of three poses: the move to the third changes θ3 by 0.05° only.
+PATH = np.array(
+    [
+        [10.0, -20.0, 5.0, 0.0, 40.0, 100.0],
+        [0.0, 0.0, 0.0, 0.0, 45.0, 98.0],
+        [1.0, 2.0, 3.0, 0.0, 45.0, 98.05],
+    ]
+)
+
+
+def query_order(query):
+    """A named query as the old API's array (cx, cy, cz, θ2, θ3)."""
+    return [query.cx, query.cy, query.cz, query.theta2_deg, query.theta3_deg]
+
+
+class NamedIk:
+    """The analytic inverse kinematics behind the named API; it keeps what it is given."""
+
+    name = "namedik"
+    eyehand_api = 2
+
+    def __init__(self):
+        self.ik = eyehand.Learner("ik")
+        self.queries, self.patterns = [], []
+
+    def propose(self, query):
+        self.queries.append(query)
+        return self.ik.propose(query_order(query))
+
+    def learn(self, patterns):
+        self.patterns.append(patterns)
+
+
+def test_named_inputs_come_in_the_boundaries_order():
+    assert eyehand.INPUTS == ["theta2_deg", "theta3_deg", "cx", "cy", "cz"]
+    assert eyehand.INPUT_UNITS[:4] == ["°", "°", "px", "px"]
+    assert eyehand.TARGETS == ["dtheta1_deg", "dtheta2_deg", "dtheta3_deg"]
+    query = eyehand.Query(theta2_deg=40.0, theta3_deg=100.0, cx=10.0, cy=-20.0, cz=5.0)
+    assert np.array_equal(query.inputs, [40.0, 100.0, 10.0, -20.0, 5.0])
+    assert (query.cx, query.theta3_deg) == (10.0, 100.0)
+    patterns = eyehand.Patterns(PATH, minimal_joint_move=0.1)
+    assert len(patterns) == 2 and patterns.inputs.shape == (2, 5)
+    assert np.allclose(patterns.inputs[0], [40.0, 100.0, 10.0, -20.0, 5.0])
+    assert np.allclose(patterns.targets[0], [0.0, 5.0, -2.0])
+    assert np.array_equal(patterns.path, PATH)
+    old_inputs, old_targets = eyehand.patterns(PATH, minimal_joint_move=0.1)
+    assert np.allclose(patterns.inputs, old_inputs[:, [3, 4, 0, 1, 2]])
+    assert np.allclose(patterns.targets, old_targets)
+
+
+def test_input_bounds_follow_the_inputs():
+    config = {f"boundary_{i}_{end}": float(10 * i + (end == "high")) for i in range(5) for end in ("low", "high")}
+    low, high = eyehand.input_bounds(config)
+    assert np.array_equal(low, [0.0, 10.0, 20.0, 30.0, 40.0])
+    assert np.array_equal(high, [1.0, 11.0, 21.0, 31.0, 41.0])
+
+
+def test_a_named_learner_gets_queries_and_patterns_by_name(repo, tmp_path):
+    learner = NamedIk()
+    result = eyehand.run(learner, trials=20, config=repo / "configs" / "ik.conf", data=tmp_path)
+    assert np.all(result["distances_mm"][0] <= 0.5), "the named fields are the right ones"
+    assert all(isinstance(q, eyehand.Query) for q in learner.queries)
+    assert len(learner.patterns) == 8 + 20
+    trial = learner.patterns[-1]
+    assert isinstance(trial, eyehand.Patterns) and len(trial) > 0
+    starts = trial.path[:, [4, 5, 0, 1, 2]]
+    assert np.allclose(trial.inputs[0, :2], starts[0, :2]), "θ2, θ3 of the pose the move starts from"
+    old_inputs, _ = eyehand.patterns(trial.path, minimal_joint_move=0.01)
+    assert np.allclose(trial.inputs, old_inputs[:, [3, 4, 0, 1, 2]])
+
+
+def test_the_old_api_is_kept_without_the_attribute(tmp_path):
+    class Arrays:
+        name = "arrays"
+
+        def __init__(self):
+            self.ik, self.given = eyehand.Learner("ik"), []
+
+        def propose(self, query):
+            self.given.append(query)
+            return self.ik.propose(query)
+
+        def learn(self, path):
+            self.given.append(path)
+
+    learner = Arrays()
+    eyehand.run(learner, trials=3, data=tmp_path)
+    assert all(isinstance(a, np.ndarray) for a in learner.given)
+    assert {a.shape[-1] for a in learner.given} == {5, 6}
+
+
+def test_an_unknown_api_is_a_value_error_before_the_run(tmp_path):
+    learner = NamedIk()
+    learner.eyehand_api = 3
+    with pytest.raises(ValueError, match="eyehand_api is 1 .* or 2"):
+        eyehand.run(learner, trials=3, data=tmp_path)
+    assert not (tmp_path / "namedik").exists()
+

@@ -77,7 +77,9 @@ def run(
     ``name`` attribute, or its class name, names its folder); without it the built-in
     ``method`` (default: the config's) runs. With ``eyehand_api = 2`` on the learner,
     ``propose`` gets an ``eyehand.Query`` and ``learn`` an ``eyehand.Patterns`` instead
-    of arrays. ``config`` is a config file (default: none,
+    of arrays. A ``setup(config)`` it defines is called once before pre-learning with the
+    run's resolved config, a dict of every entry by name (ints, floats, tuples of floats,
+    lists for repeated entries, strings). ``config`` is a config file (default: none,
     every entry at its default); keyword ``entries`` override its entries as ``--set``
     does; ``events`` are ``rotate:TRIAL:DEG`` / ``elongate:TRIAL:LINK:CM`` strings.
 
@@ -114,7 +116,8 @@ def run(
 
 
 def input_bounds(config):
-    """The boundaries of the five inputs in a dict of config entries: ``(low, high)``,
+    """The boundaries of the five inputs in a config dict (as a learner's ``setup`` gets
+    it): ``(low, high)``,
     two (5,) arrays in the order of ``INPUTS`` (θ2 °, θ3 °, cx px, cy px, cz) —
     ``boundary_0`` … ``boundary_4``."""
     low = np.array([float(config[f"boundary_{i}_low"]) for i in range(len(INPUTS))])

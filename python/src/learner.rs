@@ -1,6 +1,7 @@
 //! Learners across the boundary: a Python object with `propose` and `learn` as a Rust
 //! [`Learner`], and the built-in learners as the Python class `eyehand.Learner`.
 
+use crate::config_dict::config_dict;
 use crate::convert::{load_config, path_array, path_from, query_array, query_from, vector3};
 use crate::named::{NamedQuery, Patterns};
 use eyehand::experiment::setup::build_learner;
@@ -25,7 +26,8 @@ pub const SIGINT: i32 = 2;
 /// trial loop. The first exception (or non-finite move) is kept in its slot; from then on
 /// it proposes no move and its `learn` fails, which stops the run.
 ///
-/// What its calls are given is its [`Api`].
+/// What its calls are given is its [`Api`]; a `setup(config)` it defines is called by
+/// [`PyLearner::configured`].
 ///
 /// Given a run's stop request ([`PyLearner::stopping`]), it also lets Python's signal
 /// handlers run before each call: Ctrl-C's `KeyboardInterrupt`, raised there or inside the
@@ -85,6 +87,16 @@ impl PyLearner {
             error,
             stop: None,
         })
+    }
+
+    /// The learner set up for a run of `config` (the run's, resolved): its `setup(config)`
+    /// called, if it has one, with the entries as a dict.
+    pub fn configured(self, py: Python<'_>, config: &Config) -> PyResult<PyLearner> {
+        let object = self.object.bind(py);
+        if object.hasattr("setup")? {
+            object.call_method1("setup", (config_dict(py, config)?,))?;
+        }
+        Ok(self)
     }
 
     /// The learner that answers a signal by asking `stop` for a stop and keeping the

@@ -1,6 +1,7 @@
 //! The Python extension `eyehand._eyehand`: the testbed, the built-in learners and runs,
 //! on the same engine as the `eyehand` command line.
 
+mod config_dict;
 mod convert;
 mod learner;
 mod named;

@@ -5,7 +5,7 @@
 
 use crate::convert::{load_config, run_error, set_entry, value_error};
 use crate::learner::{ErrorSlot, PyLearner, SIGINT};
-use eyehand::experiment::{run, run_learner, Event, RunError, RunOptions, RunResult};
+use eyehand::experiment::{run, run_learner_set_up, Event, RunError, RunOptions, RunResult};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -76,17 +76,20 @@ pub fn run_py(
 }
 
 /// A run with a Python learner, on this thread (a learner may hold objects that must
-/// stay on it): its exception, if it raised one, is raised again; Ctrl-C, met by the
-/// learner's calls, stops the run after its trial and is raised once the run is written.
+/// stay on it), set up with the run's resolved config before anything is written: its
+/// exception, if it raised one, is raised again; Ctrl-C, met by the learner's calls, stops
+/// the run after its trial and is raised once the run is written.
 fn run_python_learner(
     py: Python<'_>,
     object: &Bound<'_, PyAny>,
     options: &RunOptions,
 ) -> PyResult<RunResult> {
     let (failure, interrupt) = (ErrorSlot::default(), ErrorSlot::default());
-    let learner =
-        PyLearner::new(object, failure.clone())?.stopping(options.stop.clone(), interrupt.clone());
-    let outcome = py.detach(|| run_learner(options, Box::new(learner)));
+    let setup = py.detach(|| options.warned_setup()).map_err(run_error)?;
+    let learner = PyLearner::new(object, failure.clone())?
+        .configured(py, &setup.config)?
+        .stopping(options.stop.clone(), interrupt.clone());
+    let outcome = py.detach(|| run_learner_set_up(options, setup, Box::new(learner)));
     for slot in [failure, interrupt] {
         if let Some(error) = slot.lock().ok().and_then(|mut s| s.take()) {
             return Err(error);

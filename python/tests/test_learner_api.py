@@ -1,4 +1,5 @@
-"""The named learner API (``eyehand_api = 2``: ``eyehand.Query`` and ``eyehand.Patterns``)."""
+"""The named learner API (``eyehand_api = 2``: ``eyehand.Query`` and ``eyehand.Patterns``)
+and ``setup(config)``."""
 
 import numpy as np
 import pytest
@@ -101,5 +102,54 @@ def test_an_unknown_api_is_a_value_error_before_the_run(tmp_path):
     learner.eyehand_api = 3
     with pytest.raises(ValueError, match="eyehand_api is 1 .* or 2"):
         eyehand.run(learner, trials=3, data=tmp_path)
+    assert not (tmp_path / "namedik").exists()
+
+class Configured(NamedIk):
+    """Keeps the config its ``setup`` gets and what it was called before."""
+
+    name = "configured"
+
+    def setup(self, config):
+        self.config = dict(config)
+        self.before_setup = len(self.queries) + len(self.patterns)
+
+
+def test_setup_gets_the_run_s_resolved_config_typed_before_any_call(tmp_path):
+    learner = Configured()
+    eyehand.run(learner, trials=3, seed=7, data=tmp_path, minimal_joint_move=0.05, obstacle="60,0,-10,5,5,5")
+    config = learner.config
+    assert learner.before_setup == 0, "setup comes before pre-learning"
+    assert set(eyehand.ENTRY_NAMES) <= set(config)
+    assert config["seed"] == 7 and isinstance(config["trials"], int) and config["trials"] == 3
+    assert config["minimal_joint_move"] == 0.05 and isinstance(config["robot_speed"], float)
+    assert config["camera_offset"] == (0.0, 0.0, 0.0)
+    assert config["method"] == "lin5" and config["sim"] == "kinematic"
+    assert config["obstacle"] == [(60.0, 0.0, -10.0, 5.0, 5.0, 5.0)]
+    low, high = eyehand.input_bounds(config)
+    assert low[0] == config["boundary_0_low"] and high[4] == config["boundary_4_high"]
+
+
+def test_setup_gets_the_boundaries_fitted_to_another_arm(repo, tmp_path):
+    config = tmp_path / "ur_style.conf"
+    # The reach space `eyehand reach` fits to the arm, given so that the test is quick.
+    config.write_text(f"urdf {repo / 'tests' / 'data' / 'ur_style.urdf'}\nreach_space 31.8,64.2,2.0,37.9\n")
+    learner = Configured()
+    result = eyehand.run(learner, trials=1, config=config, data=tmp_path)
+    info = (result["folder"] / "info").read_text().splitlines()
+    fitted = [line for line in info if line.endswith("# fitted to the arm") and line.startswith("boundary_")]
+    assert len(fitted) == 4
+    for line in fitted:
+        name, value = line.split()[:2]
+        assert learner.config[name] == float(value), line
+    assert (learner.config["boundary_0_low"], learner.config["boundary_0_high"]) != (-10.0, 80.0)
+
+
+def test_a_setup_that_raises_stops_the_run_before_its_folder(tmp_path):
+    class Broken(NamedIk):
+        def setup(self, config):
+            raise KeyError("no such setting")
+
+    with pytest.raises(KeyError, match="no such setting"):
+        eyehand.run(Broken(), trials=3, data=tmp_path)
     assert not (tmp_path / "namedik").exists()
 

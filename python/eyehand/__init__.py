@@ -76,8 +76,8 @@ def run(
     ``learner`` is any object with ``propose(query) -> (3,)`` and ``learn(path)`` (its
     ``name`` attribute, or its class name, names its folder); without it the built-in
     ``method`` (default: the config's) runs. With ``eyehand_api = 2`` on the learner,
-    ``propose`` gets an ``eyehand.Query`` and ``learn`` an ``eyehand.Patterns`` instead
-    of arrays. A ``setup(config)`` it defines is called once before pre-learning with the
+    ``propose`` gets an ``eyehand.Query`` and ``learn`` an ``eyehand.Patterns`` (formed
+    with the run's ``minimal_joint_move``) instead of arrays. A ``setup(config)`` it defines is called once before pre-learning with the
     run's resolved config, a dict of every entry by name (ints, floats, tuples of floats,
     lists for repeated entries, strings). ``config`` is a config file (default: none,
     every entry at its default); keyword ``entries`` override its entries as ``--set``

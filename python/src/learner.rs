@@ -73,7 +73,8 @@ impl Api {
 
 impl PyLearner {
     /// Wraps `object`; its runs are filed under its `name` attribute, or its class name.
-    /// Its patterns take the declared default `minimal_joint_move`.
+    /// Its patterns take the declared default `minimal_joint_move` until
+    /// [`configured`](PyLearner::configured).
     pub fn new(object: &Bound<'_, PyAny>, error: ErrorSlot) -> PyResult<PyLearner> {
         let name = match object.getattr("name") {
             Ok(name) if name.is_instance_of::<pyo3::types::PyString>() => name.extract()?,
@@ -90,13 +91,17 @@ impl PyLearner {
     }
 
     /// The learner set up for a run of `config` (the run's, resolved): its `setup(config)`
-    /// called, if it has one, with the entries as a dict.
+    /// called, if it has one, with the entries as a dict; its patterns formed with the
+    /// config's `minimal_joint_move`.
     pub fn configured(self, py: Python<'_>, config: &Config) -> PyResult<PyLearner> {
         let object = self.object.bind(py);
         if object.hasattr("setup")? {
             object.call_method1("setup", (config_dict(py, config)?,))?;
         }
-        Ok(self)
+        Ok(PyLearner {
+            minimal_joint_move: config.minimal_joint_move,
+            ..self
+        })
     }
 
     /// The learner that answers a signal by asking `stop` for a stop and keeping the

@@ -3,7 +3,6 @@
 //! both with the five inputs in the order of the config's boundaries 0–4.
 
 use crate::convert::{path_array, path_from};
-use eyehand::experiment::Config;
 use eyehand::learn::{adjusted_pattern, pose_pairs, Observation, Query};
 use nalgebra::Vector3;
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
@@ -96,11 +95,12 @@ impl NamedQuery {
 }
 
 /// A trial's adjusted learning patterns (those lin5 learns from), by name:
-/// `Patterns(path, minimal_joint_move=None)`. `inputs` is (m, 5) in the order
+/// `Patterns(path, minimal_joint_move=None, config=None)`. `inputs` is (m, 5) in the order
 /// of `eyehand.INPUTS` (θ2 °, θ3 °, cx px, cy px, cz: the pose a move starts from and the
 /// reading it removes), `targets` (m, 3) the moves (Δθ1, Δθ2, Δθ3 in °, `eyehand.TARGETS`),
 /// `path` the trial's (n, 6) poses they come from. A pose pair is a pattern when some joint
-/// moved at least `minimal_joint_move` degrees (default: the entry's declared default).
+/// moved at least `minimal_joint_move` degrees (default: `config`'s, a dict as `setup`
+/// gets it or a config file; without either the entry's declared default).
 #[pyclass(frozen, module = "eyehand", name = "Patterns")]
 #[derive(Debug)]
 pub struct Patterns {
@@ -131,14 +131,14 @@ impl Patterns {
 #[pymethods]
 impl Patterns {
     #[new]
-    #[pyo3(signature = (path, minimal_joint_move = None))]
+    #[pyo3(signature = (path, minimal_joint_move = None, config = None))]
     fn new(
         py: Python<'_>,
         path: &Bound<'_, PyAny>,
         minimal_joint_move: Option<f64>,
+        config: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Patterns> {
-        let minimal_joint_move =
-            minimal_joint_move.unwrap_or(Config::default_config().minimal_joint_move);
+        let minimal_joint_move = crate::patterns::minimal_joint_move(minimal_joint_move, config)?;
         Patterns::of(py, &path_from(path)?, minimal_joint_move)
     }
 

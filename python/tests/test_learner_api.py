@@ -1,5 +1,5 @@
 """The named learner API (``eyehand_api = 2``: ``eyehand.Query`` and ``eyehand.Patterns``)
-and ``setup(config)``."""
+``setup(config)`` and ``minimal_joint_move`` from the config."""
 
 import numpy as np
 import pytest
@@ -152,4 +152,27 @@ def test_a_setup_that_raises_stops_the_run_before_its_folder(tmp_path):
     with pytest.raises(KeyError, match="no such setting"):
         eyehand.run(Broken(), trials=3, data=tmp_path)
     assert not (tmp_path / "namedik").exists()
+
+def test_patterns_default_to_the_config_s_minimal_joint_move(tmp_path):
+    config_file = tmp_path / "coarse.conf"
+    config_file.write_text("minimal_joint_move 0.1\n")
+    assert len(eyehand.Patterns(PATH)) == 3, "the declared default, 0.01°, keeps the 0.05° move"
+    assert len(eyehand.patterns(PATH)[0]) == 3
+    for config in ({"minimal_joint_move": 0.1}, config_file, str(config_file)):
+        assert len(eyehand.Patterns(PATH, config=config)) == 2
+        assert len(eyehand.patterns(PATH, config=config)[0]) == 2
+    assert len(eyehand.patterns(PATH, minimal_joint_move=0.01, config={"minimal_joint_move": 0.1})[0]) == 3
+    with pytest.raises(ValueError, match="dict of entries"):
+        eyehand.patterns(PATH, config=3)
+
+
+def test_a_named_learner_s_patterns_use_the_run_s_minimal_joint_move(tmp_path):
+    learner = NamedIk()
+    eyehand.run(learner, trials=10, data=tmp_path, minimal_joint_move=9.0)
+    for patterns in learner.patterns:
+        expected, _ = eyehand.patterns(patterns.path, minimal_joint_move=9.0)
+        assert len(patterns) == len(expected)
+    assert sum(len(p) for p in learner.patterns) < sum(
+        len(eyehand.patterns(p.path)[0]) for p in learner.patterns
+    ), "9° drops pairs the default keeps"
 

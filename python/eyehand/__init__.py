@@ -77,21 +77,26 @@ def run(
     ``name`` attribute, or its class name, names its folder); without it the built-in
     ``method`` (default: the config's) runs. With ``eyehand_api = 2`` on the learner,
     ``propose`` gets an ``eyehand.Query`` and ``learn`` an ``eyehand.Patterns`` (formed
-    with the run's ``minimal_joint_move``) instead of arrays. A ``setup(config)`` it defines is called once before pre-learning with the
-    run's resolved config, a dict of every entry by name (ints, floats, tuples of floats,
-    lists for repeated entries, strings). ``config`` is a config file (default: none,
-    every entry at its default); keyword ``entries`` override its entries as ``--set``
-    does; ``events`` are ``rotate:TRIAL:DEG`` / ``elongate:TRIAL:LINK:CM`` strings.
+    with the run's ``minimal_joint_move``) instead of arrays. A ``setup(config)`` it
+    defines is called once before pre-learning with the run's resolved config, a dict of
+    every entry by name (ints, floats, tuples of floats, lists for repeated entries,
+    strings). A ``size()`` it defines (a count of its nodes, fields or units) is its
+    ``nodes`` figure: in summary.json, the report and the ``nodes`` file.
+
+    ``config`` is a config file (default: none, every entry at its default); keyword
+    ``entries`` override its entries as ``--set`` does; ``events`` are
+    ``rotate:TRIAL:DEG`` / ``elongate:TRIAL:LINK:CM`` strings.
 
     Returns a dict: ``folder`` (a ``pathlib.Path``), ``summary`` (summary.json as a dict),
-    ``trials`` and ``distances_mm``: for each feedback step 1..5, NumPy arrays of the
-    trials that took that step and the distance to the target (mm) after it.
+    ``report`` (the summary as ``eyehand run`` prints it), ``trials`` and
+    ``distances_mm``: for each feedback step 1..5, NumPy arrays of the trials that took
+    that step and the distance to the target (mm) after it.
 
     The GIL is released while Rust runs (a Python learner takes it back for its calls).
     A Python learner's exception — or a non-finite move, as ``ValueError`` — stops the run
     and is raised here; the run folder keeps the data files written so far.
     """
-    folder, summary = _run(
+    folder, summary, report = _run(
         learner,
         method=method,
         trials=trials,
@@ -110,6 +115,7 @@ def run(
     return {
         "folder": folder,
         "summary": json.loads(summary),
+        "report": report,
         "trials": [trials for trials, _ in steps],
         "distances_mm": [distances for _, distances in steps],
     }
@@ -117,9 +123,8 @@ def run(
 
 def input_bounds(config):
     """The boundaries of the five inputs in a config dict (as a learner's ``setup`` gets
-    it): ``(low, high)``,
-    two (5,) arrays in the order of ``INPUTS`` (θ2 °, θ3 °, cx px, cy px, cz) —
-    ``boundary_0`` … ``boundary_4``."""
+    it): ``(low, high)``, two (5,) arrays in the order of ``INPUTS`` (θ2 °, θ3 °, cx px,
+    cy px, cz) — ``boundary_0`` … ``boundary_4``."""
     low = np.array([float(config[f"boundary_{i}_low"]) for i in range(len(INPUTS))])
     high = np.array([float(config[f"boundary_{i}_high"]) for i in range(len(INPUTS))])
     return low, high

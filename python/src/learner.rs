@@ -26,8 +26,8 @@ pub const SIGINT: i32 = 2;
 /// trial loop. The first exception (or non-finite move) is kept in its slot; from then on
 /// it proposes no move and its `learn` fails, which stops the run.
 ///
-/// What its calls are given is its [`Api`]; a `setup(config)` it defines is called by
-/// [`PyLearner::configured`].
+/// What its calls are given is its [`Api`]; a `size()` it defines is its `nodes` figure,
+/// and a `setup(config)` it defines is called by [`PyLearner::configured`].
 ///
 /// Given a run's stop request ([`PyLearner::stopping`]), it also lets Python's signal
 /// handlers run before each call: Ctrl-C's `KeyboardInterrupt`, raised there or inside the
@@ -38,6 +38,7 @@ pub struct PyLearner {
     object: Py<PyAny>,
     name: String,
     api: Api,
+    has_size: bool,
     minimal_joint_move: f64,
     error: ErrorSlot,
     stop: Option<(StopRequest, ErrorSlot)>,
@@ -84,6 +85,7 @@ impl PyLearner {
             object: object.clone().unbind(),
             name,
             api: Api::of(object)?,
+            has_size: object.hasattr("size")?,
             minimal_joint_move: Config::default_config().minimal_joint_move,
             error,
             stop: None,
@@ -143,6 +145,30 @@ impl PyLearner {
         if let Ok(mut slot) = self.error.lock() {
             slot.get_or_insert(error);
         }
+    }
+
+    /// What the learner's `size()` answers (0 without one, or once it has failed); an
+    /// answer that is no count fails it.
+    fn size(&self) -> usize {
+        if !self.has_size || self.failed() {
+            return 0;
+        }
+        Python::attach(|py| {
+            let answer = self.object.bind(py).call_method0("size")?;
+            answer.extract::<usize>().map_err(|_| {
+                PyValueError::new_err(format!(
+                    "learner `{}`'s size() must be a count (an int ≥ 0), not {}",
+                    self.name,
+                    answer
+                        .repr()
+                        .map_or_else(|_| "?".to_string(), |r| r.to_string())
+                ))
+            })
+        })
+        .unwrap_or_else(|error| {
+            self.keep(error);
+            0
+        })
     }
 
     fn call_propose(&self, py: Python<'_>, query: &Query) -> PyResult<Vector3<f64>> {
@@ -222,6 +248,13 @@ impl Learner for PyLearner {
                 reason,
             }),
             None => Ok(()),
+        }
+    }
+
+    fn stats(&self) -> LearnerStats {
+        LearnerStats {
+            nodes: self.size(),
+            ..LearnerStats::default()
         }
     }
 }

@@ -17,7 +17,8 @@ use std::time::Duration;
 /// How often the waiting thread lets Python run its signal handlers.
 const SIGNAL_POLL: Duration = Duration::from_millis(50);
 
-/// Runs a run and returns (its folder, summary.json's text). `learner` is a Python object
+/// Runs a run and returns (its folder, summary.json's text, the summary as `eyehand run`
+/// prints it). `learner` is a Python object
 /// with `propose` and `learn`; without it the config's (or `method`'s) built-in learner
 /// runs. Keyword entries override the config's, as `--set` does.
 #[pyfunction(name = "run")]
@@ -37,7 +38,7 @@ pub fn run_py(
     events: Vec<String>,
     plot: bool,
     entries: Option<&Bound<'_, PyDict>>,
-) -> PyResult<(String, String)> {
+) -> PyResult<(String, String, String)> {
     let (mut config, config_name) = load_config(config.as_deref(), entries)?;
     let overrides = [
         ("method", method.map(str::to_string)),
@@ -72,7 +73,11 @@ pub fn run_py(
         Some(object) => run_python_learner(py, object, &options)?,
     };
     let summary = serde_json::to_string(&result.summary).map_err(value_error)?;
-    Ok((result.folder.display().to_string(), summary))
+    Ok((
+        result.folder.display().to_string(),
+        summary,
+        result.summary.one_screen(),
+    ))
 }
 
 /// A run with a Python learner, on this thread (a learner may hold objects that must

@@ -1,5 +1,5 @@
-"""The named learner API (``eyehand_api = 2``: ``eyehand.Query`` and ``eyehand.Patterns``)
-``setup(config)`` and ``minimal_joint_move`` from the config."""
+"""The named learner API (``eyehand_api = 2``: ``eyehand.Query`` and ``eyehand.Patterns``),
+``setup(config)``, ``minimal_joint_move`` from the config and ``size()``."""
 
 import numpy as np
 import pytest
@@ -104,6 +104,7 @@ def test_an_unknown_api_is_a_value_error_before_the_run(tmp_path):
         eyehand.run(learner, trials=3, data=tmp_path)
     assert not (tmp_path / "namedik").exists()
 
+
 class Configured(NamedIk):
     """Keeps the config its ``setup`` gets and what it was called before."""
 
@@ -153,6 +154,7 @@ def test_a_setup_that_raises_stops_the_run_before_its_folder(tmp_path):
         eyehand.run(Broken(), trials=3, data=tmp_path)
     assert not (tmp_path / "namedik").exists()
 
+
 def test_patterns_default_to_the_config_s_minimal_joint_move(tmp_path):
     config_file = tmp_path / "coarse.conf"
     config_file.write_text("minimal_joint_move 0.1\n")
@@ -176,3 +178,33 @@ def test_a_named_learner_s_patterns_use_the_run_s_minimal_joint_move(tmp_path):
         len(eyehand.patterns(p.path)[0]) for p in learner.patterns
     ), "9° drops pairs the default keeps"
 
+
+class Sized(NamedIk):
+    """Reports the patterns it has learned as its size."""
+
+    name = "sized"
+
+    def __init__(self, answer=None):
+        super().__init__()
+        self.answer = answer
+
+    def size(self):
+        return self.answer if self.answer is not None else sum(len(p) for p in self.patterns)
+
+
+def test_a_learner_s_size_goes_into_the_summary_and_the_report(tmp_path):
+    learner = Sized()
+    result = eyehand.run(learner, trials=12, data=tmp_path)
+    size = learner.size()
+    assert size > 0 and result["summary"]["nodes"] == size
+    assert f"model: {size} nodes" in result["report"]
+    last = (result["folder"] / "nodes").read_text().splitlines()[-1].split()
+    assert last[:2] == ["12", str(size)]
+    plain = eyehand.run(NamedIk(), trials=2, data=tmp_path)
+    assert plain["summary"]["nodes"] == 0, "no size() is 0"
+
+
+@pytest.mark.parametrize("answer", [-1, 2.5, "many"])
+def test_a_size_that_is_no_count_stops_the_run(tmp_path, answer):
+    with pytest.raises((ValueError, TypeError), match="size\\(\\) must be a count"):
+        eyehand.run(Sized(answer), trials=5, data=tmp_path)

@@ -77,6 +77,17 @@ def test_a_named_learner_gets_queries_and_patterns_by_name(repo, tmp_path):
     assert np.allclose(trial.inputs, old_inputs[:, [3, 4, 0, 1, 2]])
 
 
+def test_a_testbed_hands_a_named_learner_patterns():
+    testbed, learner = eyehand.Testbed(seed=3), NamedIk()
+    testbed.prelearn(learner)
+    query = testbed.reset()
+    while not testbed.done:
+        testbed.step(learner.propose(eyehand.Query(*query[[3, 4, 0, 1, 2]])))
+        query = testbed.observation
+    testbed.learn(learner)
+    assert len(learner.patterns) == 8 + 1 and all(isinstance(p, eyehand.Patterns) for p in learner.patterns)
+    assert np.array_equal(learner.patterns[-1].path, testbed.path)
+
 def test_the_old_api_is_kept_without_the_attribute(tmp_path):
     class Arrays:
         name = "arrays"

@@ -6,12 +6,17 @@ line uses.
   ``prelearn``, ``stretch_link``, ``rotate_camera``, ``fk``).
 - ``Learner``: a built-in learner (``lin5``, ``lin8``, ``nnw``, ``ffn``, ``kohonen``, ``ik``)
   with ``propose(query)`` and ``learn(path)``.
-- ``patterns``: a path's learning patterns as the built-in learners form them.
+- ``patterns``: a path's learning patterns as the built-in learners form them;
+  ``Patterns`` the same by name, and ``Query`` a query by name (``INPUTS``, ``INPUT_UNITS``,
+  ``TARGETS`` name their columns; ``input_bounds`` gives a config's boundaries in that order).
 - ``run``: a whole run of a built-in or a Python learner, writing the run folder
   ``eyehand run`` writes.
 
 A query (and the environment's observation) is (cx, cy, cz, θ2, θ3); a path is an (n, 6)
-array of poses (cx, cy, cz, θ1, θ2, θ3); moves are (Δθ1, Δθ2, Δθ3) in degrees.
+array of poses (cx, cy, cz, θ1, θ2, θ3); moves are (Δθ1, Δθ2, Δθ3) in degrees. A learner
+that sets ``eyehand_api = 2`` gets named inputs instead: ``propose(query)`` an
+``eyehand.Query`` and ``learn(patterns)`` an ``eyehand.Patterns``, whose five inputs come in
+the order of ``INPUTS`` — (θ2, θ3, cx, cy, cz), the order of the config's boundaries 0–4.
 """
 
 import json
@@ -19,10 +24,33 @@ import pathlib
 
 import numpy as np
 
-from ._eyehand import ENTRY_NAMES, Learner, Testbed, patterns
+from ._eyehand import (
+    ENTRY_NAMES,
+    INPUT_UNITS,
+    INPUTS,
+    TARGETS,
+    Learner,
+    Patterns,
+    Query,
+    Testbed,
+    patterns,
+)
 from ._eyehand import run as _run
 
-__all__ = ["ENTRY_NAMES", "Learner", "Testbed", "patterns", "run", "RECORDED_STEPS"]
+__all__ = [
+    "ENTRY_NAMES",
+    "INPUTS",
+    "INPUT_UNITS",
+    "TARGETS",
+    "Learner",
+    "Patterns",
+    "Query",
+    "Testbed",
+    "input_bounds",
+    "patterns",
+    "run",
+    "RECORDED_STEPS",
+]
 
 #: Distances after feedback steps 1..RECORDED_STEPS are written to ``1step`` … ``5step``.
 RECORDED_STEPS = 5
@@ -47,19 +75,28 @@ def run(
 
     ``learner`` is any object with ``propose(query) -> (3,)`` and ``learn(path)`` (its
     ``name`` attribute, or its class name, names its folder); without it the built-in
-    ``method`` (default: the config's) runs. ``config`` is a config file (default: none,
-    every entry at its default); keyword ``entries`` override its entries as ``--set``
-    does; ``events`` are ``rotate:TRIAL:DEG`` / ``elongate:TRIAL:LINK:CM`` strings.
+    ``method`` (default: the config's) runs. With ``eyehand_api = 2`` on the learner,
+    ``propose`` gets an ``eyehand.Query`` and ``learn`` an ``eyehand.Patterns`` (formed
+    with the run's ``minimal_joint_move``) instead of arrays. A ``setup(config)`` it
+    defines is called once before pre-learning with the run's resolved config, a dict of
+    every entry by name (ints, floats, tuples of floats, lists for repeated entries,
+    strings). A ``size()`` it defines (a count of its nodes, fields or units) is its
+    ``nodes`` figure: in summary.json, the report and the ``nodes`` file.
+
+    ``config`` is a config file (default: none, every entry at its default); keyword
+    ``entries`` override its entries as ``--set`` does; ``events`` are
+    ``rotate:TRIAL:DEG`` / ``elongate:TRIAL:LINK:CM`` strings.
 
     Returns a dict: ``folder`` (a ``pathlib.Path``), ``summary`` (summary.json as a dict),
-    ``trials`` and ``distances_mm``: for each feedback step 1..5, NumPy arrays of the
-    trials that took that step and the distance to the target (mm) after it.
+    ``report`` (the summary as ``eyehand run`` prints it), ``trials`` and
+    ``distances_mm``: for each feedback step 1..5, NumPy arrays of the trials that took
+    that step and the distance to the target (mm) after it.
 
     The GIL is released while Rust runs (a Python learner takes it back for its calls).
     A Python learner's exception — or a non-finite move, as ``ValueError`` — stops the run
     and is raised here; the run folder keeps the data files written so far.
     """
-    folder, summary = _run(
+    folder, summary, report = _run(
         learner,
         method=method,
         trials=trials,
@@ -78,9 +115,19 @@ def run(
     return {
         "folder": folder,
         "summary": json.loads(summary),
+        "report": report,
         "trials": [trials for trials, _ in steps],
         "distances_mm": [distances for _, distances in steps],
     }
+
+
+def input_bounds(config):
+    """The boundaries of the five inputs in a config dict (as a learner's ``setup`` gets
+    it): ``(low, high)``, two (5,) arrays in the order of ``INPUTS`` (θ2 °, θ3 °, cx px,
+    cy px, cz) — ``boundary_0`` … ``boundary_4``."""
+    low = np.array([float(config[f"boundary_{i}_low"]) for i in range(len(INPUTS))])
+    high = np.array([float(config[f"boundary_{i}_high"]) for i in range(len(INPUTS))])
+    return low, high
 
 
 def _read_step_file(path):

@@ -1,9 +1,11 @@
 //! Learners across the boundary: a Python object with `propose` and `learn` as a Rust
 //! [`Learner`], and the built-in learners as the Python class `eyehand.Learner`.
 
+use crate::config_dict::config_dict;
 use crate::convert::{load_config, path_array, path_from, query_array, query_from, vector3};
+use crate::named::{NamedQuery, Patterns};
 use eyehand::experiment::setup::build_learner;
-use eyehand::experiment::StopRequest;
+use eyehand::experiment::{Config, StopRequest};
 use eyehand::learn::{LearnError, Learner, LearnerStats, Observation, Query};
 use eyehand::robot::ArmModel;
 use nalgebra::Vector3;
@@ -24,6 +26,9 @@ pub const SIGINT: i32 = 2;
 /// trial loop. The first exception (or non-finite move) is kept in its slot; from then on
 /// it proposes no move and its `learn` fails, which stops the run.
 ///
+/// What its calls are given is its [`Api`]; a `size()` it defines is its `nodes` figure,
+/// and a `setup(config)` it defines is called by [`PyLearner::configured`].
+///
 /// Given a run's stop request ([`PyLearner::stopping`]), it also lets Python's signal
 /// handlers run before each call: Ctrl-C's `KeyboardInterrupt`, raised there or inside the
 /// learner's own code, asks the run to stop after the current trial (the call it broke
@@ -32,12 +37,45 @@ pub const SIGINT: i32 = 2;
 pub struct PyLearner {
     object: Py<PyAny>,
     name: String,
+    api: Api,
+    has_size: bool,
+    minimal_joint_move: f64,
     error: ErrorSlot,
     stop: Option<(StopRequest, ErrorSlot)>,
 }
 
+/// What a Python learner's calls are given, by its `eyehand_api` attribute.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Api {
+    /// No attribute, or `eyehand_api = 1`: `propose` gets the (5,) array (cx, cy, cz, θ2,
+    /// θ3), `learn` the trial's (n, 6) path.
+    Arrays,
+    /// `eyehand_api = 2`: `propose` gets an `eyehand.Query`, `learn` an `eyehand.Patterns`.
+    Named,
+}
+
+impl Api {
+    /// The API `object` asks for; an `eyehand_api` other than 1 or 2 is a `ValueError`.
+    fn of(object: &Bound<'_, PyAny>) -> PyResult<Api> {
+        if !object.hasattr("eyehand_api")? {
+            return Ok(Api::Arrays);
+        }
+        let asked = object.getattr("eyehand_api")?;
+        match asked.extract::<i64>() {
+            Ok(1) => Ok(Api::Arrays),
+            Ok(2) => Ok(Api::Named),
+            _ => Err(PyValueError::new_err(format!(
+                "eyehand_api is 1 (arrays) or 2 (eyehand.Query and eyehand.Patterns), not {}",
+                asked.repr()?
+            ))),
+        }
+    }
+}
+
 impl PyLearner {
     /// Wraps `object`; its runs are filed under its `name` attribute, or its class name.
+    /// Its patterns take the declared default `minimal_joint_move` until
+    /// [`configured`](PyLearner::configured).
     pub fn new(object: &Bound<'_, PyAny>, error: ErrorSlot) -> PyResult<PyLearner> {
         let name = match object.getattr("name") {
             Ok(name) if name.is_instance_of::<pyo3::types::PyString>() => name.extract()?,
@@ -46,8 +84,25 @@ impl PyLearner {
         Ok(PyLearner {
             object: object.clone().unbind(),
             name,
+            api: Api::of(object)?,
+            has_size: object.hasattr("size")?,
+            minimal_joint_move: Config::default_config().minimal_joint_move,
             error,
             stop: None,
+        })
+    }
+
+    /// The learner set up for a run of `config` (the run's, resolved): its `setup(config)`
+    /// called, if it has one, with the entries as a dict; its patterns formed with the
+    /// config's `minimal_joint_move`.
+    pub fn configured(self, py: Python<'_>, config: &Config) -> PyResult<PyLearner> {
+        let object = self.object.bind(py);
+        if object.hasattr("setup")? {
+            object.call_method1("setup", (config_dict(py, config)?,))?;
+        }
+        Ok(PyLearner {
+            minimal_joint_move: config.minimal_joint_move,
+            ..self
         })
     }
 
@@ -92,11 +147,36 @@ impl PyLearner {
         }
     }
 
+    /// What the learner's `size()` answers (0 without one, or once it has failed); an
+    /// answer that is no count fails it.
+    fn size(&self) -> usize {
+        if !self.has_size || self.failed() {
+            return 0;
+        }
+        Python::attach(|py| {
+            let answer = self.object.bind(py).call_method0("size")?;
+            answer.extract::<usize>().map_err(|_| {
+                PyValueError::new_err(format!(
+                    "learner `{}`'s size() must be a count (an int ≥ 0), not {}",
+                    self.name,
+                    answer
+                        .repr()
+                        .map_or_else(|_| "?".to_string(), |r| r.to_string())
+                ))
+            })
+        })
+        .unwrap_or_else(|error| {
+            self.keep(error);
+            0
+        })
+    }
+
     fn call_propose(&self, py: Python<'_>, query: &Query) -> PyResult<Vector3<f64>> {
-        let answer = self
-            .object
-            .bind(py)
-            .call_method1("propose", (query_array(py, query),))?;
+        let object = self.object.bind(py);
+        let answer = match self.api {
+            Api::Arrays => object.call_method1("propose", (query_array(py, query),))?,
+            Api::Named => object.call_method1("propose", (NamedQuery::of(query),))?,
+        };
         let delta = vector3(&answer, "propose's answer")?;
         if !delta.iter().all(|v| v.is_finite()) {
             return Err(PyValueError::new_err(format!(
@@ -142,11 +222,15 @@ impl Learner for PyLearner {
         if !self.failed() {
             let called = Python::attach(|py| {
                 self.guarded(py, |py| {
-                    let path = path_array(py, path)?;
-                    self.object
-                        .bind(py)
-                        .call_method1("learn", (path,))
-                        .map(drop)
+                    let object = self.object.bind(py);
+                    match self.api {
+                        Api::Arrays => object.call_method1("learn", (path_array(py, path)?,)),
+                        Api::Named => object.call_method1(
+                            "learn",
+                            (Patterns::of(py, path, self.minimal_joint_move)?,),
+                        ),
+                    }
+                    .map(drop)
                 })
             });
             if let Err(error) = called {
@@ -164,6 +248,13 @@ impl Learner for PyLearner {
                 reason,
             }),
             None => Ok(()),
+        }
+    }
+
+    fn stats(&self) -> LearnerStats {
+        LearnerStats {
+            nodes: self.size(),
+            ..LearnerStats::default()
         }
     }
 }

@@ -1,8 +1,10 @@
 //! The Python extension `eyehand._eyehand`: the testbed, the built-in learners and runs,
 //! on the same engine as the `eyehand` command line.
 
+mod config_dict;
 mod convert;
 mod learner;
+mod named;
 mod patterns;
 mod run;
 mod testbed;
@@ -14,6 +16,11 @@ use pyo3::prelude::*;
 fn _eyehand(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<testbed::Testbed>()?;
     m.add_class::<learner::BuiltinLearner>()?;
+    m.add_class::<named::NamedQuery>()?;
+    m.add_class::<named::Patterns>()?;
+    m.add("INPUTS", named::INPUTS.to_vec())?;
+    m.add("INPUT_UNITS", named::INPUT_UNITS.to_vec())?;
+    m.add("TARGETS", named::TARGETS.to_vec())?;
     m.add_function(wrap_pyfunction!(run::run_py, m)?)?;
     m.add_function(wrap_pyfunction!(run::parse_event, m)?)?;
     m.add_function(wrap_pyfunction!(patterns::patterns, m)?)?;

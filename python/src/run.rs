@@ -5,7 +5,7 @@
 
 use crate::convert::{load_config, run_error, set_entry, value_error};
 use crate::learner::{ErrorSlot, PyLearner, SIGINT};
-use eyehand::experiment::{run, run_learner, Event, RunError, RunOptions, RunResult};
+use eyehand::experiment::{run, run_learner_set_up, Event, RunError, RunOptions, RunResult};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -17,7 +17,8 @@ use std::time::Duration;
 /// How often the waiting thread lets Python run its signal handlers.
 const SIGNAL_POLL: Duration = Duration::from_millis(50);
 
-/// Runs a run and returns (its folder, summary.json's text). `learner` is a Python object
+/// Runs a run and returns (its folder, summary.json's text, the summary as `eyehand run`
+/// prints it). `learner` is a Python object
 /// with `propose` and `learn`; without it the config's (or `method`'s) built-in learner
 /// runs. Keyword entries override the config's, as `--set` does.
 #[pyfunction(name = "run")]
@@ -37,7 +38,7 @@ pub fn run_py(
     events: Vec<String>,
     plot: bool,
     entries: Option<&Bound<'_, PyDict>>,
-) -> PyResult<(String, String)> {
+) -> PyResult<(String, String, String)> {
     let (mut config, config_name) = load_config(config.as_deref(), entries)?;
     let overrides = [
         ("method", method.map(str::to_string)),
@@ -72,21 +73,28 @@ pub fn run_py(
         Some(object) => run_python_learner(py, object, &options)?,
     };
     let summary = serde_json::to_string(&result.summary).map_err(value_error)?;
-    Ok((result.folder.display().to_string(), summary))
+    Ok((
+        result.folder.display().to_string(),
+        summary,
+        result.summary.one_screen(),
+    ))
 }
 
 /// A run with a Python learner, on this thread (a learner may hold objects that must
-/// stay on it): its exception, if it raised one, is raised again; Ctrl-C, met by the
-/// learner's calls, stops the run after its trial and is raised once the run is written.
+/// stay on it), set up with the run's resolved config before anything is written: its
+/// exception, if it raised one, is raised again; Ctrl-C, met by the learner's calls, stops
+/// the run after its trial and is raised once the run is written.
 fn run_python_learner(
     py: Python<'_>,
     object: &Bound<'_, PyAny>,
     options: &RunOptions,
 ) -> PyResult<RunResult> {
     let (failure, interrupt) = (ErrorSlot::default(), ErrorSlot::default());
-    let learner =
-        PyLearner::new(object, failure.clone())?.stopping(options.stop.clone(), interrupt.clone());
-    let outcome = py.detach(|| run_learner(options, Box::new(learner)));
+    let setup = py.detach(|| options.warned_setup()).map_err(run_error)?;
+    let learner = PyLearner::new(object, failure.clone())?
+        .configured(py, &setup.config)?
+        .stopping(options.stop.clone(), interrupt.clone());
+    let outcome = py.detach(|| run_learner_set_up(options, setup, Box::new(learner)));
     for slot in [failure, interrupt] {
         if let Some(error) = slot.lock().ok().and_then(|mut s| s.take()) {
             return Err(error);

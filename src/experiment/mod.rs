@@ -41,7 +41,7 @@ pub use preflight::{
     contact_stopped_moves, preflight, reachable_points, target_poses_in_contact, PreflightError,
     MIN_REACHABLE_SHARE, REACH_SAMPLES,
 };
-pub use run::{run, run_learner, RunError, RunOptions, RunResult};
+pub use run::{run, run_learner, run_learner_set_up, RunError, RunOptions, RunResult};
 pub use run_folder::{allocate_run_folder, fresh_run_folder, RunFolderError, RUN_IDS};
 pub use run_request::{RequestError, RunRequest};
 pub use run_setup::{fit_reach_space_to_arm, RunSetup};

@@ -129,7 +129,7 @@ pub struct RunResult {
 /// fills its folder (`<data>/<method>/<id>/`). The config, events and arm are checked
 /// before the folder is made.
 pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
-    let setup = warned_setup(options)?;
+    let setup = options.warned_setup()?;
     let folder = run_folder(options, options.config.method.name())?;
     let learner = setup.learner(Some(&folder))?;
     drive(options, setup, folder, learner)
@@ -139,14 +139,31 @@ pub fn run(options: &RunOptions) -> Result<RunResult, RunError> {
 /// crate, say): the same trial loop, data files and summary as [`run`], in
 /// `<data>/<learner name>/<id>/`. The config's `method` entry is not used.
 pub fn run_learner(options: &RunOptions, learner: Box<dyn Learner>) -> Result<RunResult, RunError> {
-    let name = learner.name();
+    check_learner_name(learner.name())?;
+    let setup = options.warned_setup()?;
+    run_learner_set_up(options, setup, learner)
+}
+
+/// [`run_learner`] on `setup`, the run [`RunOptions::setup`] (or
+/// [`RunOptions::warned_setup`]) put together from `options`: for a caller that hands its
+/// learner something of the run first, such as the resolved config.
+pub fn run_learner_set_up(
+    options: &RunOptions,
+    setup: RunSetup,
+    learner: Box<dyn Learner>,
+) -> Result<RunResult, RunError> {
+    check_learner_name(learner.name())?;
+    let folder = run_folder(options, learner.name())?;
+    drive(options, setup, folder, learner)
+}
+
+/// A learner's name is a folder's: letters, digits, `_` and `-`, not empty.
+fn check_learner_name(name: &str) -> Result<(), RunError> {
     let plain = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '-';
     if name.is_empty() || !name.chars().all(plain) {
         return Err(RunError::LearnerName(name.to_string()));
     }
-    let setup = warned_setup(options)?;
-    let folder = run_folder(options, name)?;
-    drive(options, setup, folder, learner)
+    Ok(())
 }
 
 /// The run's fixed folder (emptied), or the first free `<data>/<name>/<id>/`.
@@ -157,15 +174,6 @@ fn run_folder(options: &RunOptions, name: &str) -> Result<PathBuf, RunFolderErro
     }
 }
 
-/// The run put together and checked, its URDF's warnings printed to stderr.
-fn warned_setup(options: &RunOptions) -> Result<RunSetup, RunError> {
-    let setup = options.setup()?;
-    for warning in &setup.warnings {
-        eprintln!("eyehand: warning: {warning}");
-    }
-    Ok(setup)
-}
-
 impl RunOptions {
     /// The run these options ask for, put together: the arm its URDF and the config's arm
     /// entries give, the reach space, the config's events and the options', once all of
@@ -174,6 +182,15 @@ impl RunOptions {
         let events = Event::of_run(&self.config, &self.events);
         let urdf = self.urdf.as_deref();
         RunSetup::new(self.config.clone(), urdf, events, &self.sources)
+    }
+
+    /// [`setup`](RunOptions::setup), its URDF's warnings printed to stderr.
+    pub fn warned_setup(&self) -> Result<RunSetup, RunError> {
+        let setup = self.setup()?;
+        for warning in &setup.warnings {
+            eprintln!("eyehand: warning: {warning}");
+        }
+        Ok(setup)
     }
 }
 

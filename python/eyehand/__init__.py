@@ -21,6 +21,7 @@ the order of ``INPUTS`` — (θ2, θ3, cx, cy, cz), the order of the config's bo
 
 import json
 import pathlib
+import warnings
 
 import numpy as np
 
@@ -43,6 +44,7 @@ __all__ = [
     "INPUT_UNITS",
     "TARGETS",
     "Learner",
+    "NotLearnedWarning",
     "Patterns",
     "Query",
     "Testbed",
@@ -54,6 +56,12 @@ __all__ = [
 
 #: Distances after feedback steps 1..RECORDED_STEPS are written to ``1step`` … ``5step``.
 RECORDED_STEPS = 5
+
+
+class NotLearnedWarning(RuntimeWarning):
+    """A run that learned nothing (``summary["learned"]`` false; where ``eyehand run``
+    exits 1): every trial failed, no trial gave the learner a pattern, or the arm stayed at
+    its start pose through the window — a learner that answers zero moves, say."""
 
 
 def run(
@@ -88,9 +96,11 @@ def run(
     ``rotate:TRIAL:DEG`` / ``elongate:TRIAL:LINK:CM`` strings.
 
     Returns a dict: ``folder`` (a ``pathlib.Path``), ``summary`` (summary.json as a dict),
-    ``report`` (the summary as ``eyehand run`` prints it), ``trials`` and
-    ``distances_mm``: for each feedback step 1..5, NumPy arrays of the trials that took
-    that step and the distance to the target (mm) after it.
+    ``report`` (the summary as ``eyehand run`` prints it), ``learned`` (false for a run that
+    learned nothing, which also warns with ``NotLearnedWarning`` and the reason
+    ``summary["not_learned"]`` gives), ``trials`` and ``distances_mm``: for each feedback
+    step 1..5, NumPy arrays of the trials that took that step and the distance to the
+    target (mm) after it.
 
     The GIL is released while Rust runs (a Python learner takes it back for its calls).
     A Python learner's exception — or a non-finite move, as ``ValueError`` — stops the run
@@ -111,11 +121,17 @@ def run(
         **entries,
     )
     folder = pathlib.Path(folder)
+    summary = json.loads(summary)
+    if not summary["learned"]:
+        reason = summary["not_learned"]["reason"]
+        message = f"nothing was learned: {reason} ({folder})"
+        warnings.warn(message, NotLearnedWarning, stacklevel=2)
     steps = [_read_step_file(folder / f"{k}step") for k in range(1, RECORDED_STEPS + 1)]
     return {
         "folder": folder,
-        "summary": json.loads(summary),
+        "summary": summary,
         "report": report,
+        "learned": summary["learned"],
         "trials": [trials for trials, _ in steps],
         "distances_mm": [distances for _, distances in steps],
     }

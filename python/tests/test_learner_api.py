@@ -141,6 +141,8 @@ def test_setup_gets_the_run_s_resolved_config_typed_before_any_call(tmp_path):
     assert low[0] == config["boundary_0_low"] and high[4] == config["boundary_4_high"]
 
 
+# Its one-trial run of a recording learner learns nothing, and says so.
+@pytest.mark.filterwarnings("ignore::eyehand.NotLearnedWarning")
 def test_setup_gets_the_boundaries_fitted_to_another_arm(repo, tmp_path):
     config = tmp_path / "ur_style.conf"
     # The reach space `eyehand reach` fits to the arm, given so that the test is quick.
@@ -219,3 +221,32 @@ def test_a_learner_s_size_goes_into_the_summary_and_the_report(tmp_path):
 def test_a_size_that_is_no_count_stops_the_run(tmp_path, answer):
     with pytest.raises((ValueError, TypeError), match="size\\(\\) must be a count"):
         eyehand.run(Sized(answer), trials=5, data=tmp_path)
+
+
+class Still:
+    """A learner that answers zero moves: the arm never leaves its starts."""
+
+    name = "still"
+
+    def propose(self, query):
+        return np.zeros(3)
+
+    def learn(self, path):
+        pass
+
+
+def test_a_learner_that_never_moves_the_arm_is_reported(tmp_path):
+    expected = "nothing was learned: no trial of 30 gave"
+    with pytest.warns(eyehand.NotLearnedWarning, match=expected):
+        result = eyehand.run(Still(), trials=30, seed=1, data=tmp_path)
+    assert result["learned"] is False
+    assert result["summary"]["learned"] is False
+    assert result["summary"]["not_learned"]["kind"] == "no_pattern"
+    assert "answered zero moves" in result["summary"]["not_learned"]["reason"]
+
+
+def test_a_run_that_learns_says_so_without_a_warning(tmp_path, recwarn):
+    result = eyehand.run(method="lin5", trials=30, seed=1, data=tmp_path)
+    assert result["learned"] is True
+    assert result["summary"]["not_learned"] is None
+    assert not [w for w in recwarn if issubclass(w.category, eyehand.NotLearnedWarning)]

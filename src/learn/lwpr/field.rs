@@ -2,7 +2,7 @@
 //! the local linear model (weighted means and incremental PLS) it weighs its data by.
 
 use super::metric::{DistanceMetric, MetricStep};
-use super::projection::{Input, Pls, INPUTS};
+use super::projection::{Input, Pls, FIRST_PROJECTIONS, INPUTS};
 use super::LwprSettings;
 
 /// Patterns below this activation leave a field untouched, and answers ignore fields below
@@ -26,8 +26,9 @@ pub(super) struct ReceptiveField {
 }
 
 impl ReceptiveField {
-    /// A field centred on `x` answering `y`, with the metric of `template` when given
-    /// (a neighbour's adapted metric) or the initial one.
+    /// A field centred on `x` answering `y`. Made next to `template` (a trusted
+    /// neighbour) it starts with that field's metric and number of projections, as the
+    /// reference library does; otherwise with the initial metric and two projections.
     pub(super) fn new(
         x: Input,
         y: f64,
@@ -36,10 +37,14 @@ impl ReceptiveField {
     ) -> ReceptiveField {
         ReceptiveField {
             centre: x,
-            metric: template.map_or_else(|| DistanceMetric::new(settings), |t| t.metric.clone()),
+            metric: template
+                .map_or_else(|| DistanceMetric::new(settings), |t| t.metric.inherited()),
             mean_x: x,
             beta0: y,
-            pls: Pls::new(settings.init_lambda),
+            pls: Pls::new(
+                template.map_or(FIRST_PROJECTIONS, |t| t.pls.projections().len()),
+                settings.init_lambda,
+            ),
             trusted: false,
         }
     }

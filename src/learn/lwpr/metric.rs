@@ -49,6 +49,11 @@ pub(super) struct MetricStep {
     pub(super) errors: PlsErrors,
 }
 
+/// ln α of each rate (kept finite for a zero rate).
+fn log_rates(alpha: &Square) -> Square {
+    alpha.map(|a| (a + 1e-10).ln())
+}
+
 impl DistanceMetric {
     /// The metric `init_D`·I with every rate `init_alpha`.
     pub(super) fn new(settings: &LwprSettings) -> DistanceMetric {
@@ -57,8 +62,18 @@ impl DistanceMetric {
             m: Square::from_diagonal_element(settings.init_d.sqrt()),
             d: Square::from_diagonal_element(settings.init_d),
             alpha,
-            log_alpha: alpha.map(|a| (a + 1e-10).ln()),
+            log_alpha: log_rates(&alpha),
             memory: Square::zeros(),
+        }
+    }
+
+    /// A new field's copy of this metric: M, D and the rates, with the meta-learning
+    /// memory fresh and the log rates taken from the rates.
+    pub(super) fn inherited(&self) -> DistanceMetric {
+        DistanceMetric {
+            log_alpha: log_rates(&self.alpha),
+            memory: Square::zeros(),
+            ..self.clone()
         }
     }
 

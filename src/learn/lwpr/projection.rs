@@ -6,7 +6,8 @@
 //! weighted correlation of x_r with that output residual; p_r regresses x_r on s_r so the
 //! next projection sees only what is left. Every sum is discounted by the projection's own
 //! forgetting factor λ. A field starts with two projections (so that their errors can be
-//! compared) and adds one, up to one per input, while the last one still pays off.
+//! compared), or with as many as the neighbour it is made next to, and adds one, up to one
+//! per input, while the last one still pays off.
 
 use nalgebra::SVector;
 
@@ -15,8 +16,8 @@ pub(super) const INPUTS: usize = 5;
 /// A vector over the inputs.
 pub(super) type Input = SVector<f64, INPUTS>;
 
-/// Projections a new field starts with.
-const FIRST_PROJECTIONS: usize = 2;
+/// Projections a field made away from any trusted neighbour starts with.
+pub(super) const FIRST_PROJECTIONS: usize = 2;
 /// The starting value of a projection's Σ w s², keeping its first regression finite.
 const INIT_S2: f64 = 1e-10;
 /// The starting value of a projection's weight and data counts.
@@ -100,11 +101,11 @@ pub(super) struct Pls {
 }
 
 impl Pls {
-    /// A model with its first two projections along the first two inputs.
-    pub(super) fn new(lambda: f64) -> Pls {
+    /// A fresh model with its first `used` projections (2 to 5) along the first inputs.
+    pub(super) fn new(used: usize, lambda: f64) -> Pls {
         Pls {
             projections: std::array::from_fn(|k| Projection::along(k, lambda)),
-            used: FIRST_PROJECTIONS,
+            used,
             sum_e2: 0.0,
         }
     }

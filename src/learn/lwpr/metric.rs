@@ -19,8 +19,9 @@ type Square = SMatrix<f64, INPUTS, INPUTS>;
 const MAX_LOG_RATE: f64 = 10.0;
 /// The largest change of a log learning rate per pattern (with `meta`).
 const MAX_LOG_RATE_STEP: f64 = 0.1;
-/// A step of an element of M larger than this fraction of M's largest element is refused
-/// and that element's learning rate halved.
+/// A step that would shrink an element of M by more than this fraction of M's largest
+/// element is refused and that element's learning rate halved (as in the reference
+/// library, a step that grows it is never refused).
 const MAX_RELATIVE_STEP: f64 = 0.1;
 
 /// The distance metric of a field and what adapts it.
@@ -175,18 +176,46 @@ impl DistanceMetric {
         }
     }
 
-    /// The gradient step on M, refusing (and slowing) steps too large for M.
+    /// The gradient step on M, refusing (and slowing) a step that shrinks an element by
+    /// too much for M. The halved rate lasts until the next meta step sets it from its log.
     fn descend(&mut self, gradient: &Square, transient: f64) {
         let limit = MAX_RELATIVE_STEP * self.m.amax();
         for k in 0..INPUTS * INPUTS {
             let step = self.alpha[k] * gradient[k] * transient;
-            if step.abs() > limit {
+            if step > limit {
                 self.alpha[k] /= 2.0;
-                self.log_alpha[k] -= std::f64::consts::LN_2;
             } else {
                 self.m[k] -= step;
             }
         }
         self.d = self.m.transpose() * self.m;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A metric of `init_D` 4 (M = 2·I) with every rate 1.
+    fn metric() -> DistanceMetric {
+        DistanceMetric::new(&LwprSettings {
+            init_d: 4.0,
+            init_alpha: 1.0,
+            ..LwprSettings::default()
+        })
+    }
+
+    #[test]
+    fn a_large_step_that_grows_m_is_taken_and_one_that_shrinks_it_is_refused() {
+        let mut metric = metric();
+        let mut gradient = Square::zeros();
+        gradient[(0, 0)] = -1.0; // grows M₀₀ by 1, half of max M
+        gradient[(1, 1)] = 1.0; // would shrink M₁₁ by 1
+        metric.descend(&gradient, 1.0);
+        assert_eq!(metric.m[(0, 0)], 3.0);
+        assert_eq!(metric.alpha[(0, 0)], 1.0);
+        assert_eq!(metric.m[(1, 1)], 2.0);
+        assert_eq!(metric.alpha[(1, 1)], 0.5);
+        assert_eq!(metric.d[(0, 0)], 9.0);
     }
 }

@@ -8,7 +8,7 @@
 //! With the Gaussian kernel w = exp(−q/2), q = ‖M·dx‖², the derivative of q by Mₙₘ is
 //! 2·(M·dx)ₙ·dxₘ and that of Σ D²ᵢⱼ is 4·(M·D)ₙₘ.
 
-use super::projection::{Input, Pls, PlsErrors, INPUTS};
+use super::projection::{Input, Pls, PlsErrors, Projection, INPUTS};
 use super::LwprSettings;
 use nalgebra::SMatrix;
 
@@ -92,14 +92,17 @@ impl DistanceMetric {
     /// updates the traces of `pls`' projections.
     pub(super) fn adapt(&mut self, step: MetricStep, pls: &mut Pls, settings: &LwprSettings) {
         let MetricStep { dx, w, errors } = step;
-        let supported = |n_data: f64, lambda: f64| n_data > 0.1 / (1.0 - lambda);
         let projections = pls.projections();
         let first = &projections[0];
-        if !supported(first.n_data, first.lambda) {
+        // A projection feeds the gradient once its data count, discounted by the first
+        // projection's forgetting, is large enough.
+        let forgetting = 1.0 - first.lambda;
+        let supported = |p: &Projection| p.n_data * forgetting > 0.1;
+        if !supported(first) {
             return;
         }
         let (mut h_per_w, mut pse_h, mut ps2_r, mut ps_h, mut s_pse) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        for p in projections.iter().filter(|p| supported(p.n_data, p.lambda)) {
+        for p in projections.iter().filter(|p| supported(p)) {
             let ps = p.s / p.ss2;
             h_per_w += p.s * ps;
             pse_h += ps * errors.fit * p.trace_h;
@@ -156,7 +159,7 @@ impl DistanceMetric {
         self.descend(&gradient, transient);
         let scale = w / (1.0 - h) * transient;
         for p in pls.projections_mut() {
-            if supported(p.n_data, p.lambda) {
+            if supported(p) {
                 p.trace_h = p.lambda * p.trace_h + scale * p.s * errors.cv;
                 p.trace_r = p.lambda * p.trace_r + scale * w * e_cv2 * p.s * p.s;
             }

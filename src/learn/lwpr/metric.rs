@@ -115,7 +115,7 @@ impl DistanceMetric {
             return;
         }
         let big_w = first.sum_w * first.lambda + w;
-        let sum_cv2 = projections[projections.len() - 1].sum_e_cv2;
+        let sum_cv2 = pls.newest_mature().sum_e_cv2;
         let transient = (pls.sum_e2 / (sum_cv2 + 1e-10)).powi(4).min(1.0);
         let e_cv2 = errors.cv * errors.cv;
         let dj1_dw = -sum_cv2 / big_w.powi(2) + (e_cv2 - 2.0 * pse_h - 2.0 * ps2_r) / big_w;

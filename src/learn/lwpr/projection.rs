@@ -84,7 +84,8 @@ impl Projection {
 /// The errors of a training pattern.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct PlsErrors {
-    /// The leave-one-out error: the miss of the model before it saw the pattern.
+    /// The leave-one-out error: the miss of the model before it saw the pattern, up to
+    /// the newest projection that answers.
     pub(super) cv: f64,
     /// The miss of the model after it saw the pattern.
     pub(super) fit: f64,
@@ -135,6 +136,22 @@ impl Pls {
         y
     }
 
+    /// The newest projection that answers: the last, or the one before it while the last
+    /// is immature.
+    pub(super) fn newest_mature(&self) -> &Projection {
+        &self.projections[self.newest_mature_index()]
+    }
+
+    /// The index of [`newest_mature`](Self::newest_mature).
+    fn newest_mature_index(&self) -> usize {
+        let last = self.used - 1;
+        if self.is_immature(last) {
+            last - 1
+        } else {
+            last
+        }
+    }
+
     /// True for the newest projection while it has seen too little data to answer.
     fn is_immature(&self, r: usize) -> bool {
         r + 1 == self.used && self.projections[r].n_data <= MATURE_PER_INPUT * INPUTS as f64
@@ -181,7 +198,7 @@ impl Pls {
             self.sum_e2 = self.projections[used - 1].lambda * self.sum_e2 + w * fit * fit;
         }
         PlsErrors {
-            cv: cv[used - 1],
+            cv: cv[self.newest_mature_index()],
             fit,
         }
     }

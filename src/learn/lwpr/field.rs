@@ -70,12 +70,14 @@ impl ReceptiveField {
     }
 
     /// Trains the pattern (`x`, `y`) that activates this field by `w`: means, local model,
-    /// distance metric, projections, then the forgetting factors.
+    /// distance metric, projections, then the forgetting factors. The field is trusted
+    /// from the pattern after the one that took its count past two per input.
     pub(super) fn train(&mut self, x: &Input, y: f64, w: f64, settings: &LwprSettings) {
-        let discounted = {
+        let (discounted, n_data) = {
             let first = &self.pls.projections()[0];
-            first.sum_w * first.lambda
+            (first.sum_w * first.lambda, first.n_data)
         };
+        self.trusted |= n_data > TRUSTED_PER_INPUT * INPUTS as f64;
         let total = discounted + w;
         self.mean_x = (self.mean_x * discounted + x * w) / total;
         self.beta0 = (self.beta0 * discounted + y * w) / total;
@@ -88,7 +90,6 @@ impl ReceptiveField {
         self.metric.adapt(step, &mut self.pls, settings);
         self.pls.grow(settings.add_threshold, settings.init_lambda);
         self.pls.age(w, settings.tau_lambda, settings.final_lambda);
-        self.trusted |= self.pls.projections()[0].n_data > TRUSTED_PER_INPUT * INPUTS as f64;
     }
 
     /// Forgets faster again: every λ back to `init_lambda`.

@@ -111,7 +111,7 @@ impl DistanceMetric {
             s_pse += p.s * ps * errors.fit;
         }
         let h = w * h_per_w;
-        if !h.is_finite() || h >= 1.0 {
+        if !h.is_finite() {
             return;
         }
         let big_w = first.sum_w * first.lambda + w;

@@ -39,8 +39,11 @@ impl ReceptiveField {
             centre: x,
             metric: template
                 .map_or_else(|| DistanceMetric::new(settings), |t| t.metric.inherited()),
-            mean_x: x,
-            beta0: y,
+            // As in the reference library: the first pattern the field trains sets its
+            // means (these carry a weight of 1e-10), and a field made next to a neighbour
+            // starts from the neighbour's mean output.
+            mean_x: Input::zeros(),
+            beta0: template.map_or(y, |t| t.beta0),
             pls: Pls::new(
                 template.map_or(FIRST_PROJECTIONS, |t| t.pls.projections().len()),
                 settings.init_lambda,
@@ -66,7 +69,7 @@ impl ReceptiveField {
 
     /// The local model's answer at `x`.
     pub(super) fn predict(&self, x: &Input) -> f64 {
-        self.beta0 + self.pls.predict(x - self.mean_x)
+        self.pls.predict(self.beta0, x - self.mean_x)
     }
 
     /// Trains the pattern (`x`, `y`) that activates this field by `w`: means, local model,
@@ -78,9 +81,9 @@ impl ReceptiveField {
             (first.sum_w * first.lambda, first.n_data)
         };
         self.trusted |= n_data > TRUSTED_PER_INPUT * INPUTS as f64;
-        let total = discounted + w;
-        self.mean_x = (self.mean_x * discounted + x * w) / total;
-        self.beta0 = (self.beta0 * discounted + y * w) / total;
+        let inverse = 1.0 / (discounted + w);
+        self.mean_x = (self.mean_x * discounted + x * w) * inverse;
+        self.beta0 = (discounted * self.beta0 + w * y) * inverse;
         let errors = self.pls.train(x - self.mean_x, y - self.beta0, w);
         let step = MetricStep {
             dx: x - self.centre,
@@ -89,7 +92,7 @@ impl ReceptiveField {
         };
         self.metric.adapt(step, &mut self.pls, settings);
         self.pls.grow(settings.add_threshold, settings.init_lambda);
-        self.pls.age(w, settings.tau_lambda, settings.final_lambda);
+        self.pls.age(settings.tau_lambda, settings.final_lambda);
     }
 
     /// Forgets faster again: every λ back to `init_lambda`.

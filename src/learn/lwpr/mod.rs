@@ -53,4 +53,6 @@ pub use learner::Lwpr;
 pub use settings::LwprSettings;
 
 #[cfg(test)]
+mod reference_replay;
+#[cfg(test)]
 mod tests;

@@ -1,6 +1,7 @@
 //! Records the pattern stream LWPR learns from in a run: the adjusted 5-input patterns
 //! (θ2, θ3, cx*, cy*, cz*) → Δθ in the order `Lwpr::learn` trains them, written to stdout
-//! one per line after a header with the run's input boundaries and `norm_out`.
+//! one per line (to 6 significant digits, which keeps a fixture small: a replay reads the
+//! stream as written) after a header with the run's input boundaries and `norm_out`.
 //! `tools/lwpr_reference.sh` feeds the stream to the reference LWPR library to make the
 //! fixture of the replay test in `src/learn/lwpr/reference_replay.rs`.
 //!
@@ -42,7 +43,7 @@ impl Learner for Recording {
                 .collect();
             // Lwpr skips a pattern with a value that is not finite; so does the stream.
             if values.iter().all(|v| v.is_finite()) {
-                let line: Vec<String> = values.iter().map(f64::to_string).collect();
+                let line: Vec<String> = values.iter().map(|v| format!("{v:.5e}")).collect();
                 println!("p {}", line.join(" "));
             }
         }

@@ -2,17 +2,17 @@
  * Vijayakumar, v1.2.6) through its public API and prints, after every pattern, each
  * output's receptive-field count and the library's prediction at the next pattern's input.
  *
- * Usage: lwpr_reference_driver STREAM INIT_D W_GEN
+ * Usage: lwpr_reference_driver STREAM INIT_D W_GEN EVERY
  * STREAM is the output of `cargo run --example lwpr_patterns`: a `bounds` line (low and
  * high of the five inputs), a `norm_out` line and one `p x0 .. x4 t0 t1 t2` line per
  * pattern. Inputs are normalised as eyehand normalises them, (x - low) / (high - low), and
  * handed to the library with norm_in 1; outputs use the library's own norm_out. Every other
  * setting is the library's default, which eyehand's defaults are.
  *
- * Output, one line per pattern: `n F0 F1 F2 Y0 Y1 Y2` with the field counts after the
- * update and the predictions (degrees, cutoff 0.001) at the next pattern's input, `-` where
- * no trusted field is active there (the library answers 0), and nothing after the counts on
- * the last line. Build: see tools/lwpr_reference.sh. */
+ * Output, one line per pattern: `n F0 F1 F2` with the field counts after the update and,
+ * after every EVERY-th pattern but the last, ` Y0 Y1 Y2`: the predictions (degrees, cutoff
+ * 0.001) at the next pattern's input, `-` where no trusted field is active there (the
+ * library answers 0). Build: see tools/lwpr_reference.sh. */
 #include <lwpr.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -75,11 +75,11 @@ int main(int argc, char **argv) {
    LWPR_Model model;
    double low[INPUTS], span[INPUTS], norm_out = 1.0;
    double xn[INPUTS], y[OUTPUTS], conf[OUTPUTS];
-   int count, k, i, d;
+   int count, every, k, i, d;
    Pattern *patterns;
 
-   if (argc != 4) {
-      fprintf(stderr, "usage: %s STREAM INIT_D W_GEN\n", argv[0]);
+   if (argc != 5 || (every = atoi(argv[4])) < 1) {
+      fprintf(stderr, "usage: %s STREAM INIT_D W_GEN EVERY\n", argv[0]);
       return 2;
    }
    patterns = read_stream(argv[1], low, span, &norm_out, &count);
@@ -92,14 +92,14 @@ int main(int argc, char **argv) {
       for (i = 0; i < INPUTS; i++) xn[i] = (patterns[k].x[i] - low[i]) / span[i];
       lwpr_update(&model, xn, patterns[k].t, NULL, NULL);
       printf("n %d %d %d", model.sub[0].numRFS, model.sub[1].numRFS, model.sub[2].numRFS);
-      if (k + 1 < count) {
+      if (k + 1 < count && (k + 1) % every == 0) {
          for (i = 0; i < INPUTS; i++) xn[i] = (patterns[k + 1].x[i] - low[i]) / span[i];
          lwpr_predict(&model, xn, 0.001, y, conf, NULL);
          for (d = 0; d < OUTPUTS; d++) {
             if (conf[d] > UNCOVERED * norm_out) {
                printf(" -");
             } else {
-               printf(" %.12e", y[d]);
+               printf(" %.10e", y[d]);
             }
          }
       }

@@ -1,6 +1,7 @@
-//! The replay test: a pattern stream recorded from a run of this task, trained pattern by
-//! pattern, gives the reference LWPR library's field counts exactly and its predictions
-//! to 1e-6°. The fixture in `tests/data/lwpr_reference/` was made once by
+//! The replay test: a pattern stream recorded from a run of this task (7,222 patterns),
+//! trained pattern by pattern, gives the reference LWPR library's field counts after
+//! every pattern exactly and its predictions (after every 5th, at the next pattern's
+//! input) to 1e-6°. The fixture in `tests/data/lwpr_reference/` was made once by
 //! `tools/lwpr_reference.sh` (the stream by `examples/lwpr_patterns.rs`, the library's
 //! answers by `tools/lwpr_reference_driver.c`).
 
@@ -19,8 +20,8 @@ struct Stream {
     patterns: Vec<(Input, Vector3<f64>)>,
 }
 
-/// What the library gave after one pattern: field counts and the answers at the next
-/// pattern's input (`None`: no trusted field there; none at all after the last pattern).
+/// What the library gave after one pattern: field counts and, after every 5th, the
+/// answers at the next pattern's input (`None`: no trusted field there).
 struct LibraryStep {
     fields: [usize; 3],
     answers: Option<[Option<f64>; 3]>,
@@ -122,7 +123,7 @@ fn replay(settings: LwprSettings, name: &str) -> usize {
 #[test]
 fn the_library_defaults_replay_to_the_reference_library() {
     let compared = replay(LwprSettings::default(), "defaults.txt");
-    assert!(compared > 7_000, "{compared} answers compared");
+    assert!(compared > 4_000, "{compared} answers compared");
 }
 
 #[test]
@@ -133,5 +134,5 @@ fn narrow_kernels_replay_to_the_reference_library() {
         ..LwprSettings::default()
     };
     let compared = replay(settings, "init_D_200_w_gen_0.2.txt");
-    assert!(compared > 7_000, "{compared} answers compared");
+    assert!(compared > 4_000, "{compared} answers compared");
 }

@@ -2,7 +2,7 @@
 //! the local linear model (weighted means and incremental PLS) it weighs its data by.
 
 use super::metric::{DistanceMetric, MetricStep};
-use super::projection::{Input, Pls, INPUTS};
+use super::projection::{Input, Pls, FIRST_PROJECTIONS, INPUTS};
 use super::LwprSettings;
 
 /// Patterns below this activation leave a field untouched, and answers ignore fields below
@@ -26,8 +26,9 @@ pub(super) struct ReceptiveField {
 }
 
 impl ReceptiveField {
-    /// A field centred on `x` answering `y`, with the metric of `template` when given
-    /// (a neighbour's adapted metric) or the initial one.
+    /// A field centred on `x` answering `y`. Made next to `template` (a trusted
+    /// neighbour) it starts with that field's metric and number of projections, as the
+    /// reference library does; otherwise with the initial metric and two projections.
     pub(super) fn new(
         x: Input,
         y: f64,
@@ -36,10 +37,17 @@ impl ReceptiveField {
     ) -> ReceptiveField {
         ReceptiveField {
             centre: x,
-            metric: template.map_or_else(|| DistanceMetric::new(settings), |t| t.metric.clone()),
-            mean_x: x,
-            beta0: y,
-            pls: Pls::new(settings.init_lambda),
+            metric: template
+                .map_or_else(|| DistanceMetric::new(settings), |t| t.metric.inherited()),
+            // As in the reference library: the first pattern the field trains sets its
+            // means (these carry a weight of 1e-10), and a field made next to a neighbour
+            // starts from the neighbour's mean output.
+            mean_x: Input::zeros(),
+            beta0: template.map_or(y, |t| t.beta0),
+            pls: Pls::new(
+                template.map_or(FIRST_PROJECTIONS, |t| t.pls.projections().len()),
+                settings.init_lambda,
+            ),
             trusted: false,
         }
     }
@@ -61,19 +69,21 @@ impl ReceptiveField {
 
     /// The local model's answer at `x`.
     pub(super) fn predict(&self, x: &Input) -> f64 {
-        self.beta0 + self.pls.predict(x - self.mean_x)
+        self.pls.predict(self.beta0, x - self.mean_x)
     }
 
     /// Trains the pattern (`x`, `y`) that activates this field by `w`: means, local model,
-    /// distance metric, projections, then the forgetting factors.
+    /// distance metric, projections, then the forgetting factors. The field is trusted
+    /// from the pattern after the one that took its count past two per input.
     pub(super) fn train(&mut self, x: &Input, y: f64, w: f64, settings: &LwprSettings) {
-        let discounted = {
+        let (discounted, n_data) = {
             let first = &self.pls.projections()[0];
-            first.sum_w * first.lambda
+            (first.sum_w * first.lambda, first.n_data)
         };
-        let total = discounted + w;
-        self.mean_x = (self.mean_x * discounted + x * w) / total;
-        self.beta0 = (self.beta0 * discounted + y * w) / total;
+        self.trusted |= n_data > TRUSTED_PER_INPUT * INPUTS as f64;
+        let inverse = 1.0 / (discounted + w);
+        self.mean_x = (self.mean_x * discounted + x * w) * inverse;
+        self.beta0 = (discounted * self.beta0 + w * y) * inverse;
         let errors = self.pls.train(x - self.mean_x, y - self.beta0, w);
         let step = MetricStep {
             dx: x - self.centre,
@@ -82,8 +92,7 @@ impl ReceptiveField {
         };
         self.metric.adapt(step, &mut self.pls, settings);
         self.pls.grow(settings.add_threshold, settings.init_lambda);
-        self.pls.age(w, settings.tau_lambda, settings.final_lambda);
-        self.trusted |= self.pls.projections()[0].n_data > TRUSTED_PER_INPUT * INPUTS as f64;
+        self.pls.age(settings.tau_lambda, settings.final_lambda);
     }
 
     /// Forgets faster again: every λ back to `init_lambda`.

@@ -59,6 +59,18 @@ impl Lwpr {
         })
     }
 
+    /// The reference library's answer (degrees) at raw input `x`: the trusted fields'
+    /// alone, `None` for outputs no trusted field covers.
+    #[cfg(test)]
+    pub(super) fn answer_trusted(&self, x: &Input) -> [Option<f64>; 3] {
+        let x = self.normalise(x);
+        std::array::from_fn(|i| {
+            self.outputs[i]
+                .predict_trusted(&x)
+                .map(|y| y * self.settings.norm_out)
+        })
+    }
+
     /// How far the answer at raw input `x` misses `target` (degrees); `None` where some
     /// output has no field.
     fn miss(&self, x: &Input, target: &Vector3<f64>) -> Option<f64> {

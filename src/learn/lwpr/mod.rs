@@ -1,6 +1,11 @@
 //! `lwpr`: Locally Weighted Projection Regression (Vijayakumar, D'Souza and Schaal,
 //! "Incremental Online Learning in High Dimensions", Neural Computation 17(12), 2005),
-//! written here from the paper as the peer learner a roboticist would pick today.
+//! written here from the paper as the peer learner a roboticist would pick today, and
+//! computing as Klanke and Vijayakumar's reference library (v1.2.6) does: on a recorded
+//! pattern stream of this task the two agree to rounding (`reference_replay`). The one
+//! deliberate difference: while no trusted field covers a query, the answer comes from the
+//! untrusted fields (the library answers zero, and a zero move would give a run no pattern
+//! to learn from).
 //!
 //! It learns from the same adjusted 5-input patterns as `lin5` (see
 //! [`adjusted_pattern`](crate::learn::adjusted_pattern)): (θ2, θ3, cx*, cy*, cz*) → Δθ,
@@ -52,5 +57,7 @@ mod settings;
 pub use learner::Lwpr;
 pub use settings::LwprSettings;
 
+#[cfg(test)]
+mod reference_replay;
 #[cfg(test)]
 mod tests;

@@ -79,8 +79,22 @@ impl OutputModel {
 
     /// The answer at `x`: the activation-weighted mean of the trusted fields above the
     /// minimal activation, or of every such field while none is trusted; `None` when no
-    /// field is active there.
+    /// field is active there. (The reference library answers only from trusted fields;
+    /// answering from the others until then is what lets a run's first moves happen.)
     pub(super) fn predict(&self, x: &Input) -> Option<f64> {
+        let (trusted, any) = self.blends(x);
+        trusted.or(any).filter(|a| a.is_finite())
+    }
+
+    /// The answer at `x` of the trusted fields alone, as the reference library gives it.
+    #[cfg(test)]
+    pub(super) fn predict_trusted(&self, x: &Input) -> Option<f64> {
+        self.blends(x).0
+    }
+
+    /// The activation-weighted means at `x` of the trusted fields and of all fields above
+    /// the minimal activation, each `None` without such fields.
+    fn blends(&self, x: &Input) -> (Option<f64>, Option<f64>) {
         let (mut trusted, mut trusted_w, mut any, mut any_w) = (0.0, 0.0, 0.0, 0.0);
         for field in &self.fields {
             let w = field.activation(x);
@@ -93,12 +107,8 @@ impl OutputModel {
             }
             (any, any_w) = (any + y, any_w + w);
         }
-        let answer = if trusted_w > 0.0 {
-            trusted / trusted_w
-        } else {
-            any / any_w
-        };
-        answer.is_finite().then_some(answer)
+        let mean = |sum: f64, weight: f64| (weight > 0.0).then(|| sum / weight);
+        (mean(trusted, trusted_w), mean(any, any_w))
     }
 
     /// Every field forgets faster again.

@@ -171,6 +171,31 @@ fn a_field_adds_projections_when_the_output_depends_on_several_inputs() {
 }
 
 #[test]
+fn a_field_made_next_to_a_neighbour_starts_with_its_number_of_projections() {
+    let settings = LwprSettings {
+        init_d: 1.0,
+        ..unit_settings()
+    };
+    let mut rng = ChaCha8Rng::seed_from_u64(8);
+    let mut model = OutputModel::default();
+    for _ in 0..20_000 {
+        let x = random_input(&mut rng);
+        model.train(&x, x[0] - 2.0 * x[1] + 3.0 * x[2] + x[3] - x[4], &settings);
+    }
+    let neighbour = model
+        .fields()
+        .iter()
+        .max_by_key(|f| f.projections())
+        .expect("fields");
+    assert!(neighbour.projections() > 2, "{}", neighbour.projections());
+    let x = Input::repeat(0.5);
+    let next_to = ReceptiveField::new(x, 0.0, Some(neighbour), &settings);
+    assert_eq!(next_to.projections(), neighbour.projections());
+    let alone = ReceptiveField::new(x, 0.0, None, &settings);
+    assert_eq!(alone.projections(), 2);
+}
+
+#[test]
 fn overlapping_fields_are_pruned_below_w_prune() {
     let settings = LwprSettings {
         w_prune: 0.5,

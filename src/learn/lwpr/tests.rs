@@ -154,8 +154,9 @@ fn a_single_field_matches_the_weighted_least_squares_line_worked_out_by_hand() {
     assert!((slope - unweighted_slope).abs() > 0.3, "slope {slope}");
 }
 
-#[test]
-fn a_field_adds_projections_when_the_output_depends_on_several_inputs() {
+/// A model (and its settings) trained on 20,000 patterns of an output that depends on all
+/// five inputs.
+fn trained_on_five_inputs() -> (OutputModel, LwprSettings) {
     let settings = LwprSettings {
         init_d: 1.0,
         ..unit_settings()
@@ -166,22 +167,19 @@ fn a_field_adds_projections_when_the_output_depends_on_several_inputs() {
         let x = random_input(&mut rng);
         model.train(&x, x[0] - 2.0 * x[1] + 3.0 * x[2] + x[3] - x[4], &settings);
     }
+    (model, settings)
+}
+
+#[test]
+fn a_field_adds_projections_when_the_output_depends_on_several_inputs() {
+    let (model, _) = trained_on_five_inputs();
     let most = model.fields().iter().map(|f| f.projections()).max();
     assert!(most > Some(2), "projections: {most:?}");
 }
 
 #[test]
 fn a_field_made_next_to_a_neighbour_starts_with_its_number_of_projections() {
-    let settings = LwprSettings {
-        init_d: 1.0,
-        ..unit_settings()
-    };
-    let mut rng = ChaCha8Rng::seed_from_u64(8);
-    let mut model = OutputModel::default();
-    for _ in 0..20_000 {
-        let x = random_input(&mut rng);
-        model.train(&x, x[0] - 2.0 * x[1] + 3.0 * x[2] + x[3] - x[4], &settings);
-    }
+    let (model, settings) = trained_on_five_inputs();
     let neighbour = model
         .fields()
         .iter()

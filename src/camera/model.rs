@@ -84,4 +84,16 @@ impl CameraModel {
     pub fn goal_point(&self, object: &Point3<f64>) -> Point3<f64> {
         object + Vector3::z() * self.standoff
     }
+
+    /// The object's centre for a camera centre at the target `goal`: straight below it by
+    /// the standoff (world, m); [`goal_point`](Self::goal_point) undone.
+    pub fn object_at_goal(&self, goal: &Point3<f64>) -> Point3<f64> {
+        goal - Vector3::z() * self.standoff
+    }
+
+    /// How far (m) the object's bottom hangs below the camera centre at the target: the
+    /// standoff and the object's radius.
+    pub fn object_bottom_below(&self) -> f64 {
+        self.standoff + self.object_radius
+    }
 }

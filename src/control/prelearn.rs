@@ -9,7 +9,7 @@
 
 use crate::camera::CameraModel;
 use crate::robot::{ArmModel, Controlled, ReachSpace};
-use nalgebra::{Point3, Vector3};
+use nalgebra::Point3;
 
 /// The offsets (degrees) of the start poses from the base pose.
 const OFFSETS_DEG: [f64; 3] = [8.0, 5.0, 6.0];
@@ -32,7 +32,7 @@ pub fn prelearning_moves(
 ) -> Option<(Point3<f64>, Vec<PrelearnMove>)> {
     let goal = reach.prelearning_goal();
     let base = model.solve_camera_position(&goal).ok()?;
-    let object = goal - Vector3::z() * camera.standoff;
+    let object = camera.object_at_goal(&goal);
     let moves = (0..8)
         .map(|corner: usize| {
             let sign = |bit: usize| if corner & (1 << bit) == 0 { -1.0 } else { 1.0 };

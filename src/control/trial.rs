@@ -383,7 +383,7 @@ impl TrialLoop {
         let model = *self.camera.model();
         for _ in 0..MAX_DRAWS {
             let goal = self.reach.sample(&mut self.rng);
-            let object = goal - Vector3::z() * model.standoff;
+            let object = model.object_at_goal(&goal);
             let inside = |o: &crate::robot::Obstacle| o.overlaps_ball(&object, model.object_radius);
             if self.sim.model().solve_camera_position(&goal).is_ok()
                 && !self.sim.obstacles().iter().any(inside)

@@ -5,8 +5,11 @@
 use super::setup::{build_simulator, reach_space};
 use super::start_check::{check_start, PrelearningFault};
 use super::{Config, ConfigErrorKind, Event, SimKind};
-use crate::robot::{ArmModel, ContactRule, Controlled, ReachFitFailure, ReachSpace, RobotError};
+use crate::robot::{
+    ArmModel, ContactRule, Controlled, ReachFitFailure, ReachSpace, RobotError, Simulator,
+};
 use crate::units::M_PER_CM;
+use nalgebra::Point3;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
@@ -93,11 +96,7 @@ pub fn contact_stopped_moves(
     reach: &ReachSpace,
     moves: usize,
 ) -> (usize, usize) {
-    let kinematic = Config {
-        sim: SimKind::Kinematic,
-        ..config.clone()
-    };
-    let mut sim = build_simulator(&kinematic, model.clone());
+    let mut sim = kinematic_simulator(config, model);
     let mut rng = ChaCha8Rng::seed_from_u64(REACH_SEED);
     let (mut made, mut stopped) = (0, 0);
     for _ in 0..moves {
@@ -117,16 +116,31 @@ pub fn contact_stopped_moves(
     (made, stopped)
 }
 
-/// The controlled angles of the reach-space points (of `samples` drawn with a fixed seed)
-/// at which `model` puts its camera with every joint inside its limits, elbow up, looking
-/// down.
-fn solved_targets<'a>(
+/// The config's simulator made kinematic (the dynamic one shares its contact rules), moving
+/// `model`: what the checks before a run try moves and poses on.
+pub(super) fn kinematic_simulator(config: &Config, model: &ArmModel) -> Box<dyn Simulator> {
+    let kinematic = Config {
+        sim: SimKind::Kinematic,
+        ..config.clone()
+    };
+    build_simulator(&kinematic, model.clone())
+}
+
+/// The reach-space points (of `samples` drawn with a fixed seed) at which `model` puts its
+/// camera with every joint inside its limits, elbow up, looking down, with those angles.
+pub(super) fn solved_targets<'a>(
     model: &'a ArmModel,
     reach: &'a ReachSpace,
     samples: usize,
-) -> impl Iterator<Item = Controlled> + 'a {
+) -> impl Iterator<Item = (Point3<f64>, Controlled)> + 'a {
     let mut rng = ChaCha8Rng::seed_from_u64(REACH_SEED);
-    (0..samples).filter_map(move |_| model.solve_camera_position(&reach.sample(&mut rng)).ok())
+    (0..samples).filter_map(move |_| {
+        let point = reach.sample(&mut rng);
+        model
+            .solve_camera_position(&point)
+            .ok()
+            .map(|theta| (point, theta))
+    })
 }
 
 /// Reach-space points (of `samples` drawn with a fixed seed) at which `model` puts its
@@ -147,7 +161,7 @@ pub fn target_poses_in_contact(
 ) -> (usize, usize) {
     let rule = ContactRule::new(model, config.floor_z * M_PER_CM);
     let (mut reached, mut touching) = (0, 0);
-    for theta in solved_targets(model, reach, samples) {
+    for (_, theta) in solved_targets(model, reach, samples) {
         reached += 1;
         touching += usize::from(rule.touch(model, &model.pose_of(&theta)).is_some());
     }

@@ -2,23 +2,20 @@
 //! (enough of them) outside the obstacles, and pre-learning poses free of contact from which
 //! the camera sees the object. A run that fails one of these would learn nothing.
 
-use super::setup::{build_camera, build_simulator};
-use super::{Config, PreflightError, SimKind, MIN_REACHABLE_SHARE, REACH_SAMPLES};
+use super::preflight::{kinematic_simulator, solved_targets};
+use super::setup::build_camera;
+use super::{Config, PreflightError, MIN_REACHABLE_SHARE, REACH_SAMPLES};
 use crate::camera::{Camera, NotSeen};
 use crate::control::{prelearning_moves, PrelearnMove};
 use crate::robot::{ArmModel, ReachSpace, RobotError, Simulator};
 use crate::units::M_PER_CM;
-use nalgebra::{Point3, Vector3};
-use rand::SeedableRng;
-use rand_chacha::ChaCha8Rng;
+use nalgebra::Point3;
 
 /// How far (m) the lowest target's bottom may lie under the floor: rounding only.
 const FLOOR_TOLERANCE: f64 = 1e-9;
 /// Pre-learning moves (of 8) that must be possible: with fewer the learner starts from
 /// almost nothing, and a run refuses to start.
 const MIN_PRELEARNING_MOVES: usize = 4;
-/// The target sampling's own seed, apart from the run's.
-const TARGET_SEED: u64 = 0x7a26_e7c4;
 
 /// What pre-learning found wrong.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -43,11 +40,7 @@ pub(super) fn check_start(
     model: &ArmModel,
     reach: &ReachSpace,
 ) -> Result<(), PreflightError> {
-    let kinematic = Config {
-        sim: SimKind::Kinematic,
-        ..config.clone()
-    };
-    let mut sim = build_simulator(&kinematic, model.clone());
+    let mut sim = kinematic_simulator(config, model);
     let camera = build_camera(config);
     check_targets_above_floor(config, camera.as_ref(), reach)?;
     check_targets_free(sim.as_ref(), camera.as_ref(), reach)?;
@@ -61,8 +54,7 @@ fn check_targets_above_floor(
     camera: &dyn Camera,
     reach: &ReachSpace,
 ) -> Result<(), PreflightError> {
-    let camera = camera.model();
-    let bottom = reach.z_min - camera.standoff - camera.object_radius;
+    let bottom = reach.z_min - camera.model().object_bottom_below();
     let floor = config.floor_z * M_PER_CM;
     if bottom + FLOOR_TOLERANCE < floor {
         return Err(PreflightError::TargetsUnderFloor {
@@ -82,16 +74,11 @@ fn check_targets_free(
     if sim.obstacles().is_empty() {
         return Ok(());
     }
-    let (standoff, radius) = (camera.model().standoff, camera.model().object_radius);
-    let mut rng = ChaCha8Rng::seed_from_u64(TARGET_SEED);
+    let radius = camera.model().object_radius;
     let (mut reached, mut inside) = (0, 0);
-    for _ in 0..REACH_SAMPLES {
-        let goal = reach.sample(&mut rng);
-        if sim.model().solve_camera_position(&goal).is_err() {
-            continue;
-        }
+    for (goal, _) in solved_targets(sim.model(), reach, REACH_SAMPLES) {
         reached += 1;
-        let object = goal - Vector3::z() * standoff;
+        let object = camera.model().object_at_goal(&goal);
         inside += usize::from(
             sim.obstacles()
                 .iter()

@@ -140,7 +140,7 @@ pub fn fit_reach(config: &Config, model: &ArmModel) -> Result<ReachFit, ReachFit
     ReachSpace::fit(
         model,
         config.floor_z * M_PER_CM,
-        camera.standoff + camera.object_radius,
+        camera.object_bottom_below(),
     )
 }
 

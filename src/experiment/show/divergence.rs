@@ -3,6 +3,7 @@
 //! that run (an entry was edited) and what would be drawn is another run's trial.
 
 use super::{RecordedRun, ShowError};
+use crate::experiment::plot::Series;
 use crate::experiment::RunSummary;
 use std::collections::VecDeque;
 use std::path::PathBuf;
@@ -15,36 +16,30 @@ const WRITTEN_PRECISION_MM: f64 = 0.5e-6 * 1.01;
 #[derive(Debug, Clone)]
 pub(super) struct StepOneLog {
     path: PathBuf,
-    lines: VecDeque<(usize, f64)>,
+    /// (trial, distance) of the lines not yet checked.
+    lines: VecDeque<(f64, f64)>,
 }
 
 impl StepOneLog {
     /// Reads `1step` of the run (trial and distance of each trial that took step 1, in trial
-    /// order); a missing file or a line that does not parse is an error.
+    /// order, as [`Series::read`] reads a data file); a missing file or a line that does not
+    /// parse is an error.
     pub(super) fn read(run: &RecordedRun) -> Result<StepOneLog, ShowError> {
         let path = run.folder.join("1step");
         let bad = |reason: String| ShowError::BadInfo {
             path: path.clone(),
             reason,
         };
-        let text = std::fs::read_to_string(&path).map_err(|e| bad(e.to_string()))?;
-        let lines = text
-            .lines()
-            .enumerate()
-            .map(|(index, line)| {
-                let mut words = line.split_whitespace();
-                let trial = words.next().and_then(|w| w.parse().ok());
-                let distance = words.next().and_then(|w| w.parse::<f64>().ok());
-                match (trial, distance) {
-                    (Some(trial), Some(mm)) if mm.is_finite() => Ok((trial, mm)),
-                    _ => Err(bad(format!(
-                        "line {}: not `TRIAL DISTANCE MINUTES`",
-                        index + 1
-                    ))),
-                }
-            })
-            .collect::<Result<_, _>>()?;
-        Ok(StepOneLog { path, lines })
+        if !path.is_file() {
+            return Err(bad(
+                "no such file: the run's step-1 distances are needed".into()
+            ));
+        }
+        let series = Series::read(&path).map_err(|e| bad(e.to_string()))?;
+        Ok(StepOneLog {
+            lines: series.points.into_iter().collect(),
+            path,
+        })
     }
 
     /// Checks replayed trial `trial`, whose distance after step 1 was `replayed` (`None`: it
@@ -56,7 +51,7 @@ impl StepOneLog {
         replayed: Option<f64>,
     ) -> Result<(), ShowError> {
         let recorded = match self.lines.front() {
-            Some(&(t, mm)) if t == trial => {
+            Some(&(t, mm)) if t == trial as f64 => {
                 self.lines.pop_front();
                 Some(mm)
             }

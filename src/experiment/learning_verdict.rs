@@ -104,9 +104,14 @@ impl LearningWatch {
         Some(NotLearned { kind, reason })
     }
 
+    /// The first trial of the window of `window` last trials (at least one).
+    fn window_start(&self, window: usize) -> usize {
+        self.finished.saturating_sub(window.max(1)) + 1
+    }
+
     /// The first of the ways to learn nothing that the run shows, in words.
     fn what_failed(&self, end: &RunEnd) -> Option<(NotLearnedKind, String)> {
-        let window_start = self.finished.saturating_sub(end.window.max(1)) + 1;
+        let window_start = self.window_start(end.window);
         if self.finished == 0 {
             Some((
                 NotLearnedKind::NoTrialFinished,
@@ -151,7 +156,7 @@ impl LearningWatch {
 
     /// What most likely kept the arm still.
     fn still_cause(&self, end: &RunEnd) -> Option<String> {
-        let window_start = self.finished.saturating_sub(end.window.max(1)) + 1;
+        let window_start = self.window_start(end.window);
         if end.contact_stops as f64 > MOSTLY_STOPPED * end.moves as f64 {
             Some(format!(
                 "{} of {} moves were stopped by a contact (the floor, an obstacle or another link): the start or pre-learning poses may be in contact",

@@ -8,6 +8,7 @@ mod fixed_six;
 mod interrupt;
 mod learning_verdict;
 mod memory;
+mod milestones;
 mod output;
 pub mod plot;
 mod preflight;
@@ -36,6 +37,7 @@ pub use failures::FailureTally;
 pub use interrupt::StopRequest;
 pub use learning_verdict::{LearningWatch, NotLearned, NotLearnedKind, RunEnd, STILL_DEG};
 pub use memory::{peak_rss_kb, resident_kb};
+pub use milestones::{FourStepTrace, LEVEL_BEFORE_EVENT, RECOVERY_FACTOR, RECOVERY_WINDOW};
 pub use output::DataFiles;
 pub use preflight::{
     contact_stopped_moves, preflight, reachable_points, target_poses_in_contact, PreflightError,

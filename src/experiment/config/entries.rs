@@ -12,6 +12,7 @@ use super::urdf_file::UrdfFile;
 use super::values::{CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind};
 use super::{ConfigErrorKind, Rule};
 use crate::control::ServoMode;
+use crate::learn::change::ChangeRecovery;
 use crate::learn::{MergeStrategy, Method};
 use crate::robot::{CameraLink, LearnedJoints};
 
@@ -192,6 +193,10 @@ config_entries! {
     /// change_detection: trials after an alarm, and between later checks, before subtrees
     /// starved of new patterns are cut.
     change_grace: usize = 200, "", NESTED, AtLeast(1.0);
+    /// change_detection: what an alarm does to a nested learner: correct (keep the tree and
+    /// fit a correction of the camera readings from the patterns since the change) or
+    /// forget (drop what was learned before the change, cut what stays starved).
+    change_recovery: ChangeRecovery = ChangeRecovery::Correct, "", NESTED, Rule::Any;
     /// The error of each tree level is averaged over this many patterns.
     monitor_ave: usize = 100, "", PERCEPTRONS, Within(1.0, 1e7);
     /// Kept from the study's config, whose author did not know its use.

@@ -2,6 +2,7 @@
 
 use super::ValueError;
 use crate::control::ServoMode;
+use crate::learn::change::ChangeRecovery;
 use crate::learn::{MergeStrategy, Method};
 use crate::robot::{CameraLink, LearnedJoints};
 use std::fmt;
@@ -85,7 +86,14 @@ macro_rules! named_value {
         }
     )*};
 }
-named_value!(Method, SimKind, CameraKind, MergeStrategy, ServoMode);
+named_value!(
+    Method,
+    SimKind,
+    CameraKind,
+    MergeStrategy,
+    ChangeRecovery,
+    ServoMode
+);
 
 /// `parts` comma-separated items of `raw`, each parsed by `item`; `expected` names the form.
 fn list<T, const N: usize>(
@@ -316,6 +324,7 @@ macro_rules! choice_names {
 choice_names!(SimKind, "simulator", Kinematic => "kinematic", Dynamic => "dynamic");
 choice_names!(CameraKind, "camera", Projection => "projection", Raycast => "raycast");
 choice_names!(MergeStrategy, "merge strategy", Thesis => "thesis", ChangeDetection => "change_detection");
+choice_names!(ChangeRecovery, "change recovery", Correct => "correct", Forget => "forget");
 choice_names!(ServoMode, "servo mode", Step => "step", Continuous => "continuous");
 
 #[cfg(test)]

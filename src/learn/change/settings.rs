@@ -14,6 +14,21 @@ pub struct ChangeSettings {
     /// Patterns from after a change a node needs before it answers again
     /// (`change_min_fresh`); 20 by default.
     pub min_fresh: usize,
+    /// What a nested learner does at an alarm (`change_recovery`); by default it corrects
+    /// the readings.
+    pub recovery: ChangeRecovery,
+}
+
+/// What a nested learner does when a change is detected (the config's `change_recovery`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum ChangeRecovery {
+    /// Keep the tree and fit a correction of the readings that carries the new ones back to
+    /// those it learned (`correct`, the default).
+    #[default]
+    Correct,
+    /// Forget what was learned before the change, and cut the subtrees left starved
+    /// (`forget`).
+    Forget,
 }
 
 impl Default for ChangeSettings {
@@ -22,6 +37,7 @@ impl Default for ChangeSettings {
             detector: DetectorSettings::default(),
             grace: 200,
             min_fresh: 20,
+            recovery: ChangeRecovery::Correct,
         }
     }
 }

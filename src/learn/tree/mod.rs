@@ -46,7 +46,9 @@
 //! - **Recovery** (merge strategy `change_detection`): after a detected change the tree
 //!   forgets what came before it, lets nodes short of new patterns defer to their
 //!   ancestors (or answer from their stale fits while those do better), and later cuts the
-//!   subtrees starved of new patterns; see [`recovery`].
+//!   subtrees starved of new patterns; see [`recovery`]. Or, by default, it keeps the tree
+//!   and answers through a correction of the readings fitted since the change; see
+//!   [`correcting`].
 //! - **Re-training** (models that ask for it: nnw's nets): after a trial, nodes that took
 //!   in enough new patterns are trained again on a sample of their box's stored patterns;
 //!   see [`retrain`].
@@ -57,6 +59,7 @@ mod approximator;
 mod arena;
 mod bins;
 mod branch;
+mod correcting;
 mod eviction;
 mod levels;
 mod merge;
@@ -80,6 +83,7 @@ pub(crate) use approximator::{Approximator, Sample};
 pub(crate) use arena::NodeArena;
 pub(crate) use bins::Bins;
 pub(crate) use branch::{BinKey, BranchRule, Halving, BRANCHES, MAX_DEPTH};
+pub(crate) use correcting::Corrections;
 pub(crate) use levels::Levels;
 pub(crate) use monitor::Monitor;
 pub(crate) use narrowing::Narrowing;

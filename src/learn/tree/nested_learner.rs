@@ -4,8 +4,10 @@
 //! mapping and recovering from it. Merges and detected changes are reported as
 //! [`ModelEvent`]s.
 
-use super::{Approximator, BranchRule, NestedSettings, NestedTree, Records, TreeEvent};
-use crate::learn::change::{ChangeWatch, WatchStep};
+use super::{
+    Approximator, BranchRule, Corrections, NestedSettings, NestedTree, Records, TreeEvent,
+};
+use crate::learn::change::{ChangeRecovery, ChangeWatch, WatchStep};
 use crate::learn::{
     LearnError, Learner, LearnerStats, MergeStrategy, Method, ModelEvent, Observation, Pattern,
     PatternSettings, Query,
@@ -41,6 +43,10 @@ pub struct NestedLearner<A, R, const N: usize> {
     watch: Option<ChangeWatch>,
     /// `change_min_fresh`: patterns from after a change a node needs to answer again.
     min_fresh: usize,
+    /// `change_recovery`: what an alarm does.
+    recovery: ChangeRecovery,
+    /// The corrections of the readings fitted after alarms (`change_recovery correct`).
+    corrections: Corrections<N>,
     /// A pattern file that failed while recovering before a trial; reported by the next
     /// [`learn`](Self::learn).
     failed: Option<LearnError>,
@@ -79,6 +85,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
             relearn: false,
             watch,
             min_fresh: settings.change.min_fresh,
+            recovery: settings.change.recovery,
+            corrections: Corrections::default(),
             failed: None,
         })
     }
@@ -89,27 +97,33 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
         self.method.name()
     }
 
-    /// The tree's Δθ at the query's input; always finite.
+    /// The tree's Δθ at the query's input (through the corrections fitted after changes);
+    /// always finite.
     fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        self.tree.answer(&(self.input_of)(query))
+        self.tree
+            .answer(&self.corrections.query(&(self.input_of)(query)))
     }
 
     /// Learns a trial's poses. Fails only when the patterns are kept in a file that can no
-    /// longer be written or read: the run cannot go on without them.
+    /// longer be written or read: the run cannot go on without them. While a correction
+    /// is fitted after a change, the patterns go to its fit instead, and the tree learns
+    /// them once it is fixed.
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
         if let Some(error) = self.failed.take() {
             return Err(error);
         }
         for (from, to) in self.patterns.pairs(path) {
             let pattern = (self.pattern_of)(from, to);
-            let event = self.tree.train(&pattern)?;
-            if let Some(watch) = &mut self.watch {
-                if event == TreeEvent::Reset {
-                    watch.restart();
-                }
-                watch.pattern(self.tree.journal.last_error, pattern.target.norm());
+            if self.corrections.fitting() {
+                self.corrections.book(&pattern);
+            } else {
+                let corrected = self.corrections.pattern(&pattern);
+                self.train(&corrected, true)?;
             }
-            self.relearn |= event == TreeEvent::Reset;
+        }
+        let tree = &self.tree;
+        for pattern in self.corrections.refit(|x| tree.answer(x)) {
+            self.train(&pattern, false)?;
         }
         self.tree.retrain_due().map(drop)
     }
@@ -142,10 +156,9 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
                     .journal
                     .events
                     .push(ModelEvent::Change { estimated_trial });
-                if let Err(error) = self.tree.forget_before(cutoff, self.min_fresh) {
+                if let Err(error) = self.recover(cutoff) {
                     self.failed = Some(error);
                 }
-                self.relearn |= !self.tree.root_answers();
             }
             WatchStep::CutStarved => {
                 if !self.tree.cut_starved() {
@@ -158,5 +171,41 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
     /// Moves the merges and detected changes since the last call into `sink`.
     fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
         sink.append(&mut self.tree.journal.events);
+    }
+}
+
+#[allow(private_bounds)]
+impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N> {
+    /// Trains one pattern; `watched`: its error counts towards the change watch's value of
+    /// the trial.
+    fn train(&mut self, pattern: &Pattern<N>, watched: bool) -> Result<(), LearnError> {
+        let event = self.tree.train(pattern)?;
+        if let Some(watch) = &mut self.watch {
+            if event == TreeEvent::Reset {
+                watch.restart();
+            }
+            if watched {
+                watch.pattern(self.tree.journal.last_error, pattern.target.norm());
+            }
+        }
+        self.relearn |= event == TreeEvent::Reset;
+        Ok(())
+    }
+
+    /// After an alarm dating the change at pattern number `cutoff`: starts fitting a
+    /// correction, or forgets what came before the change.
+    fn recover(&mut self, cutoff: u64) -> Result<(), LearnError> {
+        match self.recovery {
+            ChangeRecovery::Correct => {
+                let since = self.tree.stored_since(cutoff)?;
+                let (low, high) = self.tree.root_box();
+                self.corrections.start(since, &low, &high);
+            }
+            ChangeRecovery::Forget => {
+                self.tree.forget_before(cutoff, self.min_fresh)?;
+                self.relearn |= !self.tree.root_answers();
+            }
+        }
+        Ok(())
     }
 }

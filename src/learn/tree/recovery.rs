@@ -183,7 +183,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     }
 
     /// Every node, parents before their children.
-    fn reachable(&self) -> Vec<u32> {
+    pub(super) fn reachable(&self) -> Vec<u32> {
         let mut order = vec![ROOT];
         let mut i = 0;
         while i < order.len() {

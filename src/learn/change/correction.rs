@@ -1,0 +1,292 @@
+//! A correction of the camera readings that carries a changed robot's readings back to
+//! the ones the learner learned with, fitted from a few dozen patterns after a change.
+//!
+//! A nested learner's inputs are (θ2, θ3) followed by one or two camera readings (cx, cy,
+//! cz): lin5 one adjusted reading, lin8 the readings before and after the move. A camera
+//! turned about its axis turns every reading by the same angle, wherever the arm is; a
+//! longer or shorter link changes how a joint move shows in the camera, smoothly over the
+//! poses. Both are caught, exactly or to first order, by a map of each reading c to
+//! A(θ)·c with A(θ) = I + P₀ + u·P₁ + v·P₂, where u and v are θ2 and θ3 scaled to [−1, 1]
+//! over the learner's box: 27 numbers. The learner then answers N(A(θ)·c, θ) with N the
+//! tree it learned before the change.
+//!
+//! The fit is Gauss–Newton on the patterns since the change: each pattern (x, Δθ) should be
+//! answered as N(A x) = Δθ; N's change with its readings comes from finite differences of
+//! its answers (a node's perceptron is linear in them, so a small step gives its slope
+//! exactly). Misses are weighed relative to the size of each move (as the change watch
+//! weighs them), so the small final moves of a trial, which set its precision, count as
+//! much as its first long one.
+
+use crate::learn::Pattern;
+use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
+
+/// Numbers in the correction: three 3×3 matrices.
+const PARAMETERS: usize = 27;
+/// Gauss–Newton iterations per fit.
+const ITERATIONS: usize = 3;
+/// Moves below this (degrees) are weighed as if they were this long.
+const MIN_MOVE_DEG: f64 = 0.1;
+/// The finite-difference step, as a share of a reading input's range.
+const STEP_SHARE: f64 = 1e-6;
+/// Ridge on the normal equations, as a share of their mean diagonal: keeps a fit from few
+/// or alike patterns from wandering off along what they cannot tell apart.
+const RIDGE_SHARE: f64 = 1e-6;
+
+/// The correction of a learner with `N` inputs: (θ2, θ3) then (N − 2)/3 readings.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct ReadingCorrection<const N: usize> {
+    /// P₀, P₁ (by u), P₂ (by v).
+    terms: [Matrix3<f64>; 3],
+    /// Centre and half-width of θ2 and θ3 over the learner's box.
+    centre: (f64, f64),
+    half_width: (f64, f64),
+    /// The finite-difference step of each reading input.
+    steps: SVector<f64, N>,
+}
+
+impl<const N: usize> ReadingCorrection<N> {
+    /// No correction yet, for a learner whose input box is `low`..`high`.
+    pub(crate) fn identity(low: &SVector<f64, N>, high: &SVector<f64, N>) -> Self {
+        let half = |i: usize| ((high[i] - low[i]) / 2.0).max(f64::MIN_POSITIVE);
+        ReadingCorrection {
+            terms: [Matrix3::zeros(); 3],
+            centre: ((low[0] + high[0]) / 2.0, (low[1] + high[1]) / 2.0),
+            half_width: (half(0), half(1)),
+            steps: SVector::from_fn(|i, _| STEP_SHARE * (high[i] - low[i]).abs().max(1e-9)),
+        }
+    }
+
+    /// The readings of input `x` carried back by the correction.
+    pub(crate) fn apply(&self, x: &SVector<f64, N>) -> SVector<f64, N> {
+        let a = self.matrix_at(x);
+        let mut out = *x;
+        for start in reading_starts::<N>() {
+            let c = Vector3::new(x[start], x[start + 1], x[start + 2]);
+            out.fixed_rows_mut::<3>(start).copy_from(&(a * c));
+        }
+        out
+    }
+
+    /// A(θ) at input `x`.
+    fn matrix_at(&self, x: &SVector<f64, N>) -> Matrix3<f64> {
+        let [u, v] = self.scaled_angles(x);
+        Matrix3::identity() + self.terms[0] + self.terms[1] * u + self.terms[2] * v
+    }
+
+    fn scaled_angles(&self, x: &SVector<f64, N>) -> [f64; 2] {
+        [
+            (x[0] - self.centre.0) / self.half_width.0,
+            (x[1] - self.centre.1) / self.half_width.1,
+        ]
+    }
+
+    /// Fits the correction to `patterns` (starting from itself) so that `answer` of the
+    /// corrected inputs meets their targets.
+    pub(crate) fn fit(
+        &mut self,
+        patterns: &[Pattern<N>],
+        answer: impl Fn(&SVector<f64, N>) -> Vector3<f64>,
+    ) {
+        for _ in 0..ITERATIONS {
+            let (normal, rhs) = self.normal_equations(patterns, &answer);
+            let Some(step) = solve_with_ridge(normal, &rhs) else {
+                break;
+            };
+            for (k, term) in self.terms.iter_mut().enumerate() {
+                for (i, value) in term.iter_mut().enumerate() {
+                    *value += step[9 * k + i];
+                }
+            }
+        }
+    }
+
+    /// The mean squared miss of `answer` at the corrected inputs of `patterns`, each
+    /// relative to the size of its move.
+    #[cfg(test)]
+    fn miss(
+        &self,
+        patterns: &[Pattern<N>],
+        answer: impl Fn(&SVector<f64, N>) -> Vector3<f64>,
+    ) -> f64 {
+        let total: f64 = patterns
+            .iter()
+            .map(|p| weight(p) * (p.target - answer(&self.apply(&p.input))).norm_squared())
+            .sum();
+        total / patterns.len().max(1) as f64
+    }
+
+    /// JᵀWJ and JᵀWr of the patterns at the current correction (J: the corrected answers'
+    /// change with the 27 numbers, W: each move's weight).
+    fn normal_equations(
+        &self,
+        patterns: &[Pattern<N>],
+        answer: &impl Fn(&SVector<f64, N>) -> Vector3<f64>,
+    ) -> (
+        SMatrix<f64, PARAMETERS, PARAMETERS>,
+        SVector<f64, PARAMETERS>,
+    ) {
+        let mut normal = SMatrix::<f64, PARAMETERS, PARAMETERS>::zeros();
+        let mut rhs = SVector::<f64, PARAMETERS>::zeros();
+        for pattern in patterns {
+            let corrected = self.apply(&pattern.input);
+            let answered = answer(&corrected);
+            let residual = pattern.target - answered;
+            let jacobian = self.jacobian(pattern, &corrected, &answered, answer);
+            normal += weight(pattern) * jacobian.transpose() * jacobian;
+            rhs += weight(pattern) * jacobian.transpose() * residual;
+        }
+        (normal, rhs)
+    }
+
+    /// How the answer at the corrected input changes with each of the 27 numbers.
+    fn jacobian(
+        &self,
+        pattern: &Pattern<N>,
+        corrected: &SVector<f64, N>,
+        answered: &Vector3<f64>,
+        answer: &impl Fn(&SVector<f64, N>) -> Vector3<f64>,
+    ) -> SMatrix<f64, 3, PARAMETERS> {
+        let [u, v] = self.scaled_angles(&pattern.input);
+        let basis = [1.0, u, v];
+        let mut jacobian = SMatrix::<f64, 3, PARAMETERS>::zeros();
+        for start in reading_starts::<N>() {
+            let raw = Vector3::new(
+                pattern.input[start],
+                pattern.input[start + 1],
+                pattern.input[start + 2],
+            );
+            for row in 0..3 {
+                let mut nudged = *corrected;
+                let h = self.steps[start + row];
+                nudged[start + row] += h;
+                let slope = (answer(&nudged) - answered) / h;
+                // ∂(A c)[row] / ∂P_k[row, col] = basis_k · c[col].
+                for (k, b) in basis.iter().enumerate() {
+                    for col in 0..3 {
+                        let index = 9 * k + row + 3 * col;
+                        let mut column = jacobian.column_mut(index);
+                        column += slope * (b * raw[col]);
+                    }
+                }
+            }
+        }
+        jacobian
+    }
+
+    /// Whether the correction changes nothing.
+    #[cfg(test)]
+    fn is_identity(&self) -> bool {
+        self.terms.iter().all(|t| t.iter().all(|&v| v == 0.0))
+    }
+}
+
+/// A pattern's weight: its miss counts relative to the size of its move.
+fn weight<const N: usize>(pattern: &Pattern<N>) -> f64 {
+    pattern.target.norm().max(MIN_MOVE_DEG).powi(-2)
+}
+
+/// The first input of each reading: 2, then 5 for a second one.
+fn reading_starts<const N: usize>() -> impl Iterator<Item = usize> {
+    (2..N.saturating_sub(2)).step_by(3)
+}
+
+/// Solves (A + ridge) x = b by Cholesky; `None` if even that is not positive definite.
+fn solve_with_ridge(
+    mut normal: SMatrix<f64, PARAMETERS, PARAMETERS>,
+    rhs: &SVector<f64, PARAMETERS>,
+) -> Option<SVector<f64, PARAMETERS>> {
+    let ridge = RIDGE_SHARE * normal.trace() / PARAMETERS as f64 + f64::MIN_POSITIVE;
+    for i in 0..PARAMETERS {
+        normal[(i, i)] += ridge;
+    }
+    let step = normal.cholesky()?.solve(rhs);
+    step.iter().all(|v| v.is_finite()).then_some(step)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Rotation2;
+
+    /// A linear "tree": Δθ = W c + (θ-dependent) over lin5's inputs.
+    fn learned(x: &SVector<f64, 5>) -> Vector3<f64> {
+        let w = Matrix3::new(0.02, -0.01, 0.003, 0.015, 0.03, -0.002, 0.001, 0.004, 0.05);
+        w * Vector3::new(x[2], x[3], x[4]) * (1.0 + 0.002 * x[0])
+            + Vector3::new(0.0, 0.0, 0.01 * x[1])
+    }
+
+    fn box_corners() -> (SVector<f64, 5>, SVector<f64, 5>) {
+        (
+            SVector::from([-40.0, 0.0, -200.0, -200.0, -100.0]),
+            SVector::from([40.0, 90.0, 200.0, 200.0, 100.0]),
+        )
+    }
+
+    fn patterns(reading_of: impl Fn(Vector3<f64>, f64, f64) -> Vector3<f64>) -> Vec<Pattern<5>> {
+        (0..60)
+            .map(|i| {
+                let f = i as f64;
+                let (t2, t3) = (-30.0 + f, 10.0 + 1.3 * f);
+                let old = Vector3::new(
+                    150.0 * (0.37 * f).sin(),
+                    120.0 * (0.61 * f).cos(),
+                    40.0 * (0.23 * f).sin(),
+                );
+                let x_old = SVector::from([t2, t3, old.x, old.y, old.z]);
+                let seen = reading_of(old, t2, t3);
+                Pattern {
+                    input: SVector::from([t2, t3, seen.x, seen.y, seen.z]),
+                    target: learned(&x_old),
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_turned_camera_is_carried_back_exactly() {
+        let turn = Rotation2::new(30f64.to_radians());
+        let data = patterns(|c, _, _| {
+            let xy = turn * nalgebra::Vector2::new(c.x, c.y);
+            Vector3::new(xy.x, xy.y, c.z)
+        });
+        let (low, high) = box_corners();
+        let mut correction = ReadingCorrection::identity(&low, &high);
+        assert!(correction.is_identity());
+        let before = correction.miss(&data, learned);
+        correction.fit(&data, learned);
+        let after = correction.miss(&data, learned);
+        assert!(before > 1e-3, "the turn misses: {before}");
+        assert!(after < 1e-12, "carried back: {after}");
+        let back = correction.matrix_at(&data[0].input);
+        let expected = turn.inverse();
+        assert!((back[(0, 0)] - expected[(0, 0)]).abs() < 1e-6);
+        assert!((back[(0, 1)] - expected[(0, 1)]).abs() < 1e-6);
+    }
+
+    #[test]
+    fn a_pose_dependent_change_of_scale_is_carried_back_to_first_order() {
+        let data = patterns(|c, t2, _| c * (1.1 + 0.001 * t2));
+        let (low, high) = box_corners();
+        let mut correction = ReadingCorrection::identity(&low, &high);
+        let before = correction.miss(&data, learned);
+        correction.fit(&data, learned);
+        let after = correction.miss(&data, learned);
+        assert!(after < 1e-3 * before, "{before} → {after}");
+    }
+
+    #[test]
+    fn without_a_change_the_fit_stays_the_identity() {
+        let data = patterns(|c, _, _| c);
+        let (low, high) = box_corners();
+        let mut correction = ReadingCorrection::identity(&low, &high);
+        correction.fit(&data, learned);
+        let a = correction.matrix_at(&data[7].input);
+        assert!((a - Matrix3::identity()).amax() < 1e-9, "{a}");
+    }
+
+    #[test]
+    fn eight_inputs_have_two_readings() {
+        assert_eq!(reading_starts::<5>().collect::<Vec<_>>(), [2]);
+        assert_eq!(reading_starts::<8>().collect::<Vec<_>>(), [2, 5]);
+    }
+}

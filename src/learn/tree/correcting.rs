@@ -134,7 +134,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
                 let bin = self.nodes[id as usize].bins[i];
                 self.bins.for_each_pattern(bin, |pattern, seq| {
                     if seq >= cutoff {
-                        since.push(pattern.clone());
+                        since.push(*pattern);
                     }
                 })?;
             }

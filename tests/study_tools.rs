@@ -122,6 +122,10 @@ fn compare_gives_the_numbers_of_separate_runs() {
         stdout.contains("| ik | 2 |") && stdout.contains("| lin5 | 2 |"),
         "{stdout}"
     );
+    assert!(
+        stdout.contains("| nodes | trials to 1 mm | trials to 0.1 mm |\n"),
+        "no recovery column without an event: {stdout}"
+    );
     // Cells are methods × seeds in order, each in its fixed folder; no run id is taken.
     assert!(!data.path().join("d/ik").exists() && !data.path().join("d/lin5").exists());
     let alone = tempfile::tempdir().unwrap();
@@ -152,6 +156,57 @@ fn compare_gives_the_numbers_of_separate_runs() {
             "{method} seed {seed}"
         );
     }
+}
+
+/// Each seed's trials to a 200-trial 4-step mean of 1 mm and 0.1 mm, and to recover after
+/// the event: ik (which is not told of the camera turn) never recovers, lin5 does.
+#[test]
+fn compare_gives_each_seeds_trials_to_a_level_and_to_recover_after_the_event() {
+    let data = tempfile::tempdir().unwrap();
+    let config_dir = configs().display().to_string();
+    let out = eyehand(
+        &[
+            "compare",
+            "--methods",
+            "ik,lin5",
+            "--trials",
+            "400",
+            "--seeds",
+            "1,2",
+            "--event",
+            "rotate:250:30",
+            "--configs",
+            &config_dir,
+            "--data",
+            "d",
+        ],
+        data.path(),
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    let lines: Vec<&str> = stdout.lines().collect();
+    assert!(
+        lines[1].ends_with(
+            "| nodes | trials to 1 mm | trials to 0.1 mm | trials to recover after rotate:250:30 |"
+        ),
+        "{stdout}"
+    );
+    assert_eq!(lines[2].matches("---|").count(), 13, "{stdout}");
+    let row = |method: &str| {
+        lines
+            .iter()
+            .find(|l| l.starts_with(&format!("| {method} |")))
+            .unwrap_or_else(|| panic!("no {method} row: {stdout}"))
+            .to_string()
+    };
+    assert!(
+        row("ik").ends_with("| 200, 200 | 200, 200 | never, never |"),
+        "{stdout}"
+    );
+    assert!(
+        row("lin5").ends_with("| 222, 247 | never, never | 120, 121 |"),
+        "{stdout}"
+    );
 }
 
 #[test]

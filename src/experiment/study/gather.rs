@@ -7,7 +7,7 @@ use super::slurm::resubmit_line;
 use super::table::{four_step_curves, study_table, CellResult};
 use super::StudyError;
 use crate::experiment::plot::plot_curves;
-use crate::experiment::Event;
+use crate::experiment::{Event, FourStepTrace};
 use std::path::PathBuf;
 
 /// Log lines shown for a cell that did not finish.
@@ -53,12 +53,16 @@ pub fn gather(folder: &StudyFolder) -> Result<GatherReport, StudyError> {
     let mut unfinished = Vec::new();
     for (index, cell) in plan.cells.iter().enumerate() {
         let run_folder = folder.cell(index);
-        match read_summary(&run_folder).and_then(|summary| cell_of(summary, cell)) {
-            Ok(summary) => finished.push(CellResult {
+        let result = read_summary(&run_folder)
+            .and_then(|summary| cell_of(summary, cell))
+            .and_then(|summary| Ok((summary, read_trace(&run_folder)?)));
+        match result {
+            Ok((summary, trace)) => finished.push(CellResult {
                 index,
                 cell: cell.clone(),
                 folder: run_folder,
                 summary,
+                trace,
             }),
             Err(reason) => {
                 let log = folder.newest_log(index);
@@ -117,6 +121,12 @@ pub(super) fn read_summary(
         ));
     }
     Ok(summary)
+}
+
+/// A finished cell's 4-step distances, or why they cannot be read.
+fn read_trace(run_folder: &std::path::Path) -> Result<FourStepTrace, String> {
+    FourStepTrace::read(run_folder)
+        .map_err(|e| format!("{}: {e}", run_folder.join("4step").display()))
 }
 
 /// `summary` when it is the run of `cell` (its method and seed), else why it is not: a

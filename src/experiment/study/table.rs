@@ -1,14 +1,19 @@
-//! A study's results: the markdown tables (compare: mean ± s.d. over seeds per method;
+//! A study's results: the markdown tables (compare: mean ± s.d. over seeds per method,
+//! then each seed's trials to two 4-step levels and to recover after the first event;
 //! sweep: one row per cell) and the 4-step curves, from its finished cells.
 
 use super::plan::{Cell, StudyKind};
 use crate::experiment::plot::{moving_average, Curve, PlotError, Series};
-use crate::experiment::RunSummary;
+use crate::experiment::{FourStepTrace, RunSummary};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
 /// Trials the curves are smoothed over.
 const CURVE_SMOOTHING: usize = 50;
+/// Trials in the running 4-step mean whose first reach of a level the compare table gives.
+pub const TRIALS_TO_WINDOW: usize = 200;
+/// The 4-step levels (mm) the compare table gives each seed's trials to.
+pub const TRIALS_TO_LEVELS_MM: [f64; 2] = [1.0, 0.1];
 
 /// A finished cell.
 #[derive(Debug, Clone, PartialEq)]
@@ -21,6 +26,8 @@ pub struct CellResult {
     pub folder: PathBuf,
     /// Its summary.
     pub summary: RunSummary,
+    /// Its 4-step distances by trial.
+    pub trace: FourStepTrace,
 }
 
 /// The table of a study of `kind`.
@@ -55,10 +62,26 @@ fn by_label(runs: &[CellResult]) -> Vec<(&str, Vec<&CellResult>)> {
     groups
 }
 
-/// The comparison's markdown table: one row per method, mean ± s.d. over seeds.
+/// The comparison's markdown table: one row per method, mean ± s.d. over seeds, then per
+/// seed (in cell order) the trials to a [`TRIALS_TO_WINDOW`]-trial 4-step mean of each of
+/// [`TRIALS_TO_LEVELS_MM`] and, when the runs have events, the trials to recover after the
+/// first ([`FourStepTrace::recovered_after`]); `never` where a seed did not.
 pub fn compare_table(runs: &[CellResult]) -> String {
-    let mut table = String::from("| method | seeds | 1 step (mm) | 2 steps | 3 steps | 4 steps | 5 steps | trials/s | memory (MB) | nodes |\n");
-    table += "|---|---|---|---|---|---|---|---|---|---|\n";
+    let event = runs
+        .first()
+        .and_then(|r| r.cell.request.events.iter().min_by_key(|e| e.trial()))
+        .copied();
+    let mut table = String::from("| method | seeds | 1 step (mm) | 2 steps | 3 steps | 4 steps | 5 steps | trials/s | memory (MB) | nodes |");
+    let mut rule = String::from("|---|---|---|---|---|---|---|---|---|---|");
+    for level in TRIALS_TO_LEVELS_MM {
+        table += &format!(" trials to {level} mm |");
+        rule += "---|";
+    }
+    if let Some(event) = event {
+        table += &format!(" trials to recover after {event} |");
+        rule += "---|";
+    }
+    table += &format!("\n{rule}\n");
     let cell = |values: Vec<f64>, digits: usize| {
         if values.is_empty() {
             return "-".to_string();
@@ -81,10 +104,26 @@ pub fn compare_table(runs: &[CellResult]) -> String {
             " {} |",
             cell(of(|r| r.summary.peak_rss_kb as f64 / 1024.0), 1)
         );
-        row += &format!(" {} |\n", cell(of(|r| r.summary.nodes as f64), 0));
+        row += &format!(" {} |", cell(of(|r| r.summary.nodes as f64), 0));
+        for level in TRIALS_TO_LEVELS_MM {
+            row += &per_seed(&group, |t| t.first_within(level, TRIALS_TO_WINDOW));
+        }
+        if let Some(event) = event {
+            row += &per_seed(&group, |t| t.recovered_after(event.trial()));
+        }
         table += &row;
+        table += "\n";
     }
     table
+}
+
+/// A table cell listing each run's count of trials (`never`: `None`).
+fn per_seed(group: &[&CellResult], count: impl Fn(&FourStepTrace) -> Option<usize>) -> String {
+    let counts: Vec<String> = group
+        .iter()
+        .map(|r| count(&r.trace).map_or("never".into(), |n| n.to_string()))
+        .collect();
+    format!(" {} |", counts.join(", "))
 }
 
 /// The sweep's markdown table: one row per finished cell, in cell order.

@@ -1,35 +1,41 @@
-//! Recovery from a changed robot: lin5 on the kinematic simulator, seeds 1–3, 4,500 trials,
-//! one event before trial 1,500, for the study's merges (`merge_strategy thesis`, with the
-//! shipped `am_error_tresh` 20 and with 12, the value that repeats the study's 90° root
-//! merge) and for change detection, beside the fixed-model `ik` controller. Prints a
-//! markdown table, a row per scenario and learner, each cell the three seeds' figures: the
-//! 4-step mean over trials 1,000–1,500 (before), trials
-//! after the event until the 4-step mean over a sliding window of 100 trials is back within
-//! 2× that level (or "never"), the detection delay (trials from the event to the first
-//! alarm; alarms before the event are counted apart), the merges by kind, and the 4-step
-//! mean over the last 500 trials. Then 50,000 trials without an event per strategy: alarms
-//! and merges, and the 4-step mean over the last 1,000 trials.
+//! Recovery from a changed robot on the kinematic simulator, seeds 1–3, 4,500 trials, one
+//! event before trial 1,500: lin5 under the study's merges (`merge_strategy thesis`, with
+//! the shipped `am_error_tresh` 20 and with 12, the value that repeats the study's 90° root
+//! merge), lin5 and lin8 under change detection with each `change_recovery` (correct, the
+//! default, and forget), LWPR with its forgetting alone and with change detection, and the
+//! fixed-model `ik` controller. Prints a markdown table, a row per scenario and learner,
+//! each cell the three seeds' figures: the 4-step mean over the 500 trials before the event,
+//! trials after the event until the 4-step mean over the last 50 trials is within 1.5× that
+//! level (`FourStepTrace::recovered_after`; "never": not by the last trial), the detection
+//! delay (trials from the event to the first alarm; alarms before the event are counted
+//! apart), the merges by kind, and the 4-step mean over the last 500 trials. Then 50,000
+//! trials without an event per strategy: alarms and merges, and the 4-step mean over the
+//! last 1,000 trials.
 //!
 //! `cargo bench --bench adaptation`
 
 mod common;
 
-use common::recovery::{alarms, four_step, mean, recovered_after};
+use common::recovery::{alarms, detected_after};
 use common::run_cli;
+use eyehand::experiment::FourStepTrace;
 use std::path::Path;
 
 const TRIALS: usize = 4500;
 const EVENT_TRIAL: usize = 1500;
 const SEEDS: [u64; 3] = [1, 2, 3];
-const SCENARIOS: [(&str, &str); 5] = [
+const SCENARIOS: [(&str, &str); 8] = [
     ("camera 90°", "rotate:1500:90"),
     ("camera 30°", "rotate:1500:30"),
     ("link 1 +10 cm", "elongate:1500:1:10"),
+    ("link 1 −10 cm", "elongate:1500:1:-10"),
     ("link 2 +10 cm", "elongate:1500:2:10"),
     ("link 2 −10 cm", "elongate:1500:2:-10"),
+    ("link 3 +10 cm", "elongate:1500:3:10"),
+    ("link 3 −10 cm", "elongate:1500:3:-10"),
 ];
 /// The learners compared: label, config, `--set` values.
-const LEARNERS: [(&str, &str, &[&str]); 4] = [
+const LEARNERS: [(&str, &str, &[&str]); 8] = [
     ("lin5 thesis", "lin5", &["merge_strategy=thesis"]),
     (
         "lin5 thesis, am_error_tresh 12",
@@ -39,6 +45,22 @@ const LEARNERS: [(&str, &str, &[&str]); 4] = [
     (
         "lin5 change_detection",
         "lin5",
+        &["merge_strategy=change_detection"],
+    ),
+    (
+        "lin5 change_detection, change_recovery forget",
+        "lin5",
+        &["merge_strategy=change_detection", "change_recovery=forget"],
+    ),
+    (
+        "lin8 change_detection",
+        "lin8",
+        &["merge_strategy=change_detection"],
+    ),
+    ("lwpr (forgetting)", "lwpr", &[]),
+    (
+        "lwpr change_detection",
+        "lwpr",
         &["merge_strategy=change_detection"],
     ),
     ("ik", "ik", &[]),
@@ -65,27 +87,22 @@ fn merges(folder: &Path) -> String {
 struct Recovery {
     before: f64,
     recovered_after: Option<usize>,
-    detected_after: Option<usize>,
+    detected_after: String,
     false_alarms: usize,
     merges: String,
     last: f64,
 }
 
 fn recovery(folder: &Path) -> Recovery {
-    let d = four_step(folder, TRIALS);
-    let before = mean(&d[1000..=EVENT_TRIAL - 1]);
-    let recovered_after = recovered_after(&d, EVENT_TRIAL, before);
+    let trace = FourStepTrace::read(folder).expect("4step");
     let alarms = alarms(folder);
     Recovery {
-        before,
-        recovered_after,
-        detected_after: alarms
-            .iter()
-            .find(|&&t| t >= EVENT_TRIAL)
-            .map(|t| t - EVENT_TRIAL),
+        before: trace.level_before(EVENT_TRIAL).unwrap_or(f64::NAN),
+        recovered_after: trace.recovered_after(EVENT_TRIAL),
+        detected_after: detected_after(&alarms, EVENT_TRIAL),
         false_alarms: alarms.iter().filter(|&&t| t < EVENT_TRIAL).count(),
         merges: merges(folder),
-        last: mean(&d[TRIALS - 499..=TRIALS]),
+        last: trace.mean(TRIALS - 499, TRIALS).unwrap_or(f64::NAN),
     }
 }
 
@@ -106,8 +123,8 @@ fn row(runs: &[Recovery]) -> [String; 5] {
         join(&|r| format!("{:.3}", r.before)),
         join(&|r| trials_or(r.recovered_after, "never")),
         join(&|r| match r.false_alarms {
-            0 => trials_or(r.detected_after, "-"),
-            n => format!("{} ({n} before)", trials_or(r.detected_after, "-")),
+            0 => r.detected_after.clone(),
+            n => format!("{} ({n} before)", r.detected_after),
         }),
         join(&|r| r.merges.clone()),
         join(&|r| format!("{:.3}", r.last)),
@@ -116,7 +133,7 @@ fn row(runs: &[Recovery]) -> [String; 5] {
 
 fn main() {
     let trials = TRIALS.to_string();
-    println!("| event at trial {EVENT_TRIAL} | learner | 4-step before (mm) | recovered after (trials) | detected after (trials) | merges abs,rel,starved | 4-step last 500 (mm) |");
+    println!("| event at trial {EVENT_TRIAL} | learner | 4-step before (mm) | recovered after (trials to 1.5×) | detected after (trials) | merges abs,rel,starved | 4-step last 500 (mm) |");
     println!("|---|---|---|---|---|---|---|");
     for (name, event) in SCENARIOS {
         // (A data folder per scenario: a method's folder holds at most 36 runs.)
@@ -150,12 +167,14 @@ fn main() {
             let mut args = vec!["--config", &config, "--trials", &long, "--seed", &seed_text];
             args.extend(set_flags(sets));
             let finished = run_cli(data.path(), &args);
-            let d = four_step(&finished.folder, LONG_TRIALS);
+            let trace = FourStepTrace::read(&finished.folder).expect("4step");
             println!(
                 "| {label} | {seed} | {} | {} | {:.4} |",
                 alarms(&finished.folder).len(),
                 merges(&finished.folder),
-                mean(&d[LONG_TRIALS - 999..=LONG_TRIALS])
+                trace
+                    .mean(LONG_TRIALS - 999, LONG_TRIALS)
+                    .unwrap_or(f64::NAN)
             );
         }
     }

@@ -6,8 +6,9 @@
 //!    and nodes (lin5) or receptive fields (LWPR);
 //! 2. adaptation: the adaptation benchmark's five events before trial 1,500 of 4,500
 //!    trials, for LWPR with forgetting alone, LWPR with change detection and lin5 with
-//!    change detection: the 4-step mean before, trials to recover (a 100-trial sliding
-//!    4-step mean back within 2× before), and the detection delay.
+//!    change detection: the 4-step mean before, trials to recover (a 50-trial running
+//!    4-step mean back within 1.5× the 500 trials before, `FourStepTrace`), and the
+//!    detection delay.
 //!
 //! `cargo bench --bench lwpr` (seeds 1–3, 50,000 trials), or fewer:
 //! `cargo bench --bench lwpr -- --seeds 1 --trials 20000`; `--only precision` or
@@ -15,7 +16,8 @@
 
 mod common;
 
-use common::recovery::{alarms, four_step, mean, recovered_after};
+use common::recovery::{alarms, detected_after};
+use eyehand::experiment::FourStepTrace;
 use common::run_cli;
 use eyehand::experiment::RunSummary;
 use std::path::Path;
@@ -163,18 +165,20 @@ fn adaptation_table(plan: &Plan) {
             let cells: Vec<[String; 4]> = finished
                 .iter()
                 .map(|f| {
-                    let d = four_step(&f.folder, ADAPTATION_TRIALS);
-                    let before = mean(&d[1000..EVENT_TRIAL]);
-                    let alarms = alarms(&f.folder);
+                    let trace = FourStepTrace::read(&f.folder).expect("4step");
+                    let before = trace.level_before(EVENT_TRIAL).unwrap_or(f64::NAN);
                     [
                         format!("{before:.3}"),
-                        recovered_after(&d, EVENT_TRIAL, before)
+                        trace
+                            .recovered_after(EVENT_TRIAL)
                             .map_or("never".into(), |t| t.to_string()),
-                        alarms
-                            .iter()
-                            .find(|&&t| t >= EVENT_TRIAL)
-                            .map_or("-".into(), |t| (t - EVENT_TRIAL).to_string()),
-                        format!("{:.3}", mean(&d[ADAPTATION_TRIALS - 499..])),
+                        detected_after(&alarms(&f.folder), EVENT_TRIAL),
+                        format!(
+                            "{:.3}",
+                            trace
+                                .mean(ADAPTATION_TRIALS - 499, ADAPTATION_TRIALS)
+                                .unwrap_or(f64::NAN)
+                        ),
                     ]
                 })
                 .collect();

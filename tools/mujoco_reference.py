@@ -10,6 +10,16 @@ friction loss and armature zero, gravity 9.81 m/s² along -z) and writes into te
   mujoco_stretched.csv       the arm with link 2 10 cm longer, its mass properties scaled
                              as a uniform rod (see docs/DYNAMIC.md): holding torques
                              (gravity) and accelerations from rest at the same 50 poses
+  mujoco_moves.csv           servoed moves: each move's number, start and goal (rad)
+  mujoco_move_N.csv          move N driven by eyehand's servo law (src/robot/dynamic/
+                             servo_law.rs) at its default settings: every 5 ms tick the
+                             set-point of the trapezoidal profile (90°/s, 180°/s² for the
+                             joint with the farthest to go) with its speed and acceleration,
+                             the servo's accelerations s = [a* + k(x* - x - dt v) + c(v* - v)]
+                             / (1 + k dt²/2 + c dt) made torques by MuJoCo's own mass
+                             matrix, MuJoCo's gravity torques at the set-point fed forward,
+                             each within the URDF effort, held over the tick (qfrc_applied)
+                             while MuJoCo integrates RK4 at 0.1 ms; a row every tick
 
 Needs `pip install mujoco numpy`; run from the repository root:
     python3 tools/mujoco_reference.py
@@ -37,6 +47,19 @@ SWING_EVERY = 100  # steps between rows: 10 ms
 STRETCH_LINK = "link_2"
 STRETCH_JOINT = "joint_3"  # the joint at the link's far end
 STRETCH_M = 0.10
+TICK = 0.005  # eyehand's default dt
+TICK_SUBSTEPS = 50  # MuJoCo steps of 0.1 ms per tick
+STIFFNESS = 400_000.0  # motor_stiffness (1/s²)
+DAMPING = 1265.0  # motor_damping (1/s)
+SPEED = np.radians(90.0)  # robot_speed
+ACCEL = np.radians(180.0)  # robot_accel
+SETTLE_SECONDS = 0.5  # simulated after each move's profile
+# Small, large, and onto joint 3's upper limit (2.967 rad), in degrees but the limit.
+MOVES = [
+    (np.radians([0, 30, 60, 0, 40, 0]), np.radians([2, 31, 58, 0, 41, 0])),
+    (np.radians([-60, 10, 30, 0, 20, 0]), np.radians([70, 60, 110, 30, 80, -40])),
+    (np.radians([20, 40, 100, 0, 30, 0]), np.array([*np.radians([25, 45]), 2.967, *np.radians([10, 60, 20])])),
+]
 MJCF_OPTIONS = (
     '<mujoco><compiler discardvisual="true" fusestatic="false" '
     'balanceinertia="false"/></mujoco>'
@@ -136,6 +159,66 @@ def swing(model: mujoco.MjModel, start) -> list:
     return rows
 
 
+def efforts(urdf: str) -> np.ndarray:
+    """Each revolute joint's URDF effort (N m), in the file's order."""
+    joints = re.findall(r'<joint name="[^"]+" type="revolute">.*?</joint>', urdf, re.S)
+    return np.array([float(re.search(r'effort="([^"]+)"', j).group(1)) for j in joints])
+
+
+def fraction(distance: float, t: float) -> float:
+    """The share of a trapezoidal move of `distance` (rad) done at time t."""
+    full_ramp = SPEED / ACCEL
+    if ACCEL * full_ramp**2 >= distance:
+        ramp, cruise = np.sqrt(distance / ACCEL), 0.0
+    else:
+        ramp, cruise = full_ramp, (distance - ACCEL * full_ramp**2) / SPEED
+    duration = 2 * ramp + cruise
+    if distance == 0.0 or t >= duration:
+        return 1.0
+    t = max(t, 0.0)
+    top = ACCEL * ramp
+    if t < ramp:
+        covered = 0.5 * ACCEL * t * t
+    elif t < ramp + cruise:
+        covered = 0.5 * top * ramp + top * (t - ramp)
+    else:
+        covered = distance - 0.5 * ACCEL * (duration - t) ** 2
+    return min(max(covered / distance, 0.0), 1.0)
+
+
+def servoed_move(model: mujoco.MjModel, effort: np.ndarray, start, goal) -> list:
+    model.opt.integrator = mujoco.mjtIntegrator.mjINT_RK4
+    model.opt.timestep = TICK / TICK_SUBSTEPS
+    data, probe = mujoco.MjData(model), mujoco.MjData(model)
+    data.qpos[:] = start
+    mujoco.mj_forward(model, data)
+    distance = np.max(np.abs(goal - start))
+    at = lambda k: start + (goal - start) * fraction(distance, k * TICK)
+    duration = next(k for k in range(10**6) if fraction(distance, k * TICK) == 1.0) * TICK
+    rows = [[0.0, *data.qpos, *data.qvel]]
+    mass = np.zeros((model.nv, model.nv))
+    for k in range(int(round((duration + SETTLE_SECONDS) / TICK))):
+        x, v = data.qpos.copy(), data.qvel.copy()
+        target = at(k + 1)
+        speed = (at(k + 2) - at(k)) / (2 * TICK)
+        accel = (at(k + 2) - 2 * at(k + 1) + at(k)) / TICK**2
+        s = (accel + STIFFNESS * (target - x - TICK * v) + DAMPING * (speed - v)) / (
+            1 + 0.5 * STIFFNESS * TICK**2 + DAMPING * TICK
+        )
+        mujoco.mj_forward(model, data)
+        mujoco.mj_fullM(model, data, mass)
+        probe.qpos[:] = target
+        probe.qvel[:] = 0.0
+        mujoco.mj_forward(model, probe)
+        held = np.clip(probe.qfrc_bias, -effort, effort)
+        left = effort - np.abs(held)
+        data.qfrc_applied[:] = held + np.clip(mass @ s, -left, left)
+        for _ in range(TICK_SUBSTEPS):
+            mujoco.mj_step(model, data)
+        rows.append([(k + 1) * TICK, *data.qpos, *data.qvel])
+    return rows
+
+
 def write(name: str, header: str, rows) -> None:
     path = OUT / name
     with open(path, "w") as out:
@@ -175,6 +258,19 @@ def main() -> None:
         % (mujoco.__version__, STRETCH_LINK, STRETCH_M, q_cols),
         rows,
     )
+    write(
+        "mujoco_moves.csv",
+        "servoed moves of oscar6.urdf: n,start q1..q6,goal q1..q6 (rad)",
+        [[n, *start, *goal] for n, (start, goal) in enumerate(MOVES, 1)],
+    )
+    for n, (start, goal) in enumerate(MOVES, 1):
+        write(
+            "mujoco_move_%d.csv" % n,
+            "MuJoCo %s, oscar6.urdf, servoed move %d (eyehand's servo law, 5 ms ticks), "
+            "RK4 %g s, no limits; t,%s,v1..v6"
+            % (mujoco.__version__, n, TICK / TICK_SUBSTEPS, q_cols),
+            servoed_move(load(urdf), efforts(urdf), start, goal),
+        )
 
 
 if __name__ == "__main__":

@@ -91,3 +91,61 @@ pub fn gap_at(gaps: &[(f64, f64)], t: f64) -> f64 {
         .find(|(at, _)| (at - t).abs() < 1e-9)
         .map_or(f64::NAN, |(_, gap)| *gap)
 }
+
+/// How far the dynamic arm strays from MuJoCo over a servoed move.
+#[derive(Debug, Clone, Copy)]
+pub struct MoveGaps {
+    /// The largest joint difference at any tick (degrees).
+    pub joints_deg: f64,
+    /// The largest distance between the camera centres at any tick (mm), both placed by
+    /// the model's kinematics.
+    pub camera_mm: f64,
+    /// The ticks each arm took to settle at the goal (ours, MuJoCo's): the first tick
+    /// from which every joint stays within the settle tolerances of it.
+    pub settle_ticks: (usize, usize),
+}
+
+/// Move `n` of tests/data/mujoco_moves.csv on the OSCAR-6 at the default settings, held
+/// against MuJoCo's run of it (mujoco_move_N.csv, a row every tick).
+pub fn move_gaps(n: usize) -> MoveGaps {
+    let moves = rows("mujoco_moves.csv");
+    let row = moves
+        .iter()
+        .find(|row| row[0] as usize == n)
+        .unwrap_or_else(|| panic!("no move {n}"));
+    let (start, goal) = (joints(&row[1..]), joints(&row[7..]));
+    let model = ArmModel::oscar6();
+    let settings = DynamicSettings::default();
+    let mut arm = FreeArm::new(
+        model.clone(),
+        &start,
+        settings,
+        Drive::MoveTo(goal),
+        true,
+        false,
+    )
+    .expect("a move inside the limits");
+    let reference = rows(&format!("mujoco_move_{n}.csv"));
+    let settled = |q: &Joints, v: &Joints| {
+        (*q - goal).amax() <= settings.settle_position_tol && v.amax() <= settings.settle_speed_tol
+    };
+    let (mut ours, mut theirs) = (Vec::new(), Vec::new());
+    let (mut joints_deg, mut camera_mm) = (0.0f64, 0.0f64);
+    for (tick, row) in reference.iter().enumerate() {
+        if tick > 0 {
+            arm.step();
+        }
+        let (q, v) = (joints(&row[1..]), joints(&row[7..]));
+        joints_deg = joints_deg.max((arm.joints() - q).amax().to_degrees());
+        let apart = model.camera_position(&arm.joints()) - model.camera_position(&q);
+        camera_mm = camera_mm.max(1000.0 * apart.norm());
+        ours.push(settled(&arm.joints(), &arm.speeds()));
+        theirs.push(settled(&q, &v));
+    }
+    let settle = |flags: &[bool]| flags.iter().rposition(|s| !s).map_or(0, |last| last + 1);
+    MoveGaps {
+        joints_deg,
+        camera_mm,
+        settle_ticks: (settle(&ours), settle(&theirs)),
+    }
+}

@@ -18,6 +18,8 @@ use std::time::Instant;
 
 #[path = "../tests/mujoco/mod.rs"]
 mod mujoco;
+#[path = "../tests/common/test_arms.rs"]
+mod test_arms;
 
 const SEED: u64 = 1;
 const IK_TRIALS: usize = 1_000;
@@ -214,11 +216,33 @@ fn print_mujoco_comparison() {
             );
         }
     }
-    for (n, kind) in [(1, "small"), (2, "large"), (3, "onto joint 3's limit")] {
-        let gaps = mujoco::move_gaps(n);
+    for (name, arm) in mujoco::held_out_arms() {
+        let file = format!("held_out/mujoco_swing_{name}.csv");
+        let gaps = mujoco::swing_gaps_of(arm, &file, mujoco::with_dt(5e-3));
         println!(
-            "| servoed move {n} ({kind}), dt 5 ms: largest joint / camera difference, settle ticks ours / MuJoCo's | {:.1e}° / {:.1e} mm, {} / {} |",
-            gaps.joints_deg, gaps.camera_mm, gaps.settle_ticks.0, gaps.settle_ticks.1
+            "| held-out OSCAR-6 `{name}`, passive swing, dt 5 ms: apart at 0.2 / 0.5 / 1 s | {:.1e}° / {:.1e}° / {:.1e}° |",
+            mujoco::gap_at(&gaps, 0.2),
+            mujoco::gap_at(&gaps, 0.5),
+            mujoco::gap_at(&gaps, 1.0)
         );
+    }
+    let arms = [
+        ("OSCAR-6", model.clone(), "mujoco_", "joint 3"),
+        (
+            "Panda",
+            test_arms::PANDA.model(),
+            "mujoco_panda_",
+            "joint 4",
+        ),
+    ];
+    for (arm, model, prefix, limited) in arms {
+        for (n, kind) in [(1, "small"), (2, "large"), (3, "onto a limit")] {
+            let gaps = mujoco::move_gaps(&model, prefix, n);
+            println!(
+                "| {arm} servoed move {n} ({kind}{}), dt 5 ms: largest joint / camera difference, settle ticks ours / MuJoCo's | {:.1e}° / {:.1e} mm, {} / {} |",
+                if n == 3 { format!(": {limited}") } else { String::new() },
+                gaps.joints_deg, gaps.camera_mm, gaps.settle_ticks.0, gaps.settle_ticks.1
+            );
+        }
     }
 }

@@ -2,7 +2,7 @@
 //! tools/mujoco_reference.py) and measuring the dynamic arm against them; shared by
 //! tests/dynamic_reference.rs and benches/dynamic.rs.
 
-use eyehand::robot::{ArmModel, Drive, DynamicSettings, FreeArm, Joints};
+use eyehand::robot::{parse_urdf, ArmModel, Drive, DynamicSettings, FreeArm, Joints};
 
 /// The rows of a reference file, `#` lines skipped.
 pub fn rows(name: &str) -> Vec<Vec<f64>> {
@@ -58,19 +58,21 @@ pub fn acceleration_gaps(
 /// Passive swing `n` (1–3) stepped with `settings` beside MuJoCo's: at each of its rows
 /// the time (s) and the largest joint angle difference (°).
 pub fn swing_gaps(n: usize, settings: DynamicSettings) -> Vec<(f64, f64)> {
-    let reference = rows(&format!("mujoco_swing_{n}.csv"));
+    swing_gaps_of(
+        ArmModel::oscar6(),
+        &format!("mujoco_swing_{n}.csv"),
+        settings,
+    )
+}
+
+/// [`swing_gaps`] for the arm `model` against the swing of reference file `file`.
+pub fn swing_gaps_of(model: ArmModel, file: &str, settings: DynamicSettings) -> Vec<(f64, f64)> {
+    let reference = rows(file);
     let start = joints(&reference[0][1..]);
     let dt = settings.dt;
     // MuJoCo's arm has no limits and no contacts.
-    let mut arm = FreeArm::new(
-        ArmModel::oscar6(),
-        &start,
-        settings,
-        Drive::Passive,
-        false,
-        false,
-    )
-    .expect("a finite start");
+    let mut arm = FreeArm::new(model, &start, settings, Drive::Passive, false, false)
+        .expect("a finite start");
     reference[1..]
         .iter()
         .map(|row| {
@@ -81,6 +83,21 @@ pub fn swing_gaps(n: usize, settings: DynamicSettings) -> Vec<(f64, f64)> {
                 row[0],
                 (arm.joints() - joints(&row[1..])).amax().to_degrees(),
             )
+        })
+        .collect()
+}
+
+/// The OSCAR-6 variants of tests/data/held_out (written by tools/mujoco_reference.py):
+/// each name and arm.
+pub fn held_out_arms() -> Vec<(&'static str, ArmModel)> {
+    ["heavy", "rotated", "off_axis", "damped", "everything"]
+        .into_iter()
+        .map(|name| {
+            let file = format!("held_out/oscar6_{name}.urdf");
+            let path = format!("{}/tests/data/{file}", env!("CARGO_MANIFEST_DIR"));
+            let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+            let model = parse_urdf(&text, &file).unwrap_or_else(|e| panic!("{path}: {e}"));
+            (name, model)
         })
         .collect()
 }
@@ -105,16 +122,17 @@ pub struct MoveGaps {
     pub settle_ticks: (usize, usize),
 }
 
-/// Move `n` of tests/data/mujoco_moves.csv on the OSCAR-6 at the default settings, held
-/// against MuJoCo's run of it (mujoco_move_N.csv, a row every tick).
-pub fn move_gaps(n: usize) -> MoveGaps {
-    let moves = rows("mujoco_moves.csv");
+/// Move `n` of tests/data/PREFIXmoves.csv on `model` at the default settings, held
+/// against MuJoCo's run of it (PREFIXmove_N.csv, a row every tick).
+pub fn move_gaps(model: &ArmModel, prefix: &str, n: usize) -> MoveGaps {
+    let dof = model.dof();
+    let pose = |values: &[f64]| Joints::from_slice(&values[..dof]);
+    let moves = rows(&format!("{prefix}moves.csv"));
     let row = moves
         .iter()
         .find(|row| row[0] as usize == n)
         .unwrap_or_else(|| panic!("no move {n}"));
-    let (start, goal) = (joints(&row[1..]), joints(&row[7..]));
-    let model = ArmModel::oscar6();
+    let (start, goal) = (pose(&row[1..]), pose(&row[1 + dof..]));
     let settings = DynamicSettings::default();
     let mut arm = FreeArm::new(
         model.clone(),
@@ -125,7 +143,7 @@ pub fn move_gaps(n: usize) -> MoveGaps {
         false,
     )
     .expect("a move inside the limits");
-    let reference = rows(&format!("mujoco_move_{n}.csv"));
+    let reference = rows(&format!("{prefix}move_{n}.csv"));
     let settled = |q: &Joints, v: &Joints| {
         (*q - goal).amax() <= settings.settle_position_tol && v.amax() <= settings.settle_speed_tol
     };
@@ -135,7 +153,7 @@ pub fn move_gaps(n: usize) -> MoveGaps {
         if tick > 0 {
             arm.step();
         }
-        let (q, v) = (joints(&row[1..]), joints(&row[7..]));
+        let (q, v) = (pose(&row[1..]), pose(&row[1 + dof..]));
         joints_deg = joints_deg.max((arm.joints() - q).amax().to_degrees());
         let apart = model.camera_position(&arm.joints()) - model.camera_position(&q);
         camera_mm = camera_mm.max(1000.0 * apart.norm());

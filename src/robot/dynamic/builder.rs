@@ -6,6 +6,7 @@
 
 use super::body_parts::body_parts;
 use super::colliders::collider;
+use super::contacts::ContactScope;
 use super::convert::to_pose;
 use super::inertia::Inertial;
 use super::seen::compound;
@@ -45,8 +46,11 @@ pub(super) struct Arm {
     pub(super) limited: bool,
     /// Whether a joint has dry friction: Rapier then steps every tick (integrator.rs).
     pub(super) dry_friction: bool,
-    /// Whether a link touched something at the last tick: Rapier then steps the next.
-    pub(super) touching: bool,
+    /// How deep (m) the deepest contact was at the last tick; negative infinity for none:
+    /// Rapier steps the tick after a touch (0 or deeper).
+    pub(super) depth: f64,
+    /// What the links may touch, to look for contacts only near it.
+    pub(super) scope: ContactScope,
 }
 
 impl std::fmt::Debug for Arm {
@@ -138,7 +142,8 @@ impl Arm {
             inertials,
             limited: true,
             dry_friction: model.joints().iter().any(|joint| joint.friction > 0.0),
-            touching: false,
+            depth: f64::NEG_INFINITY,
+            scope: ContactScope::default(),
         };
         arm.add_world(model, settings.moves.floor_z);
         arm

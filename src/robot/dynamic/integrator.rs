@@ -1,9 +1,10 @@
 //! One tick of the arm: its joint-space equations integrated over the tick by the classical
 //! fourth-order Runge–Kutta scheme under joint torques held over it (the servos', or none),
-//! the joint limits as stops; Rapier then places the bodies, for the camera and to look
-//! for contacts. Where a link touches something, or a joint has dry friction, Rapier steps
-//! the tick itself under the same torques (to first order: its contact and friction
-//! constraints act there).
+//! the joint limits as stops; the bodies are then placed where the model's kinematics puts
+//! them (for the camera), and Rapier looks for contacts where a bounding box comes near
+//! something (contacts.rs). While a link touches something, or where a joint has dry
+//! friction, Rapier steps the tick itself under the same torques (to first order: its
+//! contact and friction constraints act there).
 
 use super::builder::Arm;
 use super::convert::to_vector;
@@ -30,25 +31,29 @@ impl Arm {
             _ => Joints::zeros(self.dof),
         };
         let integrated = match space {
-            Some(space) if !self.dry_friction && !self.touching => {
+            Some(space) if !self.dry_friction && self.depth < 0.0 => {
                 self.runge_kutta(model, space, &q, &v, &tau, settings.dt)
             }
             _ => None,
         };
         match integrated {
             Some((q, v)) => {
-                self.set_state(&q, &v);
-                self.world.detect_collisions(&(), &());
+                self.set_coordinates(&q, &v);
+                self.place_bodies(&model.link_frames(&q));
+                if self.may_touch() {
+                    self.world.detect_collisions(&(), &());
+                    self.depth = self.deepest_contact();
+                } else {
+                    self.depth = f64::NEG_INFINITY;
+                }
             }
             None => {
+                self.refresh_bodies();
                 self.apply_joint_torques(model, &tau);
                 self.world.step();
+                self.depth = self.deepest_contact();
             }
         }
-        self.touching = self.world.contact_pairs().any(|pair| {
-            pair.find_deepest_contact()
-                .is_some_and(|(_, contact)| contact.dist < 0.0)
-        });
     }
 
     /// The angles and speeds after `dt` from `q`, `v` under torques `tau`, where the

@@ -2,7 +2,8 @@
 //! and the arm put at a pose at once.
 
 use super::builder::Arm;
-use crate::robot::{Joints, MAX_JOINTS};
+use super::convert::to_pose;
+use crate::robot::{Frames, Joints, MAX_JOINTS};
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::prelude::{JointAxesMask, Multibody};
 
@@ -59,7 +60,8 @@ impl Arm {
 
     /// Puts the arm at `q` at rest at once (no physics involved).
     pub(super) fn teleport(&mut self, q: &Joints) {
-        self.set_state(q, &Joints::zeros(self.dof));
+        self.set_coordinates(q, &Joints::zeros(self.dof));
+        self.refresh_bodies();
         for &body in &self.bodies[1..] {
             if let Some(rb) = self.world.bodies.get_mut(body) {
                 rb.set_linvel(Vector::ZERO, false);
@@ -68,8 +70,9 @@ impl Arm {
         }
     }
 
-    /// Puts the arm at angles `q` turning at `v` at once, and its bodies where they go.
-    pub(super) fn set_state(&mut self, q: &Joints, v: &Joints) {
+    /// Sets the multibody's joints to angles `q` turning at `v` (its bodies are placed by
+    /// [`refresh_bodies`](Self::refresh_bodies) or [`place_bodies`](Self::place_bodies)).
+    pub(super) fn set_coordinates(&mut self, q: &Joints, v: &Joints) {
         let now = self.joints();
         let (ids, n) = (self.link_ids, self.dof);
         let mb = self.multibody_mut();
@@ -87,7 +90,6 @@ impl Arm {
         for (at, speed) in speeds[..dofs].iter().enumerate() {
             velocity[at] = *speed;
         }
-        self.refresh_bodies();
     }
 
     /// Lets the joints turn past their URDF limits (or not).
@@ -105,12 +107,40 @@ impl Arm {
         }
     }
 
-    /// Moves the link bodies to where the multibody's joints put them.
+    /// Moves the link bodies to where the multibody's joints put them (Rapier's own
+    /// kinematics, which its step needs), and their colliders with them.
     pub(super) fn refresh_bodies(&mut self) {
         let world = &mut self.world;
         if let Some(mb) = world.multibody_joints.get_multibody_mut(self.multibody) {
             mb.forward_kinematics(&world.bodies, false);
             mb.update_rigid_bodies(&mut world.bodies, true);
+        }
+        self.move_colliders();
+    }
+
+    /// Puts each link body at its link's pose in `frames` (the model's kinematics at the
+    /// multibody's angles), and its collider with it.
+    pub(super) fn place_bodies(&mut self, frames: &Frames) {
+        for (k, &body) in self.bodies.iter().enumerate().skip(1) {
+            if let Some(rb) = self.world.bodies.get_mut(body) {
+                rb.set_position(to_pose(&frames[k - 1]), false);
+            }
+        }
+        self.move_colliders();
+    }
+
+    /// Puts every link's collider where its body is.
+    fn move_colliders(&mut self) {
+        let world = &mut self.world;
+        for (&body, collider) in self.bodies.iter().zip(&self.colliders).skip(1) {
+            let (Some(rb), Some(handle)) = (world.bodies.get(body), collider) else {
+                continue;
+            };
+            let pose = *rb.position();
+            if let Some(co) = world.colliders.get_mut(*handle) {
+                let offset = co.position_wrt_parent().copied().unwrap_or_default();
+                co.set_position(pose * offset);
+            }
         }
     }
 }

@@ -150,11 +150,16 @@ def write_moves(prefix: str, arm: str, urdf: str, moves, joints: int) -> None:
         )
 
 
-def scaled_masses(urdf: str, factor: float) -> str:
-    """Every link's mass and inertia tensor times `factor`."""
-    urdf = re.sub(r'(<mass value=")([^"]+)"', lambda m: m.group(1) + repr(float(m.group(2)) * factor) + '"', urdf)
+def scaled_masses(urdf: str, links, factor: float) -> str:
+    """The mass and inertia tensor of each of `links` times `factor` (the whole arm
+    scaled alike would move as before)."""
     names = "ixx|ixy|ixz|iyy|iyz|izz"
-    return re.sub(r'\b(%s)="([^"]+)"' % names, lambda m: '%s="%r"' % (m.group(1), float(m.group(2)) * factor), urdf)
+    for link in links:
+        block = re.search(r'<link name="%s">.*?</link>' % link, urdf, re.S)
+        body = re.sub(r'(<mass value=")([^"]+)"', lambda m: m.group(1) + repr(float(m.group(2)) * factor) + '"', block.group(0))
+        body = re.sub(r'\b(%s)="([^"]+)"' % names, lambda m: '%s="%r"' % (m.group(1), float(m.group(2)) * factor), body)
+        urdf = urdf[: block.start()] + body + urdf[block.end() :]
+    return urdf
 
 
 def with_inertial(urdf: str, link: str, com, tensor) -> str:
@@ -189,7 +194,7 @@ def with_damping(urdf: str, damping: float) -> str:
 
 def held_out(urdf: str) -> dict:
     """Variants of the OSCAR-6 the other references never saw, by name."""
-    heavy = scaled_masses(urdf, 1.3)
+    heavy = scaled_masses(urdf, ["link_2", "link_3"], 1.3)
     rotated = with_inertial(urdf, "link_2", [0.30, 0.0, 0.0], rotated_repeated(0.3, 0.05, (0.3, 0.5, 0.7)))
     off_axis = with_inertial(
         with_inertial(urdf, "link_2", [0.30, 0.02, 0.04], [[0.0544, 0, 0], [0, 0.5372, 0], [0, 0, 0.5372]]),
@@ -197,7 +202,7 @@ def held_out(urdf: str) -> dict:
     )
     damped = with_damping(urdf, 2.0)
     everything = with_damping(
-        with_inertial(scaled_masses(off_axis, 1.3), "link_1", [0.01, -0.02, 0.275],
+        with_inertial(scaled_masses(off_axis, ["link_2", "link_3"], 1.3), "link_1", [0.01, -0.02, 0.275],
                       rotated_repeated(0.9, 0.16, (0.2, -0.4, 0.9))),
         2.0,
     )

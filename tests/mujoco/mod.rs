@@ -81,7 +81,7 @@ pub fn swing_gaps_of(model: ArmModel, file: &str, settings: DynamicSettings) -> 
             }
             (
                 row[0],
-                (arm.joints() - joints(&row[1..])).amax().to_degrees(),
+                apart(&arm.joints(), &joints(&row[1..])).to_degrees(),
             )
         })
         .collect()
@@ -100,6 +100,20 @@ pub fn held_out_arms() -> Vec<(&'static str, ArmModel)> {
             (name, model)
         })
         .collect()
+}
+
+/// The largest joint difference between `ours` and `theirs` (rad); infinite when one is
+/// not finite (a maximum that skipped it would hide an arm that blew up).
+fn apart(ours: &Joints, theirs: &Joints) -> f64 {
+    let gaps = (*ours - *theirs)
+        .iter()
+        .map(|d| d.abs())
+        .collect::<Vec<_>>();
+    if gaps.iter().all(|d| d.is_finite()) {
+        gaps.into_iter().fold(0.0, f64::max)
+    } else {
+        f64::INFINITY
+    }
 }
 
 /// The gap of `gaps` at time `t` (s).
@@ -154,9 +168,9 @@ pub fn move_gaps(model: &ArmModel, prefix: &str, n: usize) -> MoveGaps {
             arm.step();
         }
         let (q, v) = (pose(&row[1..]), pose(&row[1 + dof..]));
-        joints_deg = joints_deg.max((arm.joints() - q).amax().to_degrees());
-        let apart = model.camera_position(&arm.joints()) - model.camera_position(&q);
-        camera_mm = camera_mm.max(1000.0 * apart.norm());
+        joints_deg = joints_deg.max(apart(&arm.joints(), &q).to_degrees());
+        let camera = model.camera_position(&arm.joints()) - model.camera_position(&q);
+        camera_mm = camera_mm.max(1000.0 * camera.norm());
         ours.push(settled(&arm.joints(), &arm.speeds()));
         theirs.push(settled(&q, &v));
     }

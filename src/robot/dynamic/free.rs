@@ -214,7 +214,7 @@ mod tests {
         arm.joints()[1] - q[1]
     }
 
-    /// The inverse dynamics holds Rapier's motion to account: a passive swing (nothing on
+    /// The inverse dynamics holds the integration to account: a passive swing (nothing on
     /// the joints) takes no torque but the integration's error, a held pose its weight's.
     #[test]
     fn the_torques_a_motion_took_are_none_free_and_the_weight_held() {

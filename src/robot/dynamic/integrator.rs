@@ -13,6 +13,10 @@ use super::servo_law::SetPoint;
 use super::settings::DynamicSettings;
 use crate::robot::{ArmModel, Joints};
 
+/// The largest rate × step a damped joint's relaxation may have in one Runge–Kutta step
+/// (the scheme is stable below 2.78; this also keeps its decay close).
+const STABLE_RATE_STEP: f64 = 1.5;
+
 impl Arm {
     /// Steps the arm one tick of `settings.dt`, its servos sent to `set_point` (none: the
     /// servos off, the arm left to its weight).
@@ -32,7 +36,7 @@ impl Arm {
         };
         let integrated = match space {
             Some(space) if !self.dry_friction && self.depth < 0.0 => {
-                self.runge_kutta(model, space, &q, &v, &tau, settings.dt)
+                self.integrate(model, space, &q, &v, &tau, settings.dt)
             }
             _ => None,
         };
@@ -57,7 +61,32 @@ impl Arm {
     }
 
     /// The angles and speeds after `dt` from `q`, `v` under torques `tau`, where the
-    /// equations of motion are `start`; none when they fail on the way.
+    /// equations of motion are `start`: one Runge–Kutta step, or as many equal ones as
+    /// the joints' damping needs to stay stable (a damped light link relaxes faster than
+    /// a tick: its rate d/I is bounded by the damping's share of M⁻¹); none when the
+    /// equations fail on the way.
+    fn integrate(
+        &self,
+        model: &ArmModel,
+        start: JointSpace,
+        q: &Joints,
+        v: &Joints,
+        tau: &Joints,
+        dt: f64,
+    ) -> Option<(Joints, Joints)> {
+        let steps = (start.damping_rate(model) * dt / STABLE_RATE_STEP)
+            .ceil()
+            .max(1.0);
+        let h = dt / steps;
+        let mut state = self.runge_kutta(model, start, q, v, tau, h)?;
+        for _ in 1..steps as usize {
+            let space = self.joint_space(model, &state.0, &state.1)?;
+            state = self.runge_kutta(model, space, &state.0, &state.1, tau, h)?;
+        }
+        Some(state)
+    }
+
+    /// The angles and speeds after one classical Runge–Kutta step of `dt`.
     fn runge_kutta(
         &self,
         model: &ArmModel,

@@ -24,9 +24,26 @@ pub(super) struct JointSpace {
 impl JointSpace {
     /// The joint accelerations (rad/s²) under joint torques `tau` (N·m): M⁻¹·(τ − b).
     pub(super) fn accelerations(&self, tau: &Joints) -> Joints {
-        let n = tau.len();
+        self.solve(*tau - self.bias)
+    }
+
+    /// A bound (1/s) on the fastest relaxation the joints' damping D gives the arm: the
+    /// largest eigenvalue of M⁻¹·D is at most Σᵢ dᵢ·(M⁻¹)ᵢᵢ.
+    pub(super) fn damping_rate(&self, model: &ArmModel) -> f64 {
+        let n = self.bias.len();
+        let unit = |i: usize| Joints::from_fn(n, |j| if i == j { 1.0 } else { 0.0 });
+        model.joints()[..n]
+            .iter()
+            .enumerate()
+            .filter(|(_, joint)| joint.damping > 0.0)
+            .map(|(i, joint)| joint.damping * self.solve(unit(i))[i])
+            .sum()
+    }
+
+    /// M⁻¹·`x`, from the factor.
+    fn solve(&self, mut x: Joints) -> Joints {
+        let n = x.len();
         let l = &self.factor;
-        let mut x = *tau - self.bias;
         for i in 0..n {
             let sum: f64 = (0..i).map(|j| l[(i, j)] * x[j]).sum();
             x[i] = (x[i] - sum) / l[(i, i)];

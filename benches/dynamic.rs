@@ -18,6 +18,8 @@ use std::time::Instant;
 
 #[path = "../tests/mujoco/mod.rs"]
 mod mujoco;
+#[path = "../tests/common/test_arms.rs"]
+mod test_arms;
 
 const SEED: u64 = 1;
 const IK_TRIALS: usize = 1_000;
@@ -102,7 +104,7 @@ fn print_row(label: &str, row: &Row) {
     );
 }
 
-/// Microseconds per control tick (servo targets, gravity feed-forward, physics step) of
+/// Microseconds per control tick (servo torques, fourth-order step, contact detection) of
 /// the arm holding an outstretched pose.
 fn micros_per_step() -> f64 {
     let hold = DynamicSettings {
@@ -166,7 +168,9 @@ fn main() {
     let physics_ms = lin5.steps_per_trial.unwrap_or(0.0) * step * 1e-3;
     println!("\n| where a dynamic lin5 trial's time goes | |\n|---|---|");
     println!("| wall time per trial | {per_trial_ms:.2} ms |");
-    println!("| control tick (servo targets, gravity feed-forward, Rapier step) | {step:.1} µs |");
+    println!(
+        "| control tick (servo torques, fourth-order step, contact detection) | {step:.1} µs |"
+    );
     println!(
         "| ticks per trial × tick | {physics_ms:.2} ms ({:.0}%) |",
         100.0 * physics_ms / per_trial_ms
@@ -200,19 +204,44 @@ fn print_mujoco_comparison() {
         "| link 2 10 cm longer: accelerations (0.1 ms step), largest relative difference | {:.1e} |",
         worst(mujoco::acceleration_gaps(&long, "mujoco_stretched.csv", 12, 1e-4))
     );
-    for (dt, iterations) in [(1e-3, 2), (1e-3, 1), (5e-3, 2), (5e-3, 1)] {
+    for dt in [1e-3, 5e-3] {
         for n in 1..=3 {
-            let settings = DynamicSettings {
-                solver_iterations: iterations,
-                ..mujoco::with_dt(dt)
-            };
-            let gaps = mujoco::swing_gaps(n, settings);
+            let gaps = mujoco::swing_gaps(n, mujoco::with_dt(dt));
             println!(
-                "| passive swing {n}, dt {} ms, {iterations} solver iteration(s): apart at 0.2 / 0.5 / 1 s | {:.3}° / {:.3}° / {:.2}° |",
+                "| passive swing {n}, dt {} ms: apart at 0.2 / 0.5 / 1 s | {:.1e}° / {:.1e}° / {:.1e}° |",
                 dt * 1e3,
                 mujoco::gap_at(&gaps, 0.2),
                 mujoco::gap_at(&gaps, 0.5),
                 mujoco::gap_at(&gaps, 1.0)
+            );
+        }
+    }
+    for (name, arm) in mujoco::held_out_arms() {
+        let file = format!("held_out/mujoco_swing_{name}.csv");
+        let gaps = mujoco::swing_gaps_of(arm, &file, mujoco::with_dt(5e-3));
+        println!(
+            "| held-out OSCAR-6 `{name}`, passive swing, dt 5 ms: apart at 0.2 / 0.5 / 1 s | {:.1e}° / {:.1e}° / {:.1e}° |",
+            mujoco::gap_at(&gaps, 0.2),
+            mujoco::gap_at(&gaps, 0.5),
+            mujoco::gap_at(&gaps, 1.0)
+        );
+    }
+    let arms = [
+        ("OSCAR-6", model.clone(), "mujoco_", "joint 3"),
+        (
+            "Panda",
+            test_arms::PANDA.model(),
+            "mujoco_panda_",
+            "joint 4",
+        ),
+    ];
+    for (arm, model, prefix, limited) in arms {
+        for (n, kind) in [(1, "small"), (2, "large"), (3, "onto a limit")] {
+            let gaps = mujoco::move_gaps(&model, prefix, n);
+            println!(
+                "| {arm} servoed move {n} ({kind}{}), dt 5 ms: largest joint / camera difference, settle ticks ours / MuJoCo's | {:.1e}° / {:.1e} mm, {} / {} |",
+                if n == 3 { format!(": {limited}") } else { String::new() },
+                gaps.joints_deg, gaps.camera_mm, gaps.settle_ticks.0, gaps.settle_ticks.1
             );
         }
     }

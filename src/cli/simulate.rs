@@ -1,6 +1,6 @@
-//! `eyehand simulate`: the dynamic arm run free from a pose — servos off or holding it —
-//! printing the joint angles and speeds every tick, to hold the simulator against another
-//! engine.
+//! `eyehand simulate`: the dynamic arm run from a pose — servos off, holding it, or moving
+//! it to another — printing the joint angles and speeds every tick, to hold the simulator
+//! against another engine.
 
 use super::{bad_input, failed, warned, Failure};
 use crate::experiment::setup::{dynamic_settings, load_arm};
@@ -40,6 +40,17 @@ pub(super) struct SimulateArgs {
     /// The servos and the gravity feed-forward hold the start pose.
     #[arg(long)]
     hold: bool,
+    /// A servoed move: every joint from `--from` to these angles (degrees, q1,q2,…, as
+    /// many as the arm has) along the straight joint-space line, under the trapezoidal
+    /// profile of the config's `robot_speed` and `robot_accel` for the joint with the
+    /// farthest to go, with its velocity and acceleration fed forward; then held there.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        conflicts_with_all = ["hold", "passive"]
+    )]
+    to: Option<Vec<f64>>,
     /// The joints turn past their URDF limits.
     #[arg(long)]
     no_limits: bool,
@@ -76,10 +87,10 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
     let dt = args.dt.unwrap_or(config.dt);
     let ticks = check(&args, model.joints().len(), dt)?;
     let start = Joints::from_slice(&args.from).map(f64::to_radians);
-    let drive = if args.hold {
-        Drive::Hold
-    } else {
-        Drive::Passive
+    let drive = match &args.to {
+        Some(goal) => Drive::MoveTo(Joints::from_slice(goal).map(f64::to_radians)),
+        None if args.hold => Drive::Hold,
+        None => Drive::Passive,
     };
     let settings = DynamicSettings {
         dt,
@@ -195,12 +206,16 @@ fn energy_drift_line(drift: f64, peak_kinetic: f64, seconds: f64) -> String {
 /// Checks the numbers before any work, for an arm of `joints` joints stepped by `dt`: the
 /// ticks to run.
 fn check(args: &SimulateArgs, joints: usize, dt: f64) -> Result<u64, Failure> {
-    if args.from.len() != joints || args.from.iter().any(|a| !a.is_finite()) {
-        return Err(bad_input(format!(
-            "--from takes {joints} finite joint angles in degrees (one per joint of this \
-             arm: q1,..,q{joints}), not {}",
-            args.from.len()
-        )));
+    let poses =
+        std::iter::once(("--from", &args.from)).chain(args.to.iter().map(|to| ("--to", to)));
+    for (flag, pose) in poses {
+        if pose.len() != joints || pose.iter().any(|a| !a.is_finite()) {
+            return Err(bad_input(format!(
+                "{flag} takes {joints} finite joint angles in degrees (one per joint of this \
+                 arm: q1,..,q{joints}), not {}",
+                pose.len()
+            )));
+        }
     }
     if !(dt >= DT_RANGE.0 && dt <= DT_RANGE.1) {
         return Err(bad_input(format!(

@@ -2,7 +2,7 @@
 //! tools/mujoco_reference.py) and measuring the dynamic arm against them; shared by
 //! tests/dynamic_reference.rs and benches/dynamic.rs.
 
-use eyehand::robot::{ArmModel, Drive, DynamicSettings, FreeArm, Joints};
+use eyehand::robot::{parse_urdf, ArmModel, Drive, DynamicSettings, FreeArm, Joints};
 
 /// The rows of a reference file, `#` lines skipped.
 pub fn rows(name: &str) -> Vec<Vec<f64>> {
@@ -58,19 +58,21 @@ pub fn acceleration_gaps(
 /// Passive swing `n` (1–3) stepped with `settings` beside MuJoCo's: at each of its rows
 /// the time (s) and the largest joint angle difference (°).
 pub fn swing_gaps(n: usize, settings: DynamicSettings) -> Vec<(f64, f64)> {
-    let reference = rows(&format!("mujoco_swing_{n}.csv"));
+    swing_gaps_of(
+        ArmModel::oscar6(),
+        &format!("mujoco_swing_{n}.csv"),
+        settings,
+    )
+}
+
+/// [`swing_gaps`] for the arm `model` against the swing of reference file `file`.
+pub fn swing_gaps_of(model: ArmModel, file: &str, settings: DynamicSettings) -> Vec<(f64, f64)> {
+    let reference = rows(file);
     let start = joints(&reference[0][1..]);
     let dt = settings.dt;
     // MuJoCo's arm has no limits and no contacts.
-    let mut arm = FreeArm::new(
-        ArmModel::oscar6(),
-        &start,
-        settings,
-        Drive::Passive,
-        false,
-        false,
-    )
-    .expect("a finite start");
+    let mut arm = FreeArm::new(model, &start, settings, Drive::Passive, false, false)
+        .expect("a finite start");
     reference[1..]
         .iter()
         .map(|row| {
@@ -79,10 +81,39 @@ pub fn swing_gaps(n: usize, settings: DynamicSettings) -> Vec<(f64, f64)> {
             }
             (
                 row[0],
-                (arm.joints() - joints(&row[1..])).amax().to_degrees(),
+                apart(&arm.joints(), &joints(&row[1..])).to_degrees(),
             )
         })
         .collect()
+}
+
+/// The OSCAR-6 variants of tests/data/held_out (written by tools/mujoco_reference.py):
+/// each name and arm.
+pub fn held_out_arms() -> Vec<(&'static str, ArmModel)> {
+    ["heavy", "rotated", "off_axis", "damped", "everything"]
+        .into_iter()
+        .map(|name| {
+            let file = format!("held_out/oscar6_{name}.urdf");
+            let path = format!("{}/tests/data/{file}", env!("CARGO_MANIFEST_DIR"));
+            let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+            let model = parse_urdf(&text, &file).unwrap_or_else(|e| panic!("{path}: {e}"));
+            (name, model)
+        })
+        .collect()
+}
+
+/// The largest joint difference between `ours` and `theirs` (rad); infinite when one is
+/// not finite (a maximum that skipped it would hide an arm that blew up).
+fn apart(ours: &Joints, theirs: &Joints) -> f64 {
+    let gaps = (*ours - *theirs)
+        .iter()
+        .map(|d| d.abs())
+        .collect::<Vec<_>>();
+    if gaps.iter().all(|d| d.is_finite()) {
+        gaps.into_iter().fold(0.0, f64::max)
+    } else {
+        f64::INFINITY
+    }
 }
 
 /// The gap of `gaps` at time `t` (s).
@@ -90,4 +121,63 @@ pub fn gap_at(gaps: &[(f64, f64)], t: f64) -> f64 {
     gaps.iter()
         .find(|(at, _)| (at - t).abs() < 1e-9)
         .map_or(f64::NAN, |(_, gap)| *gap)
+}
+
+/// How far the dynamic arm strays from MuJoCo over a servoed move.
+#[derive(Debug, Clone, Copy)]
+pub struct MoveGaps {
+    /// The largest joint difference at any tick (degrees).
+    pub joints_deg: f64,
+    /// The largest distance between the camera centres at any tick (mm), both placed by
+    /// the model's kinematics.
+    pub camera_mm: f64,
+    /// The ticks each arm took to settle at the goal (ours, MuJoCo's): the first tick
+    /// from which every joint stays within the settle tolerances of it.
+    pub settle_ticks: (usize, usize),
+}
+
+/// Move `n` of tests/data/PREFIXmoves.csv on `model` at the default settings, held
+/// against MuJoCo's run of it (PREFIXmove_N.csv, a row every tick).
+pub fn move_gaps(model: &ArmModel, prefix: &str, n: usize) -> MoveGaps {
+    let dof = model.dof();
+    let pose = |values: &[f64]| Joints::from_slice(&values[..dof]);
+    let moves = rows(&format!("{prefix}moves.csv"));
+    let row = moves
+        .iter()
+        .find(|row| row[0] as usize == n)
+        .unwrap_or_else(|| panic!("no move {n}"));
+    let (start, goal) = (pose(&row[1..]), pose(&row[1 + dof..]));
+    let settings = DynamicSettings::default();
+    let mut arm = FreeArm::new(
+        model.clone(),
+        &start,
+        settings,
+        Drive::MoveTo(goal),
+        true,
+        false,
+    )
+    .expect("a move inside the limits");
+    let reference = rows(&format!("{prefix}move_{n}.csv"));
+    let settled = |q: &Joints, v: &Joints| {
+        (*q - goal).amax() <= settings.settle_position_tol && v.amax() <= settings.settle_speed_tol
+    };
+    let (mut ours, mut theirs) = (Vec::new(), Vec::new());
+    let (mut joints_deg, mut camera_mm) = (0.0f64, 0.0f64);
+    for (tick, row) in reference.iter().enumerate() {
+        if tick > 0 {
+            arm.step();
+        }
+        let (q, v) = (pose(&row[1..]), pose(&row[1 + dof..]));
+        joints_deg = joints_deg.max(apart(&arm.joints(), &q).to_degrees());
+        let camera = model.camera_position(&arm.joints()) - model.camera_position(&q);
+        camera_mm = camera_mm.max(1000.0 * camera.norm());
+        ours.push(settled(&arm.joints(), &arm.speeds()));
+        theirs.push(settled(&q, &v));
+    }
+    let settle = |flags: &[bool]| flags.iter().rposition(|s| !s).map_or(0, |last| last + 1);
+    MoveGaps {
+        joints_deg,
+        camera_mm,
+        settle_ticks: (settle(&ours), settle(&theirs)),
+    }
 }

@@ -81,12 +81,12 @@ config_entries! {
     robot_accel: f64 = 180.0, "°/s²", All, Within(1.0, 100_000.0);
     /// Physics and servo time step (0.005: a 200 Hz control loop).
     dt: f64 = 0.005, "s", DYNAMIC, Within(1e-5, 0.1);
-    /// Constraint solver iterations per physics step.
+    /// Rapier's constraint solver iterations, on the ticks Rapier steps (a link touching, dry friction).
     solver_iterations: usize = 1, "", DYNAMIC, Within(1.0, 100.0);
-    /// Joint servo position gain, scaled by each joint's inertia (400000 with motor_damping
+    /// Joint servo position gain, scaled by the arm's mass matrix (400000 with motor_damping
     /// 1265: a critically damped 100 Hz servo).
     motor_stiffness: f64 = 400000.0, "1/s²", DYNAMIC, PositiveUpTo(1e9);
-    /// Joint servo velocity gain, scaled by each joint's inertia.
+    /// Joint servo velocity gain, scaled by the arm's mass matrix.
     motor_damping: f64 = 1265.0, "1/s", DYNAMIC, PositiveUpTo(1e6);
     /// A move has settled once every joint is this close to its set-point …
     settle_position_tol: f64 = 0.0005, "°", DYNAMIC, PositiveUpTo(10.0);

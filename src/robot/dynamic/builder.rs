@@ -1,10 +1,12 @@
 //! An arm built into a Rapier world: its bodies (the base and one per joint, each with the
 //! links merged into it) become rigid bodies with their inertials and colliders, its
 //! revolute joints one multibody (reduced coordinates) on a fixed base, each joint with its
-//! limits, damping, dry friction and a position motor. The camera link rides on the last body.
+//! limits, damping and dry friction; the servos' torques come from servo_law.rs. The camera
+//! link rides on the last body.
 
 use super::body_parts::body_parts;
 use super::colliders::collider;
+use super::contacts::ContactScope;
 use super::convert::to_pose;
 use super::inertia::Inertial;
 use super::seen::compound;
@@ -13,8 +15,8 @@ use crate::robot::{ArmModel, Joints, MAX_JOINTS};
 use nalgebra::{Isometry3, Unit, UnitQuaternion, Vector3};
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::prelude::{
-    ColliderHandle, GenericJointBuilder, JointAxesMask, JointAxis, MotorModel, MultibodyIndex,
-    PhysicsWorld, RigidBodyBuilder, RigidBodyHandle, SharedShape,
+    ColliderHandle, GenericJointBuilder, JointAxesMask, JointAxis, MultibodyIndex, PhysicsWorld,
+    RigidBodyBuilder, RigidBodyHandle, SharedShape,
 };
 
 /// Standard gravity (m/s²), pulling along −z.
@@ -40,6 +42,15 @@ pub(super) struct Arm {
     /// Mass properties of the moving bodies as simulated (the camera in the last, a
     /// stretched link as stretched, a massless body given [`Inertial::MIN_MASS`]).
     pub(super) inertials: Vec<Inertial>,
+    /// Whether the joints stop at their URDF limits.
+    pub(super) limited: bool,
+    /// Whether a joint has dry friction: Rapier then steps every tick (integrator.rs).
+    pub(super) dry_friction: bool,
+    /// How deep (m) the deepest contact was at the last tick; negative infinity for none:
+    /// Rapier steps the tick after a touch (0 or deeper).
+    pub(super) depth: f64,
+    /// What the links may touch, to look for contacts only near it.
+    pub(super) scope: ContactScope,
 }
 
 impl std::fmt::Debug for Arm {
@@ -52,7 +63,7 @@ impl std::fmt::Debug for Arm {
 }
 
 impl Arm {
-    /// The arm of `model` at the zero pose, servoed with `settings`' gains.
+    /// The arm of `model` at the zero pose, stepped at `settings`' time step.
     pub(super) fn build(model: &ArmModel, settings: &DynamicSettings) -> Arm {
         let mut world = PhysicsWorld::new();
         world.gravity = Vector::new(0.0, 0.0, -GRAVITY);
@@ -90,15 +101,6 @@ impl Arm {
                 .local_frame1(to_pose(&joint_frame(&joint.origin, &joint.axis)))
                 .local_frame2(to_pose(&joint_frame(&Isometry3::identity(), &joint.axis)))
                 .limits(JointAxis::AngX, [joint.lower, joint.upper])
-                .motor_model(JointAxis::AngX, MotorModel::AccelerationBased)
-                .set_motor(
-                    JointAxis::AngX,
-                    0.0,
-                    0.0,
-                    settings.motor_stiffness,
-                    settings.motor_damping,
-                )
-                .motor_max_force(JointAxis::AngX, joint.effort)
                 .contacts_enabled(false);
             world
                 .multibody_joints
@@ -118,8 +120,8 @@ impl Arm {
         }
         if let Some(mb) = world.multibody_joints.get_multibody_mut(multibody) {
             // Rapier gives every joint a damping of its own; the URDF's is the one to use,
-            // with its dry friction (a torque bound on a zero-speed constraint, apart from
-            // the servo's motor).
+            // with its dry friction (a torque bound on a zero-speed constraint, on the
+            // ticks Rapier steps).
             mb.damping_mut().fill(0.0);
             mb.frictions_mut().fill(0.0);
             for (joint, &id) in model.joints().iter().zip(&link_ids) {
@@ -138,6 +140,10 @@ impl Arm {
             colliders,
             seen,
             inertials,
+            limited: true,
+            dry_friction: model.joints().iter().any(|joint| joint.friction > 0.0),
+            depth: f64::NEG_INFINITY,
+            scope: ContactScope::default(),
         };
         arm.add_world(model, settings.moves.floor_z);
         arm

@@ -9,6 +9,7 @@ use crate::robot::clearance::contact_pairs;
 use crate::robot::collision::body_elements;
 use crate::robot::{ArmModel, Obstacle, MAX_JOINTS};
 use rapier3d_f64::math::Vector;
+use rapier3d_f64::parry::bounding_volume::{Aabb, BoundingVolume};
 use rapier3d_f64::prelude::nalgebra::Unit;
 use rapier3d_f64::prelude::{
     ColliderBuilder, Group, InteractionGroups, InteractionTestMode, RigidBodyBuilder,
@@ -19,6 +20,34 @@ use rapier3d_f64::prelude::{
 pub(super) const CONTACT_DEPTH: f64 = 5e-4;
 /// The floor's interaction group (bodies take groups 0 to [`MAX_JOINTS`]).
 const FLOOR: u32 = MAX_JOINTS as u32 + 1;
+/// Room (m) around each body's bounding box within which Rapier looks for contacts: more
+/// than its prediction distance (2 mm), so a contact about to form is seen forming.
+const LOOK_WITHIN: f64 = 0.005;
+
+/// What the links may touch: the pairs of bodies the shared rule lets meet, the floor and
+/// the obstacles' bounding boxes.
+#[derive(Debug, Clone)]
+pub(super) struct ContactScope {
+    /// Whether contacts are on at all.
+    on: bool,
+    /// Bodies (0 the base) that may touch each other.
+    pairs: Vec<(usize, usize)>,
+    /// The floor's height (m; negative infinity for none).
+    floor_z: f64,
+    /// The obstacles' boxes in the world.
+    obstacles: Vec<Aabb>,
+}
+
+impl Default for ContactScope {
+    fn default() -> Self {
+        ContactScope {
+            on: true,
+            pairs: Vec::new(),
+            floor_z: f64::NEG_INFINITY,
+            obstacles: Vec::new(),
+        }
+    }
+}
 
 impl Arm {
     /// Adds the floor at height `floor_z` (m; none when not finite) and turns on contacts
@@ -30,7 +59,8 @@ impl Arm {
         filters[FLOOR as usize] = Group::ALL;
         filters[0] = Group::empty();
         let elements: Vec<_> = (0..=model.dof()).map(|k| body_elements(model, k)).collect();
-        for (i, j) in contact_pairs(model, &elements) {
+        self.scope.pairs = contact_pairs(model, &elements);
+        for &(i, j) in &self.scope.pairs {
             filters[i].insert(Group::from_bits_retain(1 << j));
             filters[j].insert(Group::from_bits_retain(1 << i));
         }
@@ -42,6 +72,7 @@ impl Arm {
             }
         }
         if floor_z.is_finite() {
+            self.scope.floor_z = floor_z;
             let ground = self
                 .world
                 .insert_body(RigidBodyBuilder::fixed().translation(Vector::new(0.0, 0.0, floor_z)));
@@ -73,12 +104,16 @@ impl Arm {
             )
             .position(pose)
             .collision_groups(groups(FLOOR, filter));
-            self.world.insert_collider(collider, Some(ground));
+            let handle = self.world.insert_collider(collider, Some(ground));
+            self.scope
+                .obstacles
+                .push(self.world.colliders[handle].compute_aabb());
         }
     }
 
     /// Turns every contact off: the floor's and between links.
     pub(super) fn remove_contacts(&mut self) {
+        self.scope.on = false;
         for handle in self.colliders.iter().flatten() {
             if let Some(collider) = self.world.colliders.get_mut(*handle) {
                 collider.set_collision_groups(InteractionGroups::none());
@@ -95,10 +130,39 @@ impl Arm {
 
     /// True when a link digs deeper than [`CONTACT_DEPTH`] into the floor or another link.
     pub(super) fn in_contact(&self) -> bool {
-        self.world.contact_pairs().any(|pair| {
-            pair.find_deepest_contact()
-                .is_some_and(|(_, contact)| contact.dist < -CONTACT_DEPTH)
-        })
+        self.depth > CONTACT_DEPTH
+    }
+
+    /// How deep (m) the deepest contact Rapier found last is; negative infinity for none.
+    pub(super) fn deepest_contact(&self) -> f64 {
+        self.world
+            .contact_pairs()
+            .filter_map(|pair| pair.find_deepest_contact())
+            .map(|(_, contact)| -contact.dist)
+            .fold(f64::NEG_INFINITY, f64::max)
+    }
+
+    /// False when no two things that may touch come within [`LOOK_WITHIN`] of each other
+    /// by their bounding boxes (so surely do not touch), the colliders where they are now.
+    pub(super) fn may_touch(&self) -> bool {
+        let scope = &self.scope;
+        if !scope.on {
+            return false;
+        }
+        let boxes: [Option<Aabb>; MAX_JOINTS + 1] = std::array::from_fn(|k| {
+            let collider = self.world.colliders.get((*self.colliders.get(k)?)?)?;
+            Some(collider.compute_aabb().loosened(LOOK_WITHIN))
+        });
+        let links = || boxes.iter().skip(1).flatten();
+        links().any(|b| b.mins.z < scope.floor_z)
+            || links().any(|b| scope.obstacles.iter().any(|o| b.intersects(o)))
+            || scope
+                .pairs
+                .iter()
+                .any(|&(i, j)| match (&boxes[i], &boxes[j]) {
+                    (Some(a), Some(b)) => a.intersects(b),
+                    _ => false,
+                })
     }
 }
 

@@ -1,18 +1,25 @@
-//! The arm left to itself from a pose, tick by tick: servos off (a passive swing under
-//! gravity) or holding the pose — to hold the simulator against another engine.
+//! The arm run from a pose, tick by tick: servos off (a passive swing under gravity),
+//! holding the pose, or moving every joint to a goal along a straight line under the
+//! trapezoidal profile a move follows — to hold the simulator against another engine.
 
 use super::builder::Arm;
 use super::energy::Energy;
+use super::servo_law::SetPoint;
 use super::settings::DynamicSettings;
-use crate::robot::{ArmModel, Joints, RobotError};
+use crate::robot::{ArmModel, Joints, RobotError, TrapezoidProfile};
 
-/// What the servos do while the arm runs free.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// What the servos do while the arm runs.
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Drive {
     /// Servos off, no gravity feed-forward: the arm swings under its weight.
     Passive,
     /// The servos (and the gravity feed-forward) hold the start pose.
     Hold,
+    /// The servos move every joint from the start pose to these angles (rad) along the
+    /// straight joint-space line, under the trapezoidal profile of the settings' speed
+    /// and acceleration for the joint with the farthest to go (as a step move does, with
+    /// its velocity and acceleration fed forward), then hold them.
+    MoveTo(Joints),
 }
 
 /// The dynamic arm running free from a start pose.
@@ -20,20 +27,23 @@ pub enum Drive {
 pub struct FreeArm {
     arm: Arm,
     model: ArmModel,
-    hold: Joints,
+    /// The start pose.
+    start: Joints,
     drive: Drive,
     settings: DynamicSettings,
     steps: u64,
     /// The joint angles and speeds before the last step.
     before: Option<(Joints, Joints)>,
+    /// The profile of a [`Drive::MoveTo`].
+    profile: TrapezoidProfile,
 }
 
 impl FreeArm {
     /// The arm of `model` at rest at `start` (every joint's angle, rad), stepped with
     /// `settings` (sanitised as the dynamic simulator does); with `limits` false the
     /// joints turn past their URDF limits, with `contacts` false the links pass through
-    /// the floor and each other. Fails when a start angle is not finite, or outside its
-    /// limits while they apply.
+    /// the floor and each other. Fails when an angle of the start (or of a move's goal)
+    /// is not finite, or outside its limits while they apply.
     pub fn new(
         model: ArmModel,
         start: &Joints,
@@ -42,53 +52,52 @@ impl FreeArm {
         limits: bool,
         contacts: bool,
     ) -> Result<FreeArm, RobotError> {
-        let outside = match start.iter().position(|a| !a.is_finite()) {
-            Some(i) => Some(i),
-            None if limits => model.violated_limit(start),
-            None => None,
+        check_pose(&model, start, limits)?;
+        let goal = match drive {
+            Drive::MoveTo(goal) => {
+                check_pose(&model, &goal, limits)?;
+                goal
+            }
+            _ => *start,
         };
-        if let Some(i) = outside {
-            let joint = &model.joints()[i];
-            return Err(RobotError::OutsideLimits {
-                joint: i + 1,
-                angle_deg: start[i].to_degrees(),
-                lower_deg: joint.lower.to_degrees(),
-                upper_deg: joint.upper.to_degrees(),
-            });
-        }
         let settings = settings.sanitized();
         let mut arm = Arm::build(&model, &settings);
         arm.teleport(start);
-        if drive == Drive::Passive || !limits {
-            arm.release(limits);
-        }
+        arm.release(limits);
         if !contacts {
             arm.remove_contacts();
         }
+        let moves = settings.moves;
+        let profile = TrapezoidProfile::new((goal - *start).amax(), moves.speed, moves.accel);
         Ok(FreeArm {
             arm,
             model,
-            hold: *start,
+            start: *start,
             drive,
             settings,
             steps: 0,
             before: None,
+            profile,
         })
     }
 
     /// One physics step of `dt`.
     pub fn step(&mut self) {
         self.before = Some((self.joints(), self.speeds()));
-        if self.drive == Drive::Hold {
-            let efforts = self.arm.hold_weight(&self.model, &self.hold);
-            self.arm.drive(
-                &self.hold,
-                &Joints::zeros(self.hold.len()),
-                &efforts,
-                &self.settings,
-            );
-        }
-        self.arm.world.step();
+        let set_point = match self.drive {
+            Drive::Passive => None,
+            Drive::Hold => Some(SetPoint::at_rest(self.start)),
+            Drive::MoveTo(goal) => {
+                let dt = self.settings.dt;
+                let at = |k: u64| {
+                    self.start + (goal - self.start) * self.profile.fraction_at(k as f64 * dt)
+                };
+                let k = self.steps;
+                Some(SetPoint::between(&at(k), &at(k + 1), &at(k + 2), dt))
+            }
+        };
+        self.arm
+            .step(&self.model, set_point.as_ref(), &self.settings);
         self.steps += 1;
     }
 
@@ -146,6 +155,27 @@ impl FreeArm {
     }
 }
 
+/// Fails when an angle of pose `q` is not finite, or outside its limits while they apply.
+fn check_pose(model: &ArmModel, q: &Joints, limits: bool) -> Result<(), RobotError> {
+    let outside = match q.iter().position(|a| !a.is_finite()) {
+        Some(i) => Some(i),
+        None if limits => model.violated_limit(q),
+        None => None,
+    };
+    match outside {
+        Some(i) => {
+            let joint = &model.joints()[i];
+            Err(RobotError::OutsideLimits {
+                joint: i + 1,
+                angle_deg: q[i].to_degrees(),
+                lower_deg: joint.lower.to_degrees(),
+                upper_deg: joint.upper.to_degrees(),
+            })
+        }
+        None => Ok(()),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -184,7 +214,7 @@ mod tests {
         arm.joints()[1] - q[1]
     }
 
-    /// The inverse dynamics holds Rapier's motion to account: a passive swing (nothing on
+    /// The inverse dynamics holds the integration to account: a passive swing (nothing on
     /// the joints) takes no torque but the integration's error, a held pose its weight's.
     #[test]
     fn the_torques_a_motion_took_are_none_free_and_the_weight_held() {
@@ -195,7 +225,7 @@ mod tests {
             ..DynamicSettings::default()
         };
         let arm = Arm::build(&oscar6, &settings.sanitized());
-        let weight = arm.weight_torques(&oscar6, &q).0;
+        let weight = arm.weight_torques(&oscar6, &q);
         let scale = weight.iter().fold(0.0f64, |m, t| m.max(t.abs()));
         let mut free =
             FreeArm::new(oscar6.clone(), &q, settings, Drive::Passive, false, false).unwrap();
@@ -232,7 +262,7 @@ mod tests {
         let arm = Arm::build(&oscar6, &DynamicSettings::default().sanitized());
         // The threshold: the weight's torque about the shoulder (121 N·m), from the
         // model's masses and kinematics, not from the physics.
-        let weight = arm.weight_torques(&oscar6, &q).0[1].abs();
+        let weight = arm.weight_torques(&oscar6, &q)[1].abs();
         assert!(weight > 1.0, "{weight}");
         let free = shoulder_travel(&q, 0.0);
         assert!(free.abs() > 0.1, "{free}");

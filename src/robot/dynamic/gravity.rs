@@ -1,29 +1,17 @@
 //! Gravity feed-forward: the joint torques that carry the arm's weight at the servo
 //! set-point, computed from the model's kinematics and the links' URDF masses, as a
-//! model-based industrial controller adds them to its servo output. Each torque acts on the
-//! two links its joint connects, equal and opposite; with the servo's own force it stays
-//! within the joint's URDF effort.
+//! model-based industrial controller adds them to its servo output (servo_law.rs).
 
 use super::builder::{Arm, GRAVITY};
-use super::convert::to_vector;
-use crate::robot::{ArmModel, Joints, MAX_JOINTS};
+use crate::robot::{ArmModel, Joints};
 use nalgebra::Vector3;
 
 impl Arm {
-    /// The torque about each joint's axis (N·m) that holds the links' weight at pose `q`,
-    /// and each joint's axis in the world there.
-    pub(super) fn weight_torques(
-        &self,
-        model: &ArmModel,
-        q: &Joints,
-    ) -> (Joints, [Vector3<f64>; MAX_JOINTS]) {
+    /// The torque about each joint's axis (N·m) that holds the links' weight at pose `q`.
+    pub(super) fn weight_torques(&self, model: &ArmModel, q: &Joints) -> Joints {
         let frames = model.link_frames(q);
         let joints = model.joints();
         let n = self.dof;
-        let mut axes = [Vector3::zeros(); MAX_JOINTS];
-        for (i, axis) in axes.iter_mut().enumerate().take(n) {
-            *axis = frames[i].rotation * joints[i].axis.into_inner();
-        }
         let mut torques = Joints::zeros(n);
         // Weight and its moment about the world origin of the bodies from i out, summed
         // from the tip.
@@ -36,29 +24,10 @@ impl Arm {
                 .coords
                 .cross(&force);
             let at = frames[i].translation.vector;
-            torques[i] = -axes[i].dot(&(moment - at.cross(&weight)));
+            torques[i] = -(frames[i].rotation * joints[i].axis.into_inner())
+                .dot(&(moment - at.cross(&weight)));
         }
-        (torques, axes)
-    }
-
-    /// Applies the weight-holding torques of pose `q` (each bounded by its joint's effort)
-    /// and returns the effort left to each joint's servo (N·m).
-    pub(super) fn hold_weight(&mut self, model: &ArmModel, q: &Joints) -> Joints {
-        let (torques, axes) = self.weight_torques(model, q);
-        let joints = model.joints();
-        let n = self.dof;
-        let held = Joints::from_fn(n, |i| torques[i].clamp(-joints[i].effort, joints[i].effort));
-        for k in 0..n {
-            let mut torque = axes[k] * held[k];
-            if k + 1 < n {
-                torque -= axes[k + 1] * held[k + 1];
-            }
-            if let Some(rb) = self.world.bodies.get_mut(self.bodies[k + 1]) {
-                rb.reset_torques(false);
-                rb.add_torque(to_vector(&torque), false);
-            }
-        }
-        Joints::from_fn(n, |i| joints[i].effort - held[i].abs())
+        torques
     }
 }
 
@@ -71,7 +40,7 @@ mod tests {
     fn the_shoulder_carries_the_outstretched_arm() {
         let model = ArmModel::oscar6();
         let arm = Arm::build(&model, &DynamicSettings::default());
-        let (torques, _) = arm.weight_torques(&model, &model.full_pose(&Vector3::zeros()));
+        let torques = arm.weight_torques(&model, &model.full_pose(&Vector3::zeros()));
         // Upper arm 17 kg at 0.3 m, forearm 8 kg at 0.875 m, wrist, flange and camera 3.3 kg
         // at (or straight below) the wrist centre 1.15 m out; joint 2 lifts about −y, so
         // holding takes +torque.

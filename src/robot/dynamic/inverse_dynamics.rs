@@ -3,8 +3,9 @@
 //! so the torques a tick's motion took can be read off its change of speed.
 
 use super::builder::{Arm, GRAVITY};
-use crate::robot::{ArmModel, Joints};
-use nalgebra::{Point3, Vector3};
+use super::placement::Placement;
+use crate::robot::{ArmModel, Joints, MAX_JOINTS};
+use nalgebra::Vector3;
 
 impl Arm {
     /// The torque about each joint's axis (N·m) that turns the arm of `model` at joint
@@ -18,44 +19,46 @@ impl Arm {
         v: &Joints,
         a: &Joints,
     ) -> Joints {
-        let frames = model.link_frames(q);
-        let joints = model.joints();
+        self.placement(model, q).torques(v, a)
+    }
+}
+
+impl Placement {
+    /// [`Arm::joint_torques`] for the bodies placed here.
+    pub(super) fn torques(&self, v: &Joints, a: &Joints) -> Joints {
         let n = self.dof;
-        let axis = |k: usize| frames[k].rotation * joints[k].axis.into_inner();
-        let origin = |k: usize| frames[k].translation.vector;
         // Outwards: each body's spin, angular acceleration and its joint origin's
         // acceleration, gravity as the base accelerating upwards.
         let (mut spin, mut turn) = (Vector3::zeros(), Vector3::<f64>::zeros());
         let mut at_origin = Vector3::new(0.0, 0.0, GRAVITY);
         let mut previous = Vector3::zeros();
-        let mut forces = Vec::with_capacity(n);
+        let mut forces = [(Vector3::zeros(), Vector3::zeros()); MAX_JOINTS];
         for k in 0..n {
-            let lever = origin(k) - previous;
+            let (axis, origin) = (self.axes[k], self.origins[k]);
+            let lever = origin - previous;
             at_origin += turn.cross(&lever) + spin.cross(&spin.cross(&lever));
-            let joint_spin = axis(k) * v[k];
-            turn += axis(k) * a[k] + spin.cross(&joint_spin);
+            let joint_spin = axis * v[k];
+            turn += axis * a[k] + spin.cross(&joint_spin);
             spin += joint_spin;
-            previous = origin(k);
-            let inertial = &self.inertials[k];
-            let com = (frames[k] * Point3::from(inertial.com)).coords - origin(k);
+            previous = origin;
+            let com = self.coms[k] - origin;
             let at_com = at_origin + turn.cross(&com) + spin.cross(&spin.cross(&com));
-            let rotation = frames[k].rotation.to_rotation_matrix();
-            let tensor = rotation * inertial.tensor * rotation.transpose();
-            let force = at_com * inertial.mass;
+            let tensor = &self.tensors[k];
+            let force = at_com * self.masses[k];
             let moment = tensor * turn + spin.cross(&(tensor * spin));
-            forces.push((force, moment + com.cross(&force)));
+            forces[k] = (force, moment + com.cross(&force));
         }
         // Inwards: what each joint carries of the bodies beyond it, about its origin.
         let mut torques = Joints::zeros(n);
         let (mut carried, mut carried_moment) = (Vector3::zeros(), Vector3::zeros());
         for k in (0..n).rev() {
             if k + 1 < n {
-                carried_moment += (origin(k + 1) - origin(k)).cross(&carried);
+                carried_moment += (self.origins[k + 1] - self.origins[k]).cross(&carried);
             }
             let (force, moment) = forces[k];
             carried += force;
             carried_moment += moment;
-            torques[k] = axis(k).dot(&carried_moment);
+            torques[k] = self.axes[k].dot(&carried_moment);
         }
         torques
     }

@@ -1,6 +1,6 @@
 //! The dynamic simulator: an arm (the OSCAR-6 or any chain) as a Rapier multibody under
-//! gravity, moved by position servos that follow each move's trapezoidal profile, then
-//! settle.
+//! gravity, its joint-space equations integrated to fourth order tick by tick, moved by
+//! servos that follow each move's trapezoidal profile, then settle.
 
 mod body_parts;
 mod builder;
@@ -11,10 +11,14 @@ mod energy;
 mod free;
 mod gravity;
 mod inertia;
+mod integrator;
 mod inverse_dynamics;
-mod motors;
+mod joint_space;
+mod joint_state;
+mod placement;
 mod seen;
 mod servo;
+mod servo_law;
 mod settings;
 mod settle;
 mod sim;

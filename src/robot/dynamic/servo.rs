@@ -9,6 +9,7 @@
 //! is, counted as a contact stop). A step move or a placing ends continuous servoing: the
 //! plan takes over from the set-point.
 
+use super::servo_law::SetPoint;
 use super::sim::{DynamicSim, SimCounters};
 use crate::robot::{Controlled, SetPointTracker, Simulator};
 
@@ -71,7 +72,6 @@ impl DynamicSim {
     /// the arm is.
     pub(super) fn servo_step(&mut self) -> bool {
         let dt = self.settings.dt;
-        let lead = self.acceleration_lead();
         let from = self.tracker().point();
         let last = self.full_set_point(&from, &self.arm.joints());
         let (lower, upper) = self.plan_limits();
@@ -84,8 +84,7 @@ impl DynamicSim {
         ahead.keep_within(&lower, &upper);
         let next = self.full_set_point(&next_theta, &last);
         let after = self.full_set_point(&ahead.point(), &next);
-        let accelerated = next + (after - 2.0 * next + last) * lead;
-        self.tick(&accelerated, &((after - next) / dt));
+        self.tick(&SetPoint::between(&last, &next, &after, dt));
         if !self.arm.in_contact() {
             return false;
         }

@@ -12,10 +12,11 @@ pub struct DynamicSettings {
     pub moves: MoveSettings,
     /// Physics and control time step (s); default 0.005 (200 Hz).
     pub dt: f64,
-    /// Constraint solver iterations per step; default 1.
+    /// Rapier's constraint solver iterations, for the ticks Rapier steps (a link touching
+    /// something, dry friction); default 1.
     pub solver_iterations: usize,
-    /// Position gain of every joint servo (1/s², acceleration-based: the joint's effective
-    /// inertia is factored in); default 400,000 (a 100 Hz servo).
+    /// Position gain of every joint servo (1/s², acceleration-based: the arm's mass matrix
+    /// is factored in); default 400,000 (a 100 Hz servo).
     pub motor_stiffness: f64,
     /// Velocity gain of every joint servo (1/s, acceleration-based); default 1265 (critical
     /// damping for the default stiffness).

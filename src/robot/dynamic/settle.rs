@@ -1,16 +1,15 @@
 //! Stepping the arm: following a move's set-point profile tick by tick, then stepping until
 //! the joints are close to their set-points and nearly still.
 
+use super::servo_law::SetPoint;
 use super::sim::{DynamicSim, SimCounters};
 use crate::robot::{Controlled, Joints, Simulator, TrapezoidProfile};
 
 impl DynamicSim {
-    /// One control tick: servo targets and gravity feed-forward for set-point `target`
-    /// moving at `speed`, then a physics step.
-    pub(super) fn tick(&mut self, target: &Joints, speed: &Joints) {
-        let efforts = self.arm.hold_weight(self.plan.model(), target);
-        self.arm.drive(target, speed, &efforts, &self.settings);
-        self.arm.world.step();
+    /// One control tick: the servos sent to `set_point`, the arm stepped.
+    pub(super) fn tick(&mut self, set_point: &SetPoint) {
+        self.arm
+            .step(self.plan.model(), Some(set_point), &self.settings);
         SimCounters::count(&self.counters.steps);
         if let Some(ticks) = &mut self.kept_ticks {
             ticks.push(self.arm.joints());
@@ -53,14 +52,12 @@ impl DynamicSim {
     /// Feeds the move from set-point `start` along `delta` (θ1..θ3) to the servos under the
     /// trapezoidal profile, one tick per step, until a contact stops it: the steps taken,
     /// and whether a contact stopped it. Each tick sends the set-point the step ends at,
-    /// its speed over the next step, and its acceleration as a lead of a/k on the position
-    /// (an acceleration-based servo's acceleration feed-forward), so the arm arrives with
-    /// the profile instead of lagging behind it.
+    /// with its speed and acceleration there (fed forward), so the arm arrives with the
+    /// profile instead of lagging behind it.
     pub(super) fn follow(&mut self, start: &Joints, delta: &Controlled) -> (usize, bool) {
         let moves = self.settings.moves;
         let profile = TrapezoidProfile::new(delta.amax(), moves.speed, moves.accel);
         let dt = self.settings.dt;
-        let lead = self.acceleration_lead();
         let ticks = (profile.duration() / dt).ceil() as usize;
         let from = self.model().controlled_of(start);
         let at = |k: usize| profile.fraction_at(k as f64 * dt);
@@ -68,8 +65,7 @@ impl DynamicSim {
         let (mut now, mut next) = (now, self.set_point(&from, delta, at(1), &now));
         for k in 0..ticks {
             let after = self.set_point(&from, delta, at(k + 2), &next);
-            let accelerated = next + (after - 2.0 * next + now) * lead;
-            self.tick(&accelerated, &((after - next) / dt));
+            self.tick(&SetPoint::between(&now, &next, &after, dt));
             if self.arm.in_contact() {
                 return (k + 1, true);
             }
@@ -78,21 +74,13 @@ impl DynamicSim {
         (ticks, false)
     }
 
-    /// The acceleration feed-forward's lead on the position per unit second difference of
-    /// the set-point: a/k as a multiple of (next − 2·this + last).
-    pub(super) fn acceleration_lead(&self) -> f64 {
-        let dt = self.settings.dt;
-        1.0 / (dt * dt * self.settings.motor_stiffness)
-    }
-
     /// Steps at the current set-point until the arm has settled or the time-out: whether
     /// it settled (a time-out is counted), and the steps taken (at least one).
     pub(super) fn settle(&mut self) -> (bool, usize) {
         let target = self.plan.joints();
-        let still = Joints::zeros(target.len());
         let limit = self.settings.settle_steps().max(1);
         for step in 1..=limit {
-            self.tick(&target, &still);
+            self.tick(&SetPoint::at_rest(target));
             SimCounters::count(&self.counters.settle_steps);
             if self.is_settled(&target) {
                 return (true, step);

@@ -11,20 +11,24 @@
 //!   the profile the arm steps until every joint is within `settle_position_tol` of its
 //!   set-point and slower than `settle_speed_tol`, or `settle_timeout` passes (reported in
 //!   the move's [`MoveReport`] and counted, not fatal).
-//! - The servos are Rapier position motors (acceleration-based, so one gain pair suits a
-//!   25 kg column and a 0.8 kg flange) bounded by the joints' URDF efforts. A gravity
-//!   feed-forward computed from the model at the set-point carries the arm's weight, as an
-//!   industrial controller's does: without it the servo error under gravity is bound by
-//!   the stiffness, with it a held arm does not drift.
+//! - The servos' law (servo_law.rs): per joint a spring and damper toward the set-point
+//!   taken at the tick's end (stable at the stiff default gains), the set-point's
+//!   acceleration fed forward, made torques through the arm's mass matrix (so one gain
+//!   pair suits a 25 kg column and a 0.8 kg flange), plus a gravity feed-forward computed
+//!   from the model at the set-point, which carries the arm's weight as an industrial
+//!   controller's does; all bounded by the joints' URDF efforts and held over the tick.
 //!   Set-points are clamped to the limits (a command past a limit stops at it, exactly where
-//!   the kinematic simulator stops); the multibody's own limits stay on as a backstop.
-//! - Defaults: `dt` 5 ms (200 Hz), 1 solver iteration, stiffness 400,000/s² and damping
-//!   1265/s (a critically damped 100 Hz servo; Rapier's motors are implicit, so stable at
-//!   ω·dt ≈ 3). With the joints' damping the URDF's (zero, not Rapier's default 0.1
-//!   N·m·s/rad), a slower servo rings for many ticks after a move; the 100 Hz servo with
-//!   acceleration feed-forward settles within a few. One solver iteration is as precise as
-//!   several for settled poses here (only the motors, limits and contacts are
-//!   constraints).
+//!   the kinematic simulator stops); the joints' limits stay on as hard stops.
+//! - Each tick integrates the arm's joint-space equations (joint_space.rs: the mass matrix
+//!   and the Newton–Euler bias from the model and the simulated masses) by one classical
+//!   fourth-order Runge–Kutta step (integrator.rs); Rapier places the bodies and looks for
+//!   contacts. While a link touches something, or when a joint has dry friction, Rapier
+//!   steps the tick itself under the same torques, its contact and friction constraints
+//!   acting (first order, `solver_iterations` iterations).
+//! - Defaults: `dt` 5 ms (200 Hz), stiffness 400,000/s² and damping 1265/s (a critically
+//!   damped 100 Hz servo). With the joints' damping the URDF's (zero, not Rapier's default
+//!   0.1 N·m·s/rad), the 100 Hz servo with acceleration feed-forward settles within a few
+//!   ticks of a move's profile.
 //! - f64 (rapier3d-f64): the camera must match the kinematic model to 0.05 mm over a
 //!   1.2 m arm. A probe of Rapier 0.36 (shared/notes) found f32's rounding a visible part
 //!   of that budget and f32 unstable with stiff motors, for a step only slightly dearer in
@@ -151,7 +155,7 @@ impl DynamicSim {
     /// The joint torques (N·m) the gravity feed-forward gives at pose `q`: what holds the
     /// arm's weight there, from the links' mass properties as simulated.
     pub fn holding_torques(&self, q: &Joints) -> Joints {
-        self.arm.weight_torques(self.plan.model(), q).0
+        self.arm.weight_torques(self.plan.model(), q)
     }
 
     /// The settings in use.
@@ -167,7 +171,7 @@ impl Simulator for DynamicSim {
 
     fn place(&mut self, theta: &Controlled) -> Result<(), RobotError> {
         let q = self.model().check_limits(theta)?;
-        let (torques, _) = self.arm.weight_torques(self.model(), &q);
+        let torques = self.arm.weight_torques(self.model(), &q);
         let joints = self.model().joints();
         if let Some(i) =
             (0..joints.len()).find(|&i| torques[i].is_nan() || torques[i].abs() > joints[i].effort)

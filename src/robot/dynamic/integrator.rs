@@ -1,0 +1,157 @@
+//! One tick of the arm: its joint-space equations integrated over the tick by the classical
+//! fourth-order Runge–Kutta scheme under joint torques held over it (the servos', or none),
+//! the joint limits as stops; the bodies are then placed where the model's kinematics puts
+//! them (for the camera), and Rapier looks for contacts where a bounding box comes near
+//! something (contacts.rs). While a link touches something, or where a joint has dry
+//! friction, Rapier steps the tick itself under the same torques (to first order: its
+//! contact and friction constraints act there).
+
+use super::builder::Arm;
+use super::convert::to_vector;
+use super::joint_space::JointSpace;
+use super::servo_law::SetPoint;
+use super::settings::DynamicSettings;
+use crate::robot::{ArmModel, Joints};
+
+/// The largest rate × step a damped joint's relaxation may have in one Runge–Kutta step
+/// (the scheme is stable below 2.78; this also keeps its decay close).
+const STABLE_RATE_STEP: f64 = 1.5;
+
+impl Arm {
+    /// Steps the arm one tick of `settings.dt`, its servos sent to `set_point` (none: the
+    /// servos off, the arm left to its weight).
+    pub(super) fn step(
+        &mut self,
+        model: &ArmModel,
+        set_point: Option<&SetPoint>,
+        settings: &DynamicSettings,
+    ) {
+        let (q, v) = (self.joints(), self.speeds());
+        let space = self.joint_space(model, &q, &v);
+        let tau = match (&space, set_point) {
+            (Some(space), Some(set_point)) => {
+                self.servo_torques(model, space, set_point, &q, &v, settings)
+            }
+            _ => Joints::zeros(self.dof),
+        };
+        let integrated = match space {
+            Some(space) if !self.dry_friction && self.depth < 0.0 => {
+                self.integrate(model, space, &q, &v, &tau, settings.dt)
+            }
+            _ => None,
+        };
+        match integrated {
+            Some((q, v)) => {
+                self.set_coordinates(&q, &v);
+                self.place_bodies(&model.link_frames(&q));
+                if self.may_touch() {
+                    self.world.detect_collisions(&(), &());
+                    self.depth = self.deepest_contact();
+                } else {
+                    self.depth = f64::NEG_INFINITY;
+                }
+            }
+            None => {
+                self.refresh_bodies();
+                self.apply_joint_torques(model, &tau);
+                self.world.step();
+                self.depth = self.deepest_contact();
+            }
+        }
+    }
+
+    /// The angles and speeds after `dt` from `q`, `v` under torques `tau`, where the
+    /// equations of motion are `start`: one Runge–Kutta step, or as many equal ones as
+    /// the joints' damping needs to stay stable (a damped light link relaxes faster than
+    /// a tick: its rate d/I is bounded by the damping's share of M⁻¹); none when the
+    /// equations fail on the way.
+    fn integrate(
+        &self,
+        model: &ArmModel,
+        start: JointSpace,
+        q: &Joints,
+        v: &Joints,
+        tau: &Joints,
+        dt: f64,
+    ) -> Option<(Joints, Joints)> {
+        let steps = (start.damping_rate(model) * dt / STABLE_RATE_STEP)
+            .ceil()
+            .max(1.0);
+        let h = dt / steps;
+        let mut state = self.runge_kutta(model, start, q, v, tau, h)?;
+        for _ in 1..steps as usize {
+            let space = self.joint_space(model, &state.0, &state.1)?;
+            state = self.runge_kutta(model, space, &state.0, &state.1, tau, h)?;
+        }
+        Some(state)
+    }
+
+    /// The angles and speeds after one classical Runge–Kutta step of `dt`.
+    fn runge_kutta(
+        &self,
+        model: &ArmModel,
+        start: JointSpace,
+        q: &Joints,
+        v: &Joints,
+        tau: &Joints,
+        dt: f64,
+    ) -> Option<(Joints, Joints)> {
+        let accelerations = |q: &Joints, v: &Joints| {
+            self.joint_space(model, q, v)
+                .map(|space| space.accelerations(tau))
+        };
+        let (q, v) = (*q, *v);
+        let a1 = start.accelerations(tau);
+        let (q2, v2) = (q + v * (0.5 * dt), v + a1 * (0.5 * dt));
+        let a2 = accelerations(&q2, &v2)?;
+        let (q3, v3) = (q + v2 * (0.5 * dt), v + a2 * (0.5 * dt));
+        let a3 = accelerations(&q3, &v3)?;
+        let (q4, v4) = (q + v3 * dt, v + a3 * dt);
+        let a4 = accelerations(&q4, &v4)?;
+        let sixth = dt / 6.0;
+        let q_end = q + (v + 2.0 * v2 + 2.0 * v3 + v4) * sixth;
+        let v_end = v + (a1 + 2.0 * a2 + 2.0 * a3 + a4) * sixth;
+        Some(self.stopped_at_limits(model, q_end, v_end))
+    }
+
+    /// `q`, `v` with every joint past a limit (while the limits apply) put on it, its
+    /// speed out of the limit stopped.
+    fn stopped_at_limits(
+        &self,
+        model: &ArmModel,
+        mut q: Joints,
+        mut v: Joints,
+    ) -> (Joints, Joints) {
+        if !self.limited {
+            return (q, v);
+        }
+        for (i, joint) in model.joints().iter().enumerate() {
+            if q[i] < joint.lower {
+                q[i] = joint.lower;
+                v[i] = v[i].max(0.0);
+            } else if q[i] > joint.upper {
+                q[i] = joint.upper;
+                v[i] = v[i].min(0.0);
+            }
+        }
+        (q, v)
+    }
+
+    /// Applies joint torques `tau` (N·m) to the bodies for Rapier's step: each acts on the
+    /// two bodies its joint connects, equal and opposite.
+    fn apply_joint_torques(&mut self, model: &ArmModel, tau: &Joints) {
+        let n = self.dof;
+        let frames = model.link_frames(&self.joints());
+        let axis = |k: usize| frames[k].rotation * model.joints()[k].axis.into_inner();
+        for k in 0..n {
+            let mut torque = axis(k) * tau[k];
+            if k + 1 < n {
+                torque -= axis(k + 1) * tau[k + 1];
+            }
+            if let Some(rb) = self.world.bodies.get_mut(self.bodies[k + 1]) {
+                rb.reset_torques(false);
+                rb.add_torque(to_vector(&torque), false);
+            }
+        }
+    }
+}

@@ -1,0 +1,119 @@
+//! The joint servos' law, one tick at a time: a stiff spring and damper on each joint
+//! toward its set-point, the set-point's acceleration fed forward, made joint torques
+//! through the arm's mass matrix (so one gain pair suits a 25 kg column and a 0.8 kg
+//! flange), plus the weight's torques at the set-point (gravity feed-forward), all within
+//! each joint's URDF effort. The torques are held over the tick, as a digital servo holds
+//! its output; the law is simple enough for another engine to replay exactly
+//! (tools/mujoco_reference.py).
+
+use super::builder::Arm;
+use super::joint_space::JointSpace;
+use super::settings::DynamicSettings;
+use crate::robot::{ArmModel, Joints};
+
+/// Where the servos are sent over one tick: the set-point at the tick's end, its speed and
+/// its acceleration there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct SetPoint {
+    /// Every joint's angle (rad).
+    pub(super) angles: Joints,
+    /// Their speeds (rad/s).
+    pub(super) speeds: Joints,
+    /// Their accelerations (rad/s²).
+    pub(super) accelerations: Joints,
+}
+
+impl SetPoint {
+    /// Held still at `angles`.
+    pub(super) fn at_rest(angles: Joints) -> SetPoint {
+        let still = Joints::zeros(angles.len());
+        SetPoint {
+            angles,
+            speeds: still,
+            accelerations: still,
+        }
+    }
+
+    /// The middle one of three set-points `dt` apart (`last`, `next`, `after`): its speed
+    /// and acceleration by central differences.
+    pub(super) fn between(last: &Joints, next: &Joints, after: &Joints, dt: f64) -> SetPoint {
+        SetPoint {
+            angles: *next,
+            speeds: (*after - *last) / (2.0 * dt),
+            accelerations: (*after - 2.0 * *next + *last) / (dt * dt),
+        }
+    }
+}
+
+impl DynamicSettings {
+    /// The accelerations (rad/s²) the servos ask of joints at angles `q` turning at `v`
+    /// over one tick toward `set_point`: the spring (stiffness k) and damper (c) taken at
+    /// the tick's end, which keeps the stiff default gains stable at k·dt² = 10:
+    /// s = [a* + k·(x* − x − dt·v) + c·(v* − v)] / (1 + k·dt²/2 + c·dt). An arm that
+    /// follows its set-point exactly gets exactly the set-point's acceleration.
+    pub(super) fn servo_accelerations(
+        &self,
+        set_point: &SetPoint,
+        q: &Joints,
+        v: &Joints,
+    ) -> Joints {
+        let (k, c, dt) = (self.motor_stiffness, self.motor_damping, self.dt);
+        let lag = set_point.angles - *q - *v * dt;
+        let slow = set_point.speeds - *v;
+        (set_point.accelerations + lag * k + slow * c) / (1.0 + 0.5 * k * dt * dt + c * dt)
+    }
+}
+
+impl Arm {
+    /// The joint torques (N·m) of one tick toward `set_point` for the arm at angles `q`
+    /// and speeds `v`, whose equations of motion there are `space`: the weight's at the
+    /// set-point (each within its joint's effort), and the servo's M·s within the effort
+    /// that leaves.
+    pub(super) fn servo_torques(
+        &self,
+        model: &ArmModel,
+        space: &JointSpace,
+        set_point: &SetPoint,
+        q: &Joints,
+        v: &Joints,
+        settings: &DynamicSettings,
+    ) -> Joints {
+        let weight = self.weight_torques(model, &set_point.angles);
+        let servo = space.inertial_torques(&settings.servo_accelerations(set_point, q, v));
+        let joints = model.joints();
+        Joints::from_fn(self.dof, |i| {
+            let effort = joints[i].effort;
+            let held = weight[i].clamp(-effort, effort);
+            let left = effort - held.abs();
+            held + servo[i].clamp(-left, left)
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An arm on its set-point's path gets the path's acceleration; one behind it is
+    /// pulled toward it.
+    #[test]
+    fn the_law_follows_the_path_and_pulls_toward_it() {
+        let settings = DynamicSettings::default();
+        let dt = settings.dt;
+        let path = |t: f64| Joints::from_slice(&[0.5 * 3.0 * t * t, -0.2 * t]);
+        let speed = |t: f64| Joints::from_slice(&[3.0 * t, -0.2]);
+        let t = 0.1;
+        let set_point = SetPoint::between(&path(t), &path(t + dt), &path(t + 2.0 * dt), dt);
+        let on_path = settings.servo_accelerations(&set_point, &path(t), &speed(t));
+        assert!(
+            (on_path - Joints::from_slice(&[3.0, 0.0])).amax() < 1e-9,
+            "{on_path:?}"
+        );
+        let behind = path(t) - Joints::from_slice(&[0.01, 0.01]);
+        let pulled = settings.servo_accelerations(&set_point, &behind, &speed(t));
+        assert!(
+            pulled.iter().zip(on_path.iter()).all(|(p, o)| p > o),
+            "{pulled:?}"
+        );
+    }
+}

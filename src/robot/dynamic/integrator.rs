@@ -86,7 +86,8 @@ impl Arm {
         Some(state)
     }
 
-    /// The angles and speeds after one classical Runge–Kutta step of `dt`.
+    /// The angles and speeds after one classical Runge–Kutta step of `dt`; none when they
+    /// are not finite (Rapier then steps the tick).
     fn runge_kutta(
         &self,
         model: &ArmModel,
@@ -111,7 +112,8 @@ impl Arm {
         let sixth = dt / 6.0;
         let q_end = q + (v + 2.0 * v2 + 2.0 * v3 + v4) * sixth;
         let v_end = v + (a1 + 2.0 * a2 + 2.0 * a3 + a4) * sixth;
-        Some(self.stopped_at_limits(model, q_end, v_end))
+        let finite = q_end.iter().chain(v_end.iter()).all(|x| x.is_finite());
+        finite.then(|| self.stopped_at_limits(model, q_end, v_end))
     }
 
     /// `q`, `v` with every joint past a limit (while the limits apply) put on it, its

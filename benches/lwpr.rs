@@ -17,8 +17,8 @@
 mod common;
 
 use common::recovery::{alarms, detected_after};
-use eyehand::experiment::FourStepTrace;
 use common::run_cli;
+use eyehand::experiment::FourStepTrace;
 use eyehand::experiment::RunSummary;
 use std::path::Path;
 

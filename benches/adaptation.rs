@@ -9,10 +9,12 @@
 //! level (`FourStepTrace::recovered_after`; "never": not by the last trial), the detection
 //! delay (trials from the event to the first alarm; alarms before the event are counted
 //! apart), the merges by kind, and the 4-step mean over the last 500 trials. Then 50,000
-//! trials without an event per strategy: alarms and merges, and the 4-step mean over the
-//! last 1,000 trials.
+//! trials without an event for lin5 under each strategy and lin8 under change detection:
+//! alarms and merges, and the 4-step mean over the last 1,000 trials.
 //!
-//! `cargo bench --bench adaptation`
+//! `cargo bench --bench adaptation`; `cargo bench --bench adaptation -- "lin5
+//! change_detection" "lin8 change_detection"` runs only the rows of those learners (labels
+//! as in the table).
 
 mod common;
 
@@ -131,14 +133,27 @@ fn row(runs: &[Recovery]) -> [String; 5] {
     ]
 }
 
+/// The learners whose rows are run: those named on the command line, or all.
+fn chosen() -> Vec<(&'static str, &'static str, &'static [&'static str])> {
+    let names: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with("--"))
+        .collect();
+    LEARNERS
+        .into_iter()
+        .filter(|(label, ..)| names.is_empty() || names.iter().any(|n| n == label))
+        .collect()
+}
+
 fn main() {
+    let learners = chosen();
     let trials = TRIALS.to_string();
     println!("| event at trial {EVENT_TRIAL} | learner | 4-step before (mm) | recovered after (trials to 1.5×) | detected after (trials) | merges abs,rel,starved | 4-step last 500 (mm) |");
     println!("|---|---|---|---|---|---|---|");
     for (name, event) in SCENARIOS {
         // (A data folder per scenario: a method's folder holds at most 36 runs.)
         let data = tempfile::tempdir().expect("a temporary data folder");
-        for (label, config, sets) in LEARNERS {
+        for &(label, config, sets) in &learners {
             let runs: Vec<Recovery> = SEEDS
                 .iter()
                 .map(|seed| {
@@ -161,7 +176,8 @@ fn main() {
     println!("|---|---|---|---|---|");
     let long = LONG_TRIALS.to_string();
     let data = tempfile::tempdir().expect("a temporary data folder");
-    for (label, config, sets) in [LEARNERS[0], LEARNERS[2]] {
+    let long_runs = [LEARNERS[0], LEARNERS[2], LEARNERS[4]];
+    for (label, config, sets) in long_runs.into_iter().filter(|l| learners.contains(l)) {
         for seed in SEEDS {
             let (config, seed_text) = (config_path(config), seed.to_string());
             let mut args = vec!["--config", &config, "--trials", &long, "--seed", &seed_text];

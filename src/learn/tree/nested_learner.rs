@@ -107,12 +107,15 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
     /// Learns a trial's poses. Fails only when the patterns are kept in a file that can no
     /// longer be written or read: the run cannot go on without them. While a correction
     /// is fitted after a change, the patterns go to its fit instead, and the tree learns
-    /// them once it is fixed.
+    /// them once it is fixed. A trial that yields no pattern is booked as a failure with
+    /// the change watch.
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
         if let Some(error) = self.failed.take() {
             return Err(error);
         }
+        let mut patterns = 0;
         for (from, to) in self.patterns.pairs(path) {
+            patterns += 1;
             let pattern = (self.pattern_of)(from, to);
             if self.corrections.fitting() {
                 self.corrections.book(&pattern);
@@ -120,6 +123,9 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
                 let corrected = self.corrections.pattern(&pattern);
                 self.train(&corrected, true)?;
             }
+        }
+        if let (0, Some(watch)) = (patterns, &mut self.watch) {
+            watch.no_pattern();
         }
         let tree = &self.tree;
         for pattern in self.corrections.refit(|x| tree.answer(x)) {

@@ -111,3 +111,42 @@ fn non_finite_values_are_ignored() {
     assert_eq!(detector.statistic(), 0.0);
     assert_eq!(detector.seen, 0);
 }
+
+#[test]
+fn a_run_of_failures_is_found_in_five_values_and_dated_to_the_first() {
+    let mut detector = ChangeDetector::new(DetectorSettings::default());
+    // A constant stream leaves the statistic at 0.
+    for n in 0..1000 {
+        assert_eq!(detector.observe(n, -3.0), None, "at {n}");
+    }
+    assert_eq!(detector.statistic(), 0.0);
+    // Each failure counts 4 spreads less the drift: 3.5, 7, 10.5, 14, 17.5 > 16.
+    for n in 1000..1004 {
+        assert_eq!(detector.observe_failure(n), None, "at {n}");
+    }
+    let alarm = detector
+        .observe_failure(1004)
+        .expect("five failures are an alarm");
+    assert_eq!(alarm.changed_at, 1000);
+}
+
+#[test]
+fn scattered_failures_raise_no_alarm_and_stay_out_of_the_baseline() {
+    let mut detector = ChangeDetector::new(DetectorSettings::default());
+    let mut rng = ChaCha8Rng::seed_from_u64(4);
+    for n in 1..100_000u64 {
+        // One trial in 50 fails, far more often than on the real stream (0.14%).
+        let alarm = if n % 50 == 0 {
+            detector.observe_failure(n)
+        } else {
+            detector.observe(n, value(&mut rng, -3.0))
+        };
+        assert_eq!(alarm, None, "false alarm at {n}");
+    }
+    assert!(
+        (detector.mean + 3.0).abs() < 0.1,
+        "baseline {}",
+        detector.mean
+    );
+    assert_eq!(detector.lagging.len(), detector.settings.lag);
+}

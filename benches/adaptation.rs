@@ -10,13 +10,17 @@
 //! delay (trials from the event to the first alarm; alarms before the event are counted
 //! apart), the merges by kind, and the 4-step mean over the last 500 trials. Then 50,000
 //! trials without an event for lin5 under each strategy and lin8 under change detection:
-//! alarms and merges, and the 4-step mean over the last 1,000 trials.
+//! alarms and merges, and the 4-step mean over the last 1,000 trials. Last, lin5 with and
+//! without `learn_during_moves` on both simulators (`during_moves`).
 //!
 //! `cargo bench --bench adaptation`; `cargo bench --bench adaptation -- "lin5
 //! change_detection" "lin8 change_detection"` runs only the rows of those learners (labels
-//! as in the table).
+//! as in the table); `cargo bench --bench adaptation -- learn_during_moves` only the last
+//! table.
 
 mod common;
+#[path = "adaptation/during_moves.rs"]
+mod during_moves;
 
 use common::recovery::{alarms, detected_after};
 use common::run_cli;
@@ -133,12 +137,17 @@ fn row(runs: &[Recovery]) -> [String; 5] {
     ]
 }
 
-/// The learners whose rows are run: those named on the command line, or all.
-fn chosen() -> Vec<(&'static str, &'static str, &'static [&'static str])> {
-    let names: Vec<String> = std::env::args()
+/// The rows named on the command line (none: all).
+fn names() -> Vec<String> {
+    std::env::args()
         .skip(1)
         .filter(|a| !a.starts_with("--"))
-        .collect();
+        .collect()
+}
+
+/// The learners whose rows are run: those named on the command line, or all.
+fn chosen() -> Vec<(&'static str, &'static str, &'static [&'static str])> {
+    let names = names();
     LEARNERS
         .into_iter()
         .filter(|(label, ..)| names.is_empty() || names.iter().any(|n| n == label))
@@ -147,13 +156,25 @@ fn chosen() -> Vec<(&'static str, &'static str, &'static [&'static str])> {
 
 fn main() {
     let learners = chosen();
+    if !learners.is_empty() {
+        print_recoveries(&learners);
+    }
+    let names = names();
+    if names.is_empty() || names.iter().any(|n| n == during_moves::LABEL) {
+        println!();
+        during_moves::print(&SEEDS);
+    }
+}
+
+/// The tables of recovery after each event and of the runs without one, for `learners`.
+fn print_recoveries(learners: &[(&str, &str, &[&str])]) {
     let trials = TRIALS.to_string();
     println!("| event at trial {EVENT_TRIAL} | learner | 4-step before (mm) | recovered after (trials to 1.5×) | detected after (trials) | merges abs,rel,starved | 4-step last 500 (mm) |");
     println!("|---|---|---|---|---|---|---|");
     for (name, event) in SCENARIOS {
         // (A data folder per scenario: a method's folder holds at most 36 runs.)
         let data = tempfile::tempdir().expect("a temporary data folder");
-        for &(label, config, sets) in &learners {
+        for &(label, config, sets) in learners {
             let runs: Vec<Recovery> = SEEDS
                 .iter()
                 .map(|seed| {

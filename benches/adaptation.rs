@@ -145,9 +145,8 @@ fn names() -> Vec<String> {
         .collect()
 }
 
-/// The learners whose rows are run: those named on the command line, or all.
-fn chosen() -> Vec<(&'static str, &'static str, &'static [&'static str])> {
-    let names = names();
+/// The learners whose rows are run: those in `names`, or all if it is empty.
+fn chosen(names: &[String]) -> Vec<(&'static str, &'static str, &'static [&'static str])> {
     LEARNERS
         .into_iter()
         .filter(|(label, ..)| names.is_empty() || names.iter().any(|n| n == label))
@@ -155,11 +154,11 @@ fn chosen() -> Vec<(&'static str, &'static str, &'static [&'static str])> {
 }
 
 fn main() {
-    let learners = chosen();
+    let names = names();
+    let learners = chosen(&names);
     if !learners.is_empty() {
         print_recoveries(&learners);
     }
-    let names = names();
     if names.is_empty() || names.iter().any(|n| n == during_moves::LABEL) {
         println!();
         during_moves::print(&SEEDS);

@@ -197,6 +197,10 @@ config_entries! {
     /// fit a correction of the camera readings from the patterns since the change) or
     /// forget (drop what was learned before the change, cut what stays starved).
     change_recovery: ChangeRecovery = ChangeRecovery::Correct, "", NESTED, Rule::Any;
+    /// change_recovery correct: patterns since a change its correction of the readings is
+    /// fitted from before it is fixed and the tree learns again (at least 30, the patterns
+    /// from which queries go through it; lin8's config sets 1200).
+    change_fit_patterns: usize = 300, "", NESTED, AtLeast(30.0);
     /// The error of each tree level is averaged over this many patterns.
     monitor_ave: usize = 100, "", PERCEPTRONS, Within(1.0, 1e7);
     /// Kept from the study's config, whose author did not know its use.

@@ -176,6 +176,7 @@ fn change_settings(config: &Config) -> ChangeSettings {
         grace: config.change_grace,
         min_fresh: config.change_min_fresh,
         recovery: config.change_recovery,
+        fit_patterns: config.change_fit_patterns,
     }
 }
 

@@ -17,6 +17,9 @@ pub struct ChangeSettings {
     /// What a nested learner does at an alarm (`change_recovery`); by default it corrects
     /// the readings.
     pub recovery: ChangeRecovery,
+    /// Under `correct`: patterns since a change its correction is fitted from before it is
+    /// fixed and the tree learns again (`change_fit_patterns`); 300 by default.
+    pub fit_patterns: usize,
 }
 
 /// What a nested learner does when a change is detected (the config's `change_recovery`).
@@ -38,6 +41,7 @@ impl Default for ChangeSettings {
             grace: 200,
             min_fresh: 20,
             recovery: ChangeRecovery::Correct,
+            fit_patterns: 300,
         }
     }
 }

@@ -5,8 +5,8 @@
 //! At an alarm the patterns stored since the estimated change (learned before it was
 //! found) seed the fit. From then on the tree learns nothing while the correction is fitted:
 //! each trial's patterns join the fit, which is redone after the trial, and queries are
-//! answered through it as soon as [`FIT_FROM`] patterns are in. Once [`FIT_PATTERNS`] are,
-//! the correction is fixed, the patterns that came after the alarm are trained through it,
+//! answered through it as soon as [`FIT_FROM`] patterns are in. Once `change_fit_patterns`
+//! are, the correction is fixed, the patterns that came after the alarm are trained through it,
 //! and every later pattern and query goes through it: the tree goes on learning, in the
 //! readings it knows, and what the correction misses it learns as it would any new
 //! pattern. A later change adds a correction on top of those before it.
@@ -18,14 +18,14 @@ use nalgebra::SVector;
 
 /// Patterns since a change before queries are answered through its correction.
 pub(crate) const FIT_FROM: usize = 30;
-/// Patterns since a change the correction is fitted from before it is fixed.
-pub(crate) const FIT_PATTERNS: usize = 600;
 
 /// The corrections fixed so far, applied in order, and the one being fitted.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone)]
 pub(crate) struct Corrections<const N: usize> {
     fixed: Vec<ReadingCorrection<N>>,
     fitting: Option<Fitting<N>>,
+    /// Patterns since a change its correction is fitted from before it is fixed.
+    fit_patterns: usize,
 }
 
 /// A correction being fitted, and its patterns (in the readings of the fixed corrections).
@@ -38,6 +38,15 @@ struct Fitting<const N: usize> {
 }
 
 impl<const N: usize> Corrections<N> {
+    /// No correction yet; each will be fixed once fitted from `fit_patterns` patterns.
+    pub(crate) fn new(fit_patterns: usize) -> Self {
+        Corrections {
+            fixed: Vec::new(),
+            fitting: None,
+            fit_patterns,
+        }
+    }
+
     /// Whether a correction is being fitted: the tree must learn nothing meanwhile.
     pub(crate) fn fitting(&self) -> bool {
         self.fitting.is_some()
@@ -93,7 +102,7 @@ impl<const N: usize> Corrections<N> {
     }
 
     /// After a trial: fits the correction to the patterns since the change by `answer`
-    /// (the tree's). Once there are [`FIT_PATTERNS`], fixes it and returns the patterns
+    /// (the tree's). Once there are `fit_patterns`, fixes it and returns the patterns
     /// from after the alarm, through it, for the tree to learn.
     pub(crate) fn refit(
         &mut self,
@@ -105,7 +114,7 @@ impl<const N: usize> Corrections<N> {
         if f.patterns.len() >= FIT_FROM {
             f.correction.fit(&f.patterns, answer);
         }
-        if f.patterns.len() < FIT_PATTERNS {
+        if f.patterns.len() < self.fit_patterns {
             return Vec::new();
         }
         let Fitting {

@@ -86,7 +86,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
             watch,
             min_fresh: settings.change.min_fresh,
             recovery: settings.change.recovery,
-            corrections: Corrections::default(),
+            corrections: Corrections::new(settings.change.fit_patterns),
             failed: None,
         })
     }

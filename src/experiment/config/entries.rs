@@ -201,6 +201,10 @@ config_entries! {
     /// fitted from before it is fixed and the tree learns again (at least 30, the patterns
     /// from which queries go through it; lin8's config sets 1200).
     change_fit_patterns: usize = 300, "", NESTED, AtLeast(30.0);
+    /// change_recovery correct: stored patterns a sub-box needs before it is split off once
+    /// a correction is fixed (the changed robot works where the tree is still coarse; never
+    /// more than min_pats_for_split).
+    change_split_patterns: usize = 20, "", NESTED, Within(1.0, 1e6);
     /// The error of each tree level is averaged over this many patterns.
     monitor_ave: usize = 100, "", PERCEPTRONS, Within(1.0, 1e7);
     /// Kept from the study's config, whose author did not know its use.

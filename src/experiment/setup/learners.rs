@@ -177,6 +177,7 @@ fn change_settings(config: &Config) -> ChangeSettings {
         min_fresh: config.change_min_fresh,
         recovery: config.change_recovery,
         fit_patterns: config.change_fit_patterns,
+        split_patterns: config.change_split_patterns,
     }
 }
 

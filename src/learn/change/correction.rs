@@ -16,19 +16,31 @@
 //! its answers (a node's perceptron is linear in them, so a small step gives its slope
 //! exactly). Misses are weighed relative to the size of each move (as the change watch
 //! weighs them), so the small final moves of a trial, which set its precision, count as
-//! much as its first long one.
+//! much as its first long one. The fit is robust: each pattern's weight is further divided
+//! by 1 + (r/s)², r its weighed miss and s the misses' spread (1.4826 × their median), and
+//! the weights are made anew at every iteration. The patterns that come before the alarm
+//! come from trials in which the old tree lost its way; some of them lie where the tree is
+//! poor in any case, and their misses would pull a plain least-squares fit off the change
+//! (docs/ADAPTATION.md).
 
 use crate::learn::Pattern;
 use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
 
 /// Numbers in the correction: one 3×3 matrix.
 const PARAMETERS: usize = 9;
-/// Gauss–Newton iterations per fit.
-const ITERATIONS: usize = 3;
+/// Gauss–Newton iterations per fit (with the robust weights made anew at each: ten let
+/// them settle; three left some fits short of it).
+const ITERATIONS: usize = 10;
 /// Moves below this (degrees) are weighed as if they were this long.
 const MIN_MOVE_DEG: f64 = 0.1;
 /// The finite-difference step, as a share of a reading input's range.
 const STEP_SHARE: f64 = 1e-6;
+/// A miss of this many spreads halves its pattern's weight (the width of the Cauchy
+/// weights of the robust fit).
+const CAUCHY_WIDTH: f64 = 1.0;
+/// The spread of normal misses per unit of their median (the median absolute deviation's
+/// factor).
+const SPREAD_PER_MEDIAN: f64 = 1.4826;
 /// Ridge on the normal equations, as a share of their mean diagonal: keeps a fit from few
 /// or alike patterns from wandering off along what they cannot tell apart.
 const RIDGE_SHARE: f64 = 1e-6;
@@ -101,7 +113,8 @@ impl<const N: usize> ReadingCorrection<N> {
     }
 
     /// JᵀWJ and JᵀWr of the patterns at the current correction (J: the corrected answers'
-    /// change with the 9 numbers, W: each move's weight).
+    /// change with the 9 numbers, W: each move's weight, lowered for misses far beyond
+    /// the spread of the others).
     fn normal_equations(
         &self,
         patterns: &[Pattern<N>],
@@ -112,13 +125,22 @@ impl<const N: usize> ReadingCorrection<N> {
     ) {
         let mut normal = SMatrix::<f64, PARAMETERS, PARAMETERS>::zeros();
         let mut rhs = SVector::<f64, PARAMETERS>::zeros();
-        for pattern in patterns {
+        let misses: Vec<(Vector3<f64>, f64)> = patterns
+            .iter()
+            .map(|p| {
+                let corrected = self.apply(&p.input);
+                let answered = answer(&corrected);
+                (answered, weight(p).sqrt() * (p.target - answered).norm())
+            })
+            .collect();
+        let width = CAUCHY_WIDTH * spread(misses.iter().map(|&(_, miss)| miss));
+        for (pattern, (answered, miss)) in patterns.iter().zip(&misses) {
             let corrected = self.apply(&pattern.input);
-            let answered = answer(&corrected);
             let residual = pattern.target - answered;
-            let jacobian = self.jacobian(pattern, &corrected, &answered, answer);
-            normal += weight(pattern) * jacobian.transpose() * jacobian;
-            rhs += weight(pattern) * jacobian.transpose() * residual;
+            let jacobian = self.jacobian(pattern, &corrected, answered, answer);
+            let w = weight(pattern) / (1.0 + (miss / width).powi(2));
+            normal += w * jacobian.transpose() * jacobian;
+            rhs += w * jacobian.transpose() * residual;
         }
         (normal, rhs)
     }
@@ -163,6 +185,15 @@ impl<const N: usize> ReadingCorrection<N> {
 /// A pattern's weight: its miss counts relative to the size of its move.
 fn weight<const N: usize>(pattern: &Pattern<N>) -> f64 {
     pattern.target.norm().max(MIN_MOVE_DEG).powi(-2)
+}
+
+/// The spread of `misses` (SPREAD_PER_MEDIAN × their median), kept above zero so that
+/// patterns met exactly keep a finite weight.
+fn spread(misses: impl Iterator<Item = f64>) -> f64 {
+    let mut sorted: Vec<f64> = misses.collect();
+    sorted.sort_by(f64::total_cmp);
+    let median = sorted.get(sorted.len() / 2).copied().unwrap_or(0.0);
+    (SPREAD_PER_MEDIAN * median).max(f64::MIN_POSITIVE)
 }
 
 /// The first input of each reading: 2, then 5 for a second one.
@@ -256,6 +287,29 @@ mod tests {
         correction.fit(&data, learned);
         let after = correction.miss(&data, learned);
         assert!(after < 1e-12 * before, "{before} → {after}");
+    }
+
+    #[test]
+    fn a_turned_camera_is_carried_back_past_patterns_the_tree_misses() {
+        let turn = Rotation2::new(30f64.to_radians());
+        let mut data = patterns(|c, _, _| {
+            let xy = turn * nalgebra::Vector2::new(c.x, c.y);
+            Vector3::new(xy.x, xy.y, c.z)
+        });
+        // One pattern in five lies where the tree is poor: its move is half again as long
+        // as the tree would answer.
+        for pattern in data.iter_mut().step_by(5) {
+            pattern.target *= 1.5;
+        }
+        let (low, high) = box_corners();
+        let mut correction = ReadingCorrection::identity(&low, &high);
+        correction.fit(&data, learned);
+        let back = correction.matrix();
+        let expected = turn.inverse();
+        let off = (back[(0, 0)] - expected[(0, 0)])
+            .abs()
+            .max((back[(0, 1)] - expected[(0, 1)]).abs());
+        assert!(off < 0.01, "{back}");
     }
 
     #[test]

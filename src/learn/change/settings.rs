@@ -20,6 +20,10 @@ pub struct ChangeSettings {
     /// Under `correct`: patterns since a change its correction is fitted from before it is
     /// fixed and the tree learns again (`change_fit_patterns`); 300 by default.
     pub fit_patterns: usize,
+    /// Under `correct`: stored patterns a sub-box needs before it is split off once a
+    /// correction is fixed (`change_split_patterns`; never more than the tree's own
+    /// `min_pats_for_split`); 20 by default.
+    pub split_patterns: usize,
 }
 
 /// What a nested learner does when a change is detected (the config's `change_recovery`).
@@ -42,6 +46,7 @@ impl Default for ChangeSettings {
             min_fresh: 20,
             recovery: ChangeRecovery::Correct,
             fit_patterns: 300,
+            split_patterns: 20,
         }
     }
 }

@@ -9,7 +9,9 @@
 //! are, the correction is fixed, the patterns that came after the alarm are trained through it,
 //! and every later pattern and query goes through it: the tree goes on learning, in the
 //! readings it knows, and what the correction misses it learns as it would any new
-//! pattern. A later change adds a correction on top of those before it.
+//! pattern, splitting sub-boxes off at `change_split_patterns` stored patterns from then on
+//! (the changed robot works in poses the tree covers only coarsely). A later change adds a
+//! correction on top of those before it.
 
 use super::{Approximator, BranchRule, NestedTree};
 use crate::learn::change::ReadingCorrection;
@@ -103,19 +105,18 @@ impl<const N: usize> Corrections<N> {
 
     /// After a trial: fits the correction to the patterns since the change by `answer`
     /// (the tree's). Once there are `fit_patterns`, fixes it and returns the patterns
-    /// from after the alarm, through it, for the tree to learn.
+    /// from after the alarm, through it, for the tree to learn (`None` while it is not
+    /// fixed).
     pub(crate) fn refit(
         &mut self,
         answer: impl Fn(&SVector<f64, N>) -> nalgebra::Vector3<f64>,
-    ) -> Vec<Pattern<N>> {
-        let Some(f) = &mut self.fitting else {
-            return Vec::new();
-        };
+    ) -> Option<Vec<Pattern<N>>> {
+        let f = self.fitting.as_mut()?;
         if f.patterns.len() >= FIT_FROM {
             f.correction.fit(&f.patterns, answer);
         }
         if f.patterns.len() < self.fit_patterns {
-            return Vec::new();
+            return None;
         }
         let Fitting {
             correction,
@@ -130,7 +131,7 @@ impl<const N: usize> Corrections<N> {
             })
             .collect();
         self.fixed.push(correction);
-        fresh
+        Some(fresh)
     }
 }
 
@@ -149,6 +150,13 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             }
         }
         Ok(since)
+    }
+
+    /// From now on a sub-box is split off once it holds `patterns` stored patterns, if that
+    /// is sooner than before.
+    pub(crate) fn split_sooner(&mut self, patterns: usize) {
+        let split = &mut self.settings.min_pats_for_split;
+        *split = (*split).min(patterns);
     }
 
     /// The corners of the root's box.

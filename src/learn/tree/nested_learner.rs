@@ -45,6 +45,8 @@ pub struct NestedLearner<A, R, const N: usize> {
     min_fresh: usize,
     /// `change_recovery`: what an alarm does.
     recovery: ChangeRecovery,
+    /// `change_split_patterns`: the tree's split threshold once a correction is fixed.
+    split_patterns: usize,
     /// The corrections of the readings fitted after alarms (`change_recovery correct`).
     corrections: Corrections<N>,
     /// A pattern file that failed while recovering before a trial; reported by the next
@@ -86,6 +88,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
             watch,
             min_fresh: settings.change.min_fresh,
             recovery: settings.change.recovery,
+            split_patterns: settings.change.split_patterns,
             corrections: Corrections::new(settings.change.fit_patterns),
             failed: None,
         })
@@ -128,8 +131,11 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
             watch.no_pattern();
         }
         let tree = &self.tree;
-        for pattern in self.corrections.refit(|x| tree.answer(x)) {
-            self.train(&pattern, false)?;
+        if let Some(fresh) = self.corrections.refit(|x| tree.answer(x)) {
+            self.tree.split_sooner(self.split_patterns);
+            for pattern in fresh {
+                self.train(&pattern, false)?;
+            }
         }
         self.tree.retrain_due().map(drop)
     }

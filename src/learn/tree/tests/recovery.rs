@@ -167,3 +167,30 @@ fn subtrees_starved_of_new_patterns_are_cut_and_booked_unless_their_stale_fits_d
         assert_nothing_older_than(&mut t, cutoff);
     }
 }
+
+#[test]
+fn once_a_correction_is_fixed_a_sub_box_is_split_off_sooner_never_later() {
+    let mut settings = still(3);
+    settings.min_pats_for_split = 50;
+    settings.split_error = 0.0;
+    let mut t = tree(settings);
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    // Every pattern in the root's sub-box 0 ([0, 4)⁵): 30 are not enough to split it.
+    let mut train_low = |t: &mut Tree, n: usize| -> Vec<TreeEvent> {
+        (0..n)
+            .map(|_| {
+                let input = random_pattern(&mut rng).input / 2.0;
+                t.train(&Pattern {
+                    input,
+                    target: mapping(&input),
+                })
+                .unwrap()
+            })
+            .collect()
+    };
+    assert!(!train_low(&mut t, 30).contains(&TreeEvent::Split));
+    t.split_sooner(80);
+    assert!(!train_low(&mut t, 10).contains(&TreeEvent::Split));
+    t.split_sooner(20);
+    assert_eq!(train_low(&mut t, 1), [TreeEvent::Split]);
+}

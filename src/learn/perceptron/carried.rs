@@ -45,6 +45,18 @@ impl<const M: usize> CarriedFit<M> {
         }
     }
 
+    /// The leverage zᵀ P z of an input z (with its trailing 1): how strongly a pattern
+    /// there would pull the fit. Every pattern of the set has a leverage of at most 1.
+    pub(super) fn leverage(&self, z: &SVector<f64, M>) -> f64 {
+        let z = &z.data.0[0];
+        let mut sum = 0.0;
+        for (i, row) in self.inverse.iter().enumerate() {
+            let pz: f64 = row.iter().zip(z).map(|(p, zj)| p * zj).sum();
+            sum += z[i] * pz;
+        }
+        sum
+    }
+
     /// Takes pattern (z, t) into `weights`, the least-squares fit of the set before it;
     /// afterwards they are the fit of the set with it. False, and nothing changed, when the
     /// update's numbers are not trustworthy (see the module doc): the fit must be solved

@@ -32,6 +32,12 @@ use std::collections::VecDeque;
 use std::ops::Range;
 use sums::NormalSums;
 
+/// The highest leverage zᵀ(Σ z zᵀ)⁻¹z of an input at which a fit supports it: the answer's
+/// variance there is at most this many times a single pattern's. (The set's own patterns
+/// never exceed 1; after a change, 1 kept lin5 from young nodes it needed, 10 let lin8's
+/// run far off: docs/ADAPTATION.md.)
+const MAX_LEVERAGE: f64 = 3.0;
+
 /// A perceptron over `N` inputs; `M` = N + 1 (the inputs and a constant).
 #[derive(Debug, Clone)]
 pub struct Perceptron<const N: usize, const M: usize> {
@@ -151,6 +157,14 @@ impl<const N: usize, const M: usize> Approximator<N> for Perceptron<N, M> {
 
     fn answer(&self, input: &SVector<f64, N>) -> Option<Vector3<f64>> {
         self.weights.map(|w| w * Self::augmented(input))
+    }
+
+    /// True unless the fit is carried (its inverse at hand) and `input`'s leverage is above
+    /// [`MAX_LEVERAGE`].
+    fn supports(&self, input: &SVector<f64, N>) -> bool {
+        self.carried
+            .as_ref()
+            .is_none_or(|c| c.leverage(&Self::augmented(input)) <= MAX_LEVERAGE)
     }
 
     fn stale_answer(&self, input: &SVector<f64, N>) -> Option<Vector3<f64>> {

@@ -244,3 +244,23 @@ fn a_change_drops_every_set_that_holds_an_older_pattern() {
     train_numbered(&mut p, &new, 800..1000, &mut rng);
     assert_eq!(p.stagger.counts(), [240, 40, 0, 0, 0]);
 }
+
+#[test]
+fn a_fit_supports_the_inputs_among_its_patterns_not_those_far_beyond() {
+    let mut rng = ChaCha8Rng::seed_from_u64(12);
+    let map = random_map(&mut rng);
+    // Patterns spread over the whole box: every input in it is supported.
+    let mut p = P5::new(sets(5, 1000));
+    train(&mut p, &map, 200, &mut rng);
+    assert!(p.supports(&SVector::repeat(1.0)) && p.supports(&SVector::repeat(-1.0)));
+    // 40 patterns in the middle tenth of the box: the middle is supported, a corner is not.
+    let mut q = P5::new(sets(5, 1000));
+    for _ in 0..40 {
+        let u = random_input::<5>(&mut rng) * 0.1;
+        q.add(&u, &apply(&map, &u), 0);
+    }
+    q.refit();
+    assert!(q.supports(&SVector::zeros()));
+    assert!(q.supports(&SVector::repeat(0.05)));
+    assert!(!q.supports(&SVector::repeat(1.0)));
+}

@@ -35,6 +35,13 @@ pub(crate) trait Approximator<const N: usize>: Clone + std::fmt::Debug {
     /// patterns, a singular fit). Never NaN or infinite for a finite input.
     fn answer(&self, input: &SVector<f64, N>) -> Option<Vector3<f64>>;
 
+    /// Whether the model's fit at `input` is backed by the patterns it was fitted to rather
+    /// than an extrapolation beyond them (true by default, and whenever the model cannot
+    /// tell).
+    fn supports(&self, _input: &SVector<f64, N>) -> bool {
+        true
+    }
+
     /// Forgets what came from patterns numbered below `cutoff` (the mapping changed there),
     /// if the model can tell them apart. True when it started over and must be given the
     /// stored patterns from `cutoff` on again; by default nothing is forgotten (a re-trained

@@ -10,8 +10,9 @@
 //! and every later pattern and query goes through it: the tree goes on learning, in the
 //! readings it knows, and what the correction misses it learns as it would any new
 //! pattern, splitting sub-boxes off at `change_split_patterns` stored patterns from then on
-//! (the changed robot works in poses the tree covers only coarsely). A later change adds a
-//! correction on top of those before it.
+//! (the changed robot works in poses the tree covers only coarsely) and answering a query
+//! only from nodes whose fit supports it. A later change adds a correction on top of those
+//! before it.
 
 use super::{Approximator, BranchRule, NestedTree};
 use crate::learn::change::ReadingCorrection;
@@ -152,11 +153,15 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         Ok(since)
     }
 
-    /// From now on a sub-box is split off once it holds `patterns` stored patterns, if that
-    /// is sooner than before.
-    pub(crate) fn split_sooner(&mut self, patterns: usize) {
+    /// Once a correction is fixed the tree learns a changed robot, which works in poses the
+    /// tree covers only coarsely: from then on a sub-box is split off once it holds
+    /// `split_patterns` stored patterns (if that is sooner than before), and, since a node
+    /// split off from so few patterns may fit them in a way that runs far off between and
+    /// beyond them, a query is answered by the deepest node whose fit supports it.
+    pub(crate) fn after_correction(&mut self, split_patterns: usize) {
         let split = &mut self.settings.min_pats_for_split;
-        *split = (*split).min(patterns);
+        *split = (*split).min(split_patterns);
+        self.supported_answers = true;
     }
 
     /// The corners of the root's box.

@@ -132,7 +132,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
         }
         let tree = &self.tree;
         if let Some(fresh) = self.corrections.refit(|x| tree.answer(x)) {
-            self.tree.split_sooner(self.split_patterns);
+            self.tree.after_correction(self.split_patterns);
             for pattern in fresh {
                 self.train(&pattern, false)?;
             }

@@ -68,6 +68,9 @@ pub(crate) struct NestedTree<A, R, const N: usize> {
     pub(super) journal: Journal,
     pub(super) recovery: RecoveryState,
     pub(super) retraining: Retraining<N>,
+    /// Whether a query skips nodes whose fit does not support it (see
+    /// [`after_correction`](Self::after_correction)).
+    pub(super) supported_answers: bool,
     /// Reused by subtree walks.
     pub(super) scratch: Vec<u32>,
 }
@@ -101,6 +104,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             journal: Journal::default(),
             recovery: RecoveryState::default(),
             retraining: Retraining::default(),
+            supported_answers: false,
             scratch: Vec::new(),
         };
         tree.plant_root();
@@ -109,12 +113,16 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
 
     /// Δθ at `x`: the answer of the deepest node on its path that has one; zero if none
     /// has. Always finite. (After a detected change, a node awaiting new patterns answers
-    /// from its stale fit if that has done better than deferring.)
+    /// from its stale fit if that has done better than deferring; once a correction is
+    /// fixed, only nodes whose fit supports `x` answer, and the root in any case.)
     pub(crate) fn answer(&self, x: &SVector<f64, N>) -> Vector3<f64> {
         let path = self.descend(self.rule.key(x, self.settings.max_depth));
         path.nodes()
             .iter()
             .rev()
+            .filter(|&&id| {
+                !self.supported_answers || id == ROOT || self.nodes[id as usize].supports(x)
+            })
             .find_map(|&id| self.nodes[id as usize].answer_or_stale(x, &self.recovery.verdict))
             .unwrap_or_else(Vector3::zeros)
     }

@@ -107,6 +107,11 @@ impl<A: Approximator<N>, const N: usize> Node<A, N> {
             .filter(|o| o.iter().all(|v| v.is_finite()))
     }
 
+    /// Whether the node's fit is backed by its patterns at global input `x`.
+    pub(super) fn supports(&self, x: &SVector<f64, N>) -> bool {
+        self.model.supports(&self.region.local(x))
+    }
+
     /// While the node awaits patterns from after a change: its model's fit from before
     /// the change at global input `x`, if it kept one.
     pub(super) fn stale_answer(&self, x: &SVector<f64, N>) -> Option<Vector3<f64>> {

@@ -189,8 +189,50 @@ fn once_a_correction_is_fixed_a_sub_box_is_split_off_sooner_never_later() {
             .collect()
     };
     assert!(!train_low(&mut t, 30).contains(&TreeEvent::Split));
-    t.split_sooner(80);
+    t.after_correction(80);
     assert!(!train_low(&mut t, 10).contains(&TreeEvent::Split));
-    t.split_sooner(20);
+    t.after_correction(20);
     assert_eq!(train_low(&mut t, 1), [TreeEvent::Split]);
+}
+
+#[test]
+fn once_a_correction_is_fixed_a_query_beyond_a_nodes_patterns_goes_to_its_ancestor() {
+    let mut t = tree(still(5));
+    let mut rng = ChaCha8Rng::seed_from_u64(9);
+    // The root's patterns spread over its upper half-box and a corner of the lower one;
+    // the root's sub-box 0 ([0, 4)⁵) holds only that corner ([0, 1)⁵).
+    for i in 0..400 {
+        let u = random_pattern(&mut rng).input;
+        let input = if i % 2 == 0 {
+            u / 8.0
+        } else {
+            u / 2.0 + SVector::repeat(4.0)
+        };
+        t.train(&Pattern {
+            input,
+            target: mapping(&input),
+        })
+        .unwrap();
+    }
+    let child = t.split(ROOT, 0).unwrap();
+    let far = SVector::repeat(3.9);
+    let near = SVector::repeat(0.5);
+    let child_answer = t.nodes[child as usize]
+        .answer(&far)
+        .expect("the child has a fit");
+    let root_answer = t.nodes[ROOT as usize].answer(&far).unwrap();
+    assert_ne!(child_answer, root_answer);
+    assert_eq!(t.answer(&far), child_answer);
+    t.after_correction(20);
+    assert_eq!(
+        t.answer(&far),
+        root_answer,
+        "the child's fit does not reach that far"
+    );
+    let near_answer = t.nodes[child as usize].answer(&near).unwrap();
+    assert_eq!(
+        t.answer(&near),
+        near_answer,
+        "among its patterns the child answers"
+    );
 }

@@ -2,8 +2,12 @@
 //! correct`): the tree is kept as it was, and a [`ReadingCorrection`] fitted from the
 //! patterns since the change carries the new readings back to the ones it learned.
 //!
-//! At an alarm the patterns stored since the estimated change (learned before it was
-//! found) seed the fit. From then on the tree learns nothing while the correction is fitted:
+//! At an alarm the patterns of the trials since the estimated change (learned before it was
+//! found) that end near the centre seed the fit: those whose later pose reads at most
+//! [`SEED_SHARE`] of the earlier one's. Before the alarm the old tree lost its way; a pair
+//! that ends far off is where the old tree is poor in any case, or (its adjusted form) only
+//! a first-order estimate, and when frames during moves are learned such pairs are most of
+//! a trial's and pulled the fit of a 30° turn to 17°. From then on the tree learns nothing while the correction is fitted:
 //! each trial's patterns join the fit, which is redone after the trial, and queries are
 //! answered through it as soon as [`FIT_FROM`] patterns are in. Once `change_fit_patterns`
 //! are, the correction is fixed, the patterns that came after the alarm are trained through it,
@@ -16,11 +20,19 @@
 
 use super::{Approximator, BranchRule, NestedTree};
 use crate::learn::change::ReadingCorrection;
-use crate::learn::{LearnError, Pattern};
+use crate::learn::{Observation, Pattern};
 use nalgebra::SVector;
+use std::collections::VecDeque;
 
 /// Patterns since a change before queries are answered through its correction.
 pub(crate) const FIT_FROM: usize = 30;
+/// A pattern of a trial before the alarm seeds the fit if its later pose reads at most this
+/// share of its earlier one's (seeds 1–8, with frames during moves and without:
+/// docs/ADAPTATION.md).
+const SEED_SHARE: f64 = 0.05;
+/// Trials whose seeds are kept: an alarm dates a change within its run of positive sums,
+/// which for every event measured began at most 46 trials before it.
+const SEED_TRIALS: usize = 200;
 
 /// The corrections fixed so far, applied in order, and the one being fitted.
 #[derive(Debug, Clone)]
@@ -29,6 +41,8 @@ pub(crate) struct Corrections<const N: usize> {
     fitting: Option<Fitting<N>>,
     /// Patterns since a change its correction is fitted from before it is fixed.
     fit_patterns: usize,
+    /// The seeds of the recent trials, with their trial, oldest first.
+    seeds: VecDeque<(usize, Pattern<N>)>,
 }
 
 /// A correction being fitted, and its patterns (in the readings of the fixed corrections).
@@ -47,6 +61,28 @@ impl<const N: usize> Corrections<N> {
             fixed: Vec::new(),
             fitting: None,
             fit_patterns,
+            seeds: VecDeque::new(),
+        }
+    }
+
+    /// Keeps `pattern`, made of the pose pair (`from`, `to`) of trial `trial`, as a seed of
+    /// a later fit if it ends near the centre; forgets the seeds of trials too old to seed
+    /// one.
+    pub(crate) fn remember(
+        &mut self,
+        trial: usize,
+        (from, to): (&Observation, &Observation),
+        pattern: &Pattern<N>,
+    ) {
+        while self
+            .seeds
+            .front()
+            .is_some_and(|&(t, _)| t + SEED_TRIALS <= trial)
+        {
+            self.seeds.pop_front();
+        }
+        if to.c.norm() <= SEED_SHARE * from.c.norm() {
+            self.seeds.push_back((trial, *pattern));
         }
     }
 
@@ -77,15 +113,21 @@ impl<const N: usize> Corrections<N> {
         }
     }
 
-    /// Starts fitting a correction for a change, from the patterns `since` it that the tree
-    /// stored (already in the fixed corrections' readings). A correction still being
-    /// fitted is dropped: the change it was for is part of this one.
+    /// Starts fitting a correction for a change at trial `changed_at`, seeded by the kept
+    /// patterns of the trials since then. A correction still being fitted is dropped: the
+    /// change it was for is part of this one.
     pub(crate) fn start(
         &mut self,
-        since: Vec<Pattern<N>>,
+        changed_at: usize,
         low: &SVector<f64, N>,
         high: &SVector<f64, N>,
     ) {
+        let since: Vec<Pattern<N>> = self
+            .seeds
+            .iter()
+            .filter(|&&(t, _)| t >= changed_at)
+            .map(|(_, p)| self.pattern(p))
+            .collect();
         self.fitting = Some(Fitting {
             correction: ReadingCorrection::identity(low, high),
             learned: since.len(),
@@ -137,22 +179,6 @@ impl<const N: usize> Corrections<N> {
 }
 
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
-    /// Copies of the stored patterns numbered `cutoff` or later.
-    pub(crate) fn stored_since(&mut self, cutoff: u64) -> Result<Vec<Pattern<N>>, LearnError> {
-        let mut since = Vec::new();
-        for id in self.reachable() {
-            for i in 0..self.nodes[id as usize].bins.len() {
-                let bin = self.nodes[id as usize].bins[i];
-                self.bins.for_each_pattern(bin, |pattern, seq| {
-                    if seq >= cutoff {
-                        since.push(*pattern);
-                    }
-                })?;
-            }
-        }
-        Ok(since)
-    }
-
     /// Once a correction is fixed the tree learns a changed robot, which works in poses the
     /// tree covers only coarsely: from then on a sub-box is split off once it holds
     /// `split_patterns` stored patterns (if that is sooner than before), and, since a node
@@ -168,5 +194,54 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     pub(crate) fn root_box(&self) -> (SVector<f64, N>, SVector<f64, N>) {
         let region = &self.nodes[super::ROOT as usize].region;
         (region.low(), region.high())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector3;
+
+    fn pose(c: f64) -> Observation {
+        Observation {
+            theta_deg: Vector3::new(0.0, 30.0, 60.0),
+            c: Vector3::new(c, 0.0, 0.0),
+        }
+    }
+
+    fn pattern(x: f64) -> Pattern<5> {
+        Pattern {
+            input: SVector::from([30.0, 60.0, x, 0.0, 0.0]),
+            target: Vector3::new(x, 0.0, 0.0),
+        }
+    }
+
+    fn seeds_from(corrections: &mut Corrections<5>, changed_at: usize) -> Vec<f64> {
+        let bound = SVector::repeat(100.0);
+        corrections.start(changed_at, &-bound, &bound);
+        let fitting = corrections.fitting.as_ref().expect("fitting");
+        assert_eq!(fitting.learned, fitting.patterns.len());
+        fitting.patterns.iter().map(|p| p.input[2]).collect()
+    }
+
+    #[test]
+    fn a_fit_is_seeded_by_the_pairs_since_the_change_that_end_near_the_centre() {
+        let mut corrections = Corrections::<5>::new(300);
+        for trial in 1..=10 {
+            let t = trial as f64;
+            // Ends at 4% of where it started: a seed. Ends at 10%: none.
+            corrections.remember(trial, (&pose(50.0), &pose(2.0)), &pattern(t));
+            corrections.remember(trial, (&pose(50.0), &pose(5.0)), &pattern(-t));
+        }
+        assert_eq!(seeds_from(&mut corrections, 8), [8.0, 9.0, 10.0]);
+    }
+
+    #[test]
+    fn seeds_older_than_any_alarm_could_date_are_forgotten() {
+        let mut corrections = Corrections::<5>::new(300);
+        corrections.remember(1, (&pose(50.0), &pose(0.0)), &pattern(1.0));
+        corrections.remember(SEED_TRIALS, (&pose(50.0), &pose(0.0)), &pattern(2.0));
+        corrections.remember(SEED_TRIALS + 1, (&pose(50.0), &pose(0.0)), &pattern(3.0));
+        assert_eq!(seeds_from(&mut corrections, 0), [2.0, 3.0]);
     }
 }

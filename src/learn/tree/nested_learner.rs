@@ -47,6 +47,8 @@ pub struct NestedLearner<A, R, const N: usize> {
     recovery: ChangeRecovery,
     /// `change_split_patterns`: the tree's split threshold once a correction is fixed.
     split_patterns: usize,
+    /// The trial being learned (see [`Learner::start_trial`]).
+    trial: usize,
     /// The corrections of the readings fitted after alarms (`change_recovery correct`).
     corrections: Corrections<N>,
     /// A pattern file that failed while recovering before a trial; reported by the next
@@ -89,6 +91,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
             min_fresh: settings.change.min_fresh,
             recovery: settings.change.recovery,
             split_patterns: settings.change.split_patterns,
+            trial: 0,
             corrections: Corrections::new(settings.change.fit_patterns),
             failed: None,
         })
@@ -116,10 +119,14 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
         if let Some(error) = self.failed.take() {
             return Err(error);
         }
+        let seeding = self.watch.is_some() && self.recovery == ChangeRecovery::Correct;
         let mut patterns = 0;
         for (from, to) in self.patterns.pairs(path) {
             patterns += 1;
             let pattern = (self.pattern_of)(from, to);
+            if seeding {
+                self.corrections.remember(self.trial, (from, to), &pattern);
+            }
             if self.corrections.fitting() {
                 self.corrections.book(&pattern);
             } else {
@@ -155,6 +162,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
     /// detection, the trial before is weighed first: after a detected change the tree
     /// forgets what came before it, and a grace period later cuts what is still starved.
     fn start_trial(&mut self, trial: usize) {
+        self.trial = trial;
         let Some(watch) = &mut self.watch else {
             return;
         };
@@ -168,7 +176,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
                     .journal
                     .events
                     .push(ModelEvent::Change { estimated_trial });
-                if let Err(error) = self.recover(cutoff) {
+                if let Err(error) = self.recover(estimated_trial, cutoff) {
                     self.failed = Some(error);
                 }
             }
@@ -204,14 +212,13 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
         Ok(())
     }
 
-    /// After an alarm dating the change at pattern number `cutoff`: starts fitting a
-    /// correction, or forgets what came before the change.
-    fn recover(&mut self, cutoff: u64) -> Result<(), LearnError> {
+    /// After an alarm dating the change at trial `changed_at`, pattern number `cutoff`:
+    /// starts fitting a correction, or forgets what came before the change.
+    fn recover(&mut self, changed_at: usize, cutoff: u64) -> Result<(), LearnError> {
         match self.recovery {
             ChangeRecovery::Correct => {
-                let since = self.tree.stored_since(cutoff)?;
                 let (low, high) = self.tree.root_box();
-                self.corrections.start(since, &low, &high);
+                self.corrections.start(changed_at, &low, &high);
             }
             ChangeRecovery::Forget => {
                 self.tree.forget_before(cutoff, self.min_fresh)?;

@@ -74,6 +74,11 @@ impl<const N: usize> ReadingCorrection<N> {
         out
     }
 
+    /// The largest change of an entry of A from `other`'s.
+    pub(crate) fn moved_from(&self, other: &Self) -> f64 {
+        (self.term - other.term).amax()
+    }
+
     /// A.
     fn matrix(&self) -> Matrix3<f64> {
         Matrix3::identity() + self.term

@@ -7,16 +7,16 @@
 //! [`SEED_SHARE`] of the earlier one's. Before the alarm the old tree lost its way; a pair
 //! that ends far off is where the old tree is poor in any case, or (its adjusted form) only
 //! a first-order estimate, and when frames during moves are learned such pairs are most of
-//! a trial's and pulled the fit of a 30° turn to 17°. From then on the tree learns nothing while the correction is fitted:
-//! each trial's patterns join the fit, which is redone after the trial, and queries are
-//! answered through it as soon as [`FIT_FROM`] patterns are in. Once `change_fit_patterns`
-//! are, the correction is fixed, the patterns that came after the alarm are trained through it,
-//! and every later pattern and query goes through it: the tree goes on learning, in the
-//! readings it knows, and what the correction misses it learns as it would any new
-//! pattern, splitting sub-boxes off at `change_split_patterns` stored patterns from then on
-//! (the changed robot works in poses the tree covers only coarsely) and answering a query
-//! only from nodes whose fit supports it. A later change adds a correction on top of those
-//! before it.
+//! a trial's and pulled the fit of a 30° turn to 17°. From then on the tree learns nothing
+//! while the correction is fitted: each trial's patterns join the fit, which is redone after
+//! the trial, and queries are answered through it as soon as [`FIT_FROM`] patterns are in.
+//! Once `change_fit_patterns` are and a refit no longer moves it, the correction is fixed,
+//! the patterns that came after the alarm are trained through it, and every later pattern
+//! and query goes through it: the tree goes on learning, in the readings it knows, and what
+//! the correction misses it learns as it would any new pattern, splitting sub-boxes off at
+//! `change_split_patterns` stored patterns from then on (the changed robot works in poses
+//! the tree covers only coarsely) and answering a query only from nodes whose fit supports
+//! it. A later change adds a correction on top of those before it.
 
 use super::{Approximator, BranchRule, NestedTree};
 use crate::learn::change::ReadingCorrection;
@@ -33,6 +33,13 @@ const SEED_SHARE: f64 = 0.05;
 /// Trials whose seeds are kept: an alarm dates a change within its run of positive sums,
 /// which for every event measured began at most 46 trials before it.
 const SEED_TRIALS: usize = 200;
+/// A correction has settled when a refit moves no entry of A by more than this: only then
+/// is it fixed (lin8 learning during moves fixed a 90° turn at 59° while it still moved,
+/// and never recovered: docs/ADAPTATION.md).
+const SETTLED: f64 = 0.005;
+/// A correction that has not settled is fixed all the same once it has this many times
+/// `change_fit_patterns` patterns.
+const UNSETTLED_LIMIT: usize = 4;
 
 /// The corrections fixed so far, applied in order, and the one being fitted.
 #[derive(Debug, Clone)]
@@ -147,18 +154,22 @@ impl<const N: usize> Corrections<N> {
     }
 
     /// After a trial: fits the correction to the patterns since the change by `answer`
-    /// (the tree's). Once there are `fit_patterns`, fixes it and returns the patterns
-    /// from after the alarm, through it, for the tree to learn (`None` while it is not
-    /// fixed).
+    /// (the tree's). Once there are `fit_patterns` and the fit has settled (or there are
+    /// [`UNSETTLED_LIMIT`] times as many), fixes it and returns the patterns from after the
+    /// alarm, through it, for the tree to learn (`None` while it is not fixed).
     pub(crate) fn refit(
         &mut self,
         answer: impl Fn(&SVector<f64, N>) -> nalgebra::Vector3<f64>,
     ) -> Option<Vec<Pattern<N>>> {
         let f = self.fitting.as_mut()?;
+        let before = f.correction.clone();
         if f.patterns.len() >= FIT_FROM {
             f.correction.fit(&f.patterns, answer);
         }
-        if f.patterns.len() < self.fit_patterns {
+        let settled = f.correction.moved_from(&before) <= SETTLED;
+        if f.patterns.len() < self.fit_patterns
+            || !settled && f.patterns.len() < UNSETTLED_LIMIT * self.fit_patterns
+        {
             return None;
         }
         let Fitting {
@@ -234,6 +245,41 @@ mod tests {
             corrections.remember(trial, (&pose(50.0), &pose(5.0)), &pattern(-t));
         }
         assert_eq!(seeds_from(&mut corrections, 8), [8.0, 9.0, 10.0]);
+    }
+
+    /// A linear tree over lin5's inputs.
+    fn learned(x: &SVector<f64, 5>) -> Vector3<f64> {
+        let w = nalgebra::Matrix3::new(0.02, -0.01, 0.003, 0.015, 0.03, -0.002, 0.001, 0.004, 0.05);
+        w * Vector3::new(x[2], x[3], x[4]) + Vector3::new(0.0, 0.0, 0.01 * x[1])
+    }
+
+    #[test]
+    fn a_correction_is_fixed_only_once_a_refit_no_longer_moves_it() {
+        let turn = nalgebra::Rotation2::new(30f64.to_radians());
+        let mut corrections = Corrections::<5>::new(40);
+        let bound = SVector::repeat(200.0);
+        corrections.start(0, &-bound, &bound);
+        for i in 0..60 {
+            let f = i as f64;
+            let old = SVector::from([
+                f - 30.0,
+                10.0 + f,
+                150.0 * (0.37 * f).sin(),
+                120.0 * (0.61 * f).cos(),
+                40.0 * (0.23 * f).sin(),
+            ]);
+            let xy = turn * nalgebra::Vector2::new(old[2], old[3]);
+            corrections.book(&Pattern {
+                input: SVector::from([old[0], old[1], xy.x, xy.y, old[4]]),
+                target: learned(&old),
+            });
+        }
+        // The first fit carries the turn back from no correction at all: it moved.
+        assert!(corrections.refit(learned).is_none());
+        // The second finds it where it was: fixed, and the 60 patterns come back.
+        let fresh = corrections.refit(learned).expect("fixed");
+        assert_eq!(fresh.len(), 60);
+        assert!(!corrections.fitting());
     }
 
     #[test]

@@ -131,13 +131,7 @@ fn finds_and_dates_a_camera_turn_and_recovers_within_100_trials(event: &str, dur
     assert!((1501..=1510).contains(&raised), "found at trial {raised}");
     assert!(dated.abs_diff(1500) <= 2, "dated to trial {dated}");
     assert_eq!(rows(&folder, "merges"), Vec::<Vec<String>>::new());
-    let trace = FourStepTrace::read(&folder).unwrap();
-    let recovered = trace.recovered_after(1500);
-    assert!(
-        recovered.is_some_and(|t| t <= 100),
-        "within 1.5x of {:?} mm after {recovered:?} trials",
-        trace.level_before(1500)
-    );
+    assert_back_within_100_trials_of_trial_1500(&folder);
 }
 
 #[test]
@@ -297,7 +291,13 @@ fn lin8_learning_during_moves_recovers_from_a_90_degree_turn_within_100_trials()
             config.camera_fps = 30.0;
         },
     );
-    let trace = FourStepTrace::read(&folder).unwrap();
+    assert_back_within_100_trials_of_trial_1500(&folder);
+}
+
+/// The run in `folder` is back within 1.5× its 4-step level within 100 trials of an event at
+/// trial 1500.
+fn assert_back_within_100_trials_of_trial_1500(folder: &Path) {
+    let trace = FourStepTrace::read(folder).unwrap();
     let recovered = trace.recovered_after(1500);
     assert!(
         recovered.is_some_and(|t| t <= 100),

@@ -130,19 +130,19 @@ impl<const N: usize> ReadingCorrection<N> {
     ) {
         let mut normal = SMatrix::<f64, PARAMETERS, PARAMETERS>::zeros();
         let mut rhs = SVector::<f64, PARAMETERS>::zeros();
-        let misses: Vec<(Vector3<f64>, f64)> = patterns
+        let answered: Vec<(SVector<f64, N>, Vector3<f64>, f64)> = patterns
             .iter()
             .map(|p| {
                 let corrected = self.apply(&p.input);
                 let answered = answer(&corrected);
-                (answered, weight(p).sqrt() * (p.target - answered).norm())
+                let miss = weight(p).sqrt() * (p.target - answered).norm();
+                (corrected, answered, miss)
             })
             .collect();
-        let width = CAUCHY_WIDTH * spread(misses.iter().map(|&(_, miss)| miss));
-        for (pattern, (answered, miss)) in patterns.iter().zip(&misses) {
-            let corrected = self.apply(&pattern.input);
+        let width = CAUCHY_WIDTH * spread(answered.iter().map(|&(_, _, miss)| miss));
+        for (pattern, (corrected, answered, miss)) in patterns.iter().zip(&answered) {
             let residual = pattern.target - answered;
-            let jacobian = self.jacobian(pattern, &corrected, answered, answer);
+            let jacobian = self.jacobian(pattern, corrected, answered, answer);
             let w = weight(pattern) / (1.0 + (miss / width).powi(2));
             normal += w * jacobian.transpose() * jacobian;
             rhs += w * jacobian.transpose() * residual;

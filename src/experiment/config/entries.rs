@@ -198,8 +198,9 @@ config_entries! {
     /// forget (drop what was learned before the change, cut what stays starved).
     change_recovery: ChangeRecovery = ChangeRecovery::Correct, "", NESTED, Rule::Any;
     /// change_recovery correct: patterns since a change its correction of the readings is
-    /// fitted from before it is fixed and the tree learns again (at least 30, the patterns
-    /// from which queries go through it; lin8's config sets 1200).
+    /// fitted from before it is fixed, once a refit no longer moves it, and the tree learns
+    /// again (at least 30, the patterns from which queries go through it; lin8's config sets
+    /// 600).
     change_fit_patterns: usize = 300, "", NESTED, AtLeast(30.0);
     /// change_recovery correct: stored patterns a sub-box needs before it is split off once
     /// a correction is fixed (the changed robot works where the tree is still coarse; never

@@ -3,6 +3,7 @@
 //! Every learner implements [`Learner`]; the trial loop only talks to that trait. Each
 //! learner takes its own settings; `experiment::setup` builds the one a run's config names.
 
+mod broyden;
 pub mod change;
 mod error;
 mod ffn;
@@ -26,6 +27,7 @@ mod stats;
 mod synthetic;
 mod tree;
 
+pub use broyden::{Broyden, BroydenSettings, BroydenUpdate, ImageJacobian};
 pub use error::LearnError;
 pub use ffn::{FfnLearner, FfnSettings};
 pub use ik::IkLearner;

@@ -11,7 +11,7 @@ mod declaration;
 mod defaults_text;
 mod entries;
 mod error;
-mod memory;
+mod memory_estimate;
 mod package_paths;
 mod rule;
 mod scope;

@@ -2,7 +2,12 @@
 //! the learner and the trial loop's settings.
 
 mod arm;
+pub(super) mod events;
 mod learners;
+pub(super) mod preflight;
+pub(super) mod run_request;
+pub(super) mod run_setup;
+pub(super) mod start_check;
 
 pub use arm::{
     arm_entry, arm_settings, fit_reach, fitted_boundaries, learned_ranges, load_arm, reach_space,

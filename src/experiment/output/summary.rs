@@ -151,7 +151,7 @@ impl SensorSummary {
             camera_area_noise: config.camera_area_noise,
             joint_noise_deg: config.joint_noise_deg,
             raycast_noise: config.raycast_noise,
-            camera_fps: config.camera_fps,
+            camera_fps: config.camera_frame_rate(),
             camera_latency_ms: config.camera_latency_ms,
             servo_mode: config.servo_mode.to_string(),
         }

@@ -76,12 +76,12 @@ pub fn trial_settings(config: &Config) -> TrialSettings {
             joint_deg: config.joint_noise_deg,
         },
         timing: CameraTiming {
-            fps: config.camera_fps,
+            fps: config.camera_frame_rate(),
             latency: config.camera_latency_ms / 1000.0,
             servo: config.servo_mode,
         },
         move_frames: (config.learn_during_moves == 1).then_some(MoveFrames {
-            fps: config.camera_fps,
+            fps: config.camera_frame_rate(),
             per_move: config.move_frames_learned,
         }),
     }

@@ -11,7 +11,7 @@ pub struct IssgpSettings {
     /// default.
     pub features: usize,
     /// The squared-exponential kernel's length scale of each input (θ2, θ3, cx*, cy*,
-    /// cz*), as a fraction of the input's boundary range; 0.5 each by default.
+    /// cz*), as a fraction of the input's boundary range; 1, 1, 0.5, 0.5, 0.5 by default.
     pub length_scales: [f64; 5],
     /// σn, the noise of a target, in `norm_out` units; 0.01 by default.
     pub noise: f64,
@@ -22,7 +22,7 @@ pub struct IssgpSettings {
     pub forgetting: f64,
     /// True: the answer is anchored at the centred target, g(x) − g(x with cx*, cy*, cz*
     /// = 0), so a centred target gives no move whatever was learned (the features are the
-    /// differences); false by default (the paper's regression).
+    /// differences); true by default (false: the paper's regression).
     pub anchored: bool,
     /// Outputs Δθ are learned divided by this (degrees); 10 by default.
     pub norm_out: f64,
@@ -39,11 +39,11 @@ impl Default for IssgpSettings {
     fn default() -> Self {
         IssgpSettings {
             features: 500,
-            length_scales: [0.5; 5],
+            length_scales: [1.0, 1.0, 0.5, 0.5, 0.5],
             noise: 0.01,
             signal: 1.0,
             forgetting: 1.0,
-            anchored: false,
+            anchored: true,
             norm_out: 10.0,
             patterns: PatternSettings::default(),
             seed: 1,

@@ -13,13 +13,13 @@ pub struct MlpSettings {
     pub rate: f64,
     /// Patterns drawn from the replay buffer per step; 32 by default.
     pub batch: usize,
-    /// Adam steps after each trial; 4 by default.
+    /// Adam steps after each trial; 16 by default.
     pub steps_per_trial: usize,
     /// The replay buffer holds this many most recent patterns; 10,000 by default.
     pub buffer: usize,
     /// True: the answer is anchored at the centred target, f(x) − f(x with cx*, cy*, cz*
-    /// = 0), so a centred target gives no move whatever the net learned; false by default
-    /// (a plain net).
+    /// = 0), so a centred target gives no move whatever the net learned; true by default
+    /// (false: a plain net).
     pub anchored: bool,
     /// Outputs Δθ are learned divided by this (degrees); 10 by default.
     pub norm_out: f64,
@@ -38,9 +38,9 @@ impl Default for MlpSettings {
             hidden: 32,
             rate: 0.001,
             batch: 32,
-            steps_per_trial: 4,
+            steps_per_trial: 16,
             buffer: 10_000,
-            anchored: false,
+            anchored: true,
             norm_out: 10.0,
             patterns: PatternSettings::default(),
             seed: 1,

@@ -14,7 +14,7 @@
 //! the fixed corrections: the learner goes on learning in the readings it knows.
 
 use super::{ChangeSettings, TrialMiss};
-use crate::learn::tree::Corrections;
+use crate::learn::nested::tree::Corrections;
 use crate::learn::{
     adjusted_pattern, LearnError, Learner, LearnerStats, ModelEvent, Observation, PatternSettings,
     Query,

@@ -1,13 +1,13 @@
 //! `change_recovery correct` for any learner with a model (lwpr, issgp, mlp, ffn, kohonen):
 //! a wrapper that watches the learner's trials for a change of the mapping and, after an
 //! alarm, answers through a correction of the readings fitted from the patterns since the
-//! change, as the nested learners do within their tree (see the tree's `correcting`).
+//! change, as the nested learners do within their tree (`nested/tree/correct_recovery.rs`).
 //!
 //! The wrapper knows the learner only through the [`Learner`] trait. Its watch books each
-//! trial's summed miss relative to its summed move ([`TrialMiss`]), the misses those of the
+//! trial's summed miss relative to its summed move (`TrialMiss`), the misses those of the
 //! learner's answers to the trial's adjusted patterns before it learns them. At an alarm the
 //! patterns of the trials since the estimated change that end near the centre seed a
-//! [`Corrections`] fit; from then on the learner learns nothing while the fit runs: each
+//! `Corrections` fit; from then on the learner learns nothing while the fit runs: each
 //! trial's patterns join it, it is redone after the trial through the learner's own answers,
 //! and queries go through it once it has enough patterns. Once it is fixed, the trials held
 //! back are learned through it, and every later trial's readings and every query go through

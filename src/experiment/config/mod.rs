@@ -68,7 +68,7 @@ impl Config {
         Config::read_file(path).map(|(config, _)| config)
     }
 
-    /// Reads and checks a config file (at most [`MAX_CONFIG_BYTES`]), with where each value
+    /// Reads and checks a config file (at most `MAX_CONFIG_BYTES`), with where each value
     /// came from.
     pub fn read_file(path: &Path) -> Result<(Config, Sources), ConfigError> {
         let name = path.display().to_string();
@@ -217,7 +217,7 @@ impl Config {
     }
 
     /// The camera's frame rate a run uses: `camera_fps`, or, when that is 0 and
-    /// `learn_during_moves` asks for frames during moves, [`MOVE_FRAMES_FPS`].
+    /// `learn_during_moves` asks for frames during moves, 30 frames/s.
     pub fn camera_frame_rate(&self) -> f64 {
         if self.camera_fps == 0.0 && self.learn_during_moves == 1 {
             MOVE_FRAMES_FPS

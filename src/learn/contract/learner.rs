@@ -10,7 +10,7 @@ use nalgebra::Vector3;
 /// area measure for cz).
 pub trait Learner: std::fmt::Debug {
     /// The learner's name: runs of it are filed under `data/<name>/` and reported under it
-    /// (summary.json's `method`). A built-in learner answers its [`Method`]'s name.
+    /// (summary.json's `method`). A built-in learner answers its [`Method`](crate::learn::Method)'s name.
     fn name(&self) -> &str;
 
     /// The joint move (Δθ1, Δθ2, Δθ3 in degrees) this learner proposes for `query`.

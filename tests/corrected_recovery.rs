@@ -2,11 +2,11 @@
 //! seed 1, its shipped config under `merge_strategy change_detection`, a 30° camera turn
 //! before trial 600 of 1,500, the learner is back within 1.5× its 4-step level
 //! (`FourStepTrace::recovered_after`) sooner with `correct` than without it: than with
-//! `forget` for the learners that have one (lin5, lin8, nnw, lwpr, issgp, mlp), than
-//! without change detection for kohonen, which has none. lwpr's level before trial 600 is
-//! still falling, and either way it is back within the 50 trials the window needs: its turn
-//! comes before trial 1,500 of 3,000. (`ffn`, which relearns from its last 1,000 patterns
-//! after every trial, is back as soon either way: docs/ADAPTATION.md.)
+//! `forget` (lin5, lin8, nnw, lwpr, issgp, mlp). lwpr's level before trial 600 is still
+//! falling, and either way it is back within the 50 trials the window needs: its turn comes
+//! before trial 1,500 of 3,000. (`ffn`, which relearns from its last 1,000 patterns after
+//! every trial, is back as soon either way, and so is `kohonen` before trial 600, whose
+//! level is still falling: docs/ADAPTATION.md.)
 
 use eyehand::experiment::{run, Config, FourStepTrace, RunOptions};
 use eyehand::learn::change::ChangeRecovery;
@@ -61,7 +61,6 @@ fn corrects_sooner(method: Method, run: (usize, usize), without: (MergeStrategy,
 
 const FORGET: (MergeStrategy, ChangeRecovery) =
     (MergeStrategy::ChangeDetection, ChangeRecovery::Forget);
-const UNWATCHED: (MergeStrategy, ChangeRecovery) = (MergeStrategy::Thesis, ChangeRecovery::Correct);
 
 #[test]
 fn lin5_corrects_sooner_than_it_forgets() {
@@ -91,9 +90,4 @@ fn issgp_corrects_sooner_than_it_forgets() {
 #[test]
 fn mlp_corrects_sooner_than_it_forgets() {
     corrects_sooner(Method::Mlp, RUN, FORGET);
-}
-
-#[test]
-fn kohonen_corrects_sooner_than_without_a_watch() {
-    corrects_sooner(Method::Kohonen, RUN, UNWATCHED);
 }

@@ -6,7 +6,9 @@ mod events;
 mod failures;
 mod fixed_six;
 mod interrupt;
+mod learning_progress;
 mod learning_verdict;
+mod long_trial;
 mod memory;
 mod milestones;
 mod output;
@@ -26,12 +28,12 @@ pub mod study;
 mod summary;
 
 pub(crate) use config::entry_name;
-pub(crate) use config::shown;
 pub use config::{
     declarations, defaults_text, docs_table, unused_entries, CameraKind, Config, ConfigError,
     ConfigErrorKind, Declaration, ObstacleBox, PackagePaths, ReachSetting, Rule, Scope, SimKind,
     Source, Sources, UrdfFile, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES, REPEATED_ENTRY_NAMES,
 };
+pub(crate) use config::{shown, SHOWN_CHARS};
 pub use events::{Event, EventError};
 pub use failures::FailureTally;
 pub use interrupt::StopRequest;

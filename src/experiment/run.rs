@@ -3,18 +3,20 @@
 
 use super::failures::FailureTally;
 use super::interrupt::StopRequest;
+use super::learning_progress::learner_entries;
 use super::learning_verdict::{LearningWatch, RunEnd};
+use super::long_trial::LongTrialWatch;
 use super::output::DataFiles;
 use super::plot::{plot_run, PlotError};
-use super::progress::{LongTrialWatch, RunProgress};
+use super::progress::RunProgress;
 use super::summary::{RunSummary, SensorSummary};
 use super::StepFigures;
 use super::{
     allocate_run_folder, fresh_run_folder, peak_rss_kb, resident_kb, Config, Event, PreflightError,
     RunFolderError, RunSetup, Sources,
 };
-use crate::control::{TrialLoop, TrialOutcome};
-use crate::learn::{LearnError, Learner, LearnerStats};
+use crate::control::{TrialLoop, TrialObserver, TrialOutcome};
+use crate::learn::{LearnError, Learner, LearnerStats, Method};
 use crate::robot::{DescriptionError, RobotError};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -209,10 +211,10 @@ fn drive(
     let mut files = DataFiles::create(&folder)?;
     let mut figures = StepFigures::new(config.trials, config.feedback_steps);
     let mut failures = FailureTally::default();
-    let mut watch = LearningWatch::default();
+    let mut watch = LearningWatch::for_trials(config.trials);
     let mut finished = 0;
     let mut progress = RunProgress::new(config.trials, options.progress);
-    let mut long = LongTrialWatch::new();
+    let long = LongTrialWatch::start(progress.printer(), slow_entries(config.method));
     let started = Instant::now();
     let mut model_events = Vec::new();
     let mut root_merges = 0;
@@ -222,18 +224,15 @@ fn drive(
         if options.stop.signal().is_some() {
             break;
         }
-        let mut after_step = |step, simulated| {
-            if let Some(line) = long.step_done(trial, step, simulated, Instant::now()) {
-                progress.println(&line);
-            }
-        };
+        long.trial_begins(trial);
         let outcome = next_trial(
             &mut trials,
             learner.as_mut(),
             events,
             trial,
-            &mut after_step,
+            &mut long.observer(),
         )?;
+        long.trial_begins(0);
         learner.drain_events(&mut model_events);
         files.record_model_events(trial, &model_events)?;
         root_merges += model_events.iter().filter(|e| e.is_root_merge()).count();
@@ -268,8 +267,10 @@ fn drive(
         window: figures.window(),
         moves: work.moves,
         contact_stops: work.contact_stops,
+        settle_timeouts: work.settle_timeouts,
         patterns: stats.patterns,
         minimal_joint_move: config.minimal_joint_move,
+        learner_settings: &learner_entries(config, learner.name()),
     });
     let summary = RunSummary {
         method: learner.name().to_string(),
@@ -324,15 +325,15 @@ fn drive(
 }
 
 /// Trial `trial` of a run: the events due before it applied, the learner told, pre-learning
-/// repeated if the learner asks, then the trial run and learned (`after_step` called after
-/// every feedback step: see [`TrialLoop::run_trial_reporting`]). A replay of a run goes
+/// repeated if the learner asks, then the trial run and learned (`observer` told of every
+/// feedback step and of the learning: see [`TrialLoop::run_trial_observed`]). A replay of a run goes
 /// through the same steps, so it reproduces the run exactly.
 pub(crate) fn next_trial(
     trials: &mut TrialLoop,
     learner: &mut dyn Learner,
     events: &[Event],
     trial: usize,
-    after_step: &mut dyn FnMut(usize, f64),
+    observer: &mut dyn TrialObserver,
 ) -> Result<TrialOutcome, RunError> {
     for event in events.iter().filter(|e| e.trial() == trial) {
         event
@@ -346,7 +347,19 @@ pub(crate) fn next_trial(
     if learner.take_relearn_request() {
         trials.prelearn(learner)?;
     }
-    Ok(trials.run_trial_reporting(learner, after_step)?)
+    Ok(trials.run_trial_observed(learner, observer)?)
+}
+
+/// The entries that make a trial's learning long under `method`, for a long trial's line.
+fn slow_entries(method: Method) -> &'static str {
+    match method {
+        Method::Mlp => "mlp_steps_per_trial, mlp_batch, mlp_hidden",
+        Method::Ffn => "ffn_cg_iterations, ffn_window, ffn_hidden_units",
+        Method::Nnw => "hidden_units, nnw_train_limit, feedback_steps",
+        Method::Issgp => "issgp_features, feedback_steps",
+        Method::Lwpr => "init_D, w_gen, feedback_steps",
+        _ => "feedback_steps, bin_size, max_stored_patterns",
+    }
 }
 
 /// One line on how the tree is built up, for `verbose_output`.

@@ -137,6 +137,9 @@ impl Learner for Mlp {
             watch.close_trial();
         }
         for _ in 0..self.settings.steps_per_trial {
+            if crate::cancel::requested() {
+                break; // a signal: the run ends after this trial
+            }
             self.step();
         }
         Ok(())

@@ -201,7 +201,7 @@ fn configs_at_and_beyond_every_bound_are_refused_fail_with_a_reason_or_learn() {
 /// their last trials against their first (a window of 10 trials).
 const JUDGED_METHODS: [Method; 4] = [Method::Issgp, Method::Mlp, Method::Ffn, Method::Lwpr];
 /// Cases drawn per learner, and the trials of each.
-const CASES_PER_LEARNER: usize = 16;
+const CASES_PER_LEARNER: usize = 10;
 const JUDGED_TRIALS: usize = 100;
 
 /// How a judged case ended: learned, or the kind of `not_learned` (or refused).

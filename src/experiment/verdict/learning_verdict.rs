@@ -214,7 +214,7 @@ fn failure_cause(end: &RunEnd) -> Option<String> {
     let most = |count: usize| 2 * count > failures.total();
     let unsettled = end.settle_timeouts as f64 > MOSTLY_STOPPED * end.moves.max(1) as f64;
     if most(failures.no_start_seen) && unsettled {
-        Some(format!("the arm did not settle in time after {} of its {} moves and placings: its motors may be too weak to hold it against gravity (the URDF's joint effort limits and link masses) or settle_timeout too short, so the camera does not see the object at the start", end.settle_timeouts, end.moves))
+        Some(format!("the arm did not settle in time ({} settle timeouts, {} moves made): its motors may be too weak to hold it against gravity (the URDF's joint effort limits and link masses) or settle_timeout too short, so the camera does not see the object at the start", end.settle_timeouts, end.moves))
     } else if most(failures.no_start_seen) {
         Some("the object is out of the camera's view at the start (camera_link, camera_offset, obstacles)".into())
     } else if most(failures.left_the_image + failures.too_close) {

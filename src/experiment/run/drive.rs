@@ -16,7 +16,7 @@ use crate::experiment::{
     allocate_run_folder, fresh_run_folder, peak_rss_kb, resident_kb, Config, Event, PreflightError,
     RunFolderError, RunSetup, Sources,
 };
-use crate::learn::{LearnError, Learner, LearnerStats, Method};
+use crate::learn::{LearnError, Learner, LearnerStats};
 use crate::robot::{DescriptionError, RobotError};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -214,7 +214,7 @@ fn drive(
     let mut watch = LearningWatch::for_trials(config.trials);
     let mut finished = 0;
     let mut progress = RunProgress::new(config.trials, options.progress);
-    let long = LongTrialWatch::start(progress.printer(), slow_entries(config.method));
+    let long = LongTrialWatch::start(progress.printer(), config.method);
     let started = Instant::now();
     let mut model_events = Vec::new();
     let mut root_merges = 0;
@@ -348,18 +348,6 @@ pub(crate) fn next_trial(
         trials.prelearn(learner)?;
     }
     Ok(trials.run_trial_observed(learner, observer)?)
-}
-
-/// The entries that make a trial's learning long under `method`, for a long trial's line.
-fn slow_entries(method: Method) -> &'static str {
-    match method {
-        Method::Mlp => "mlp_steps_per_trial, mlp_batch, mlp_hidden",
-        Method::Ffn => "ffn_cg_iterations, ffn_window, ffn_hidden_units",
-        Method::Nnw => "hidden_units, nnw_train_limit, feedback_steps",
-        Method::Issgp => "issgp_features, feedback_steps",
-        Method::Lwpr => "init_D, w_gen, feedback_steps",
-        _ => "feedback_steps, bin_size, max_stored_patterns",
-    }
 }
 
 /// One line on how the tree is built up, for `verbose_output`.

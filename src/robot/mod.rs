@@ -24,7 +24,9 @@ mod world;
 pub use collision::DEFAULT_FLOOR_Z;
 pub use contact_free::{ContactRule, Touch, CONTACT_MARGIN};
 pub use description::{Chain, DescriptionError, DescriptionOptions, RobotDescription, Shape};
-pub use dynamic::{Drive, DynamicSettings, DynamicSim, Energy, FreeArm, SimCounters};
+pub use dynamic::{
+    Drive, DynamicSettings, DynamicSim, Energy, Engine, FreeArm, SimCounters, SpeedFault,
+};
 pub use error::RobotError;
 pub use joint::{LinkBody, RevoluteJoint};
 pub use joint_vector::{Joints, MAX_JOINTS};

@@ -4,7 +4,7 @@ use super::ValueError;
 use crate::control::ServoMode;
 use crate::learn::change::ChangeRecovery;
 use crate::learn::{MergeStrategy, Method};
-use crate::robot::{CameraLink, LearnedJoints};
+use crate::robot::{CameraLink, Engine, LearnedJoints};
 use std::fmt;
 use std::str::FromStr;
 
@@ -92,7 +92,8 @@ named_value!(
     CameraKind,
     MergeStrategy,
     ChangeRecovery,
-    ServoMode
+    ServoMode,
+    Engine
 );
 
 /// `parts` comma-separated items of `raw`, each parsed by `item`; `expected` names the form.
@@ -222,7 +223,7 @@ impl ConfigValue for ReachSetting {
 pub enum SimKind {
     /// Forward kinematics straight from the URDF, no dynamics.
     Kinematic,
-    /// The URDF as a Rapier multibody with motors and gravity.
+    /// The URDF as a multibody under gravity, its joints servoed, stepped by the `engine`.
     Dynamic,
 }
 
@@ -326,6 +327,7 @@ choice_names!(CameraKind, "camera", Projection => "projection", Raycast => "rayc
 choice_names!(MergeStrategy, "merge strategy", Thesis => "thesis", ChangeDetection => "change_detection");
 choice_names!(ChangeRecovery, "change recovery", Correct => "correct", Forget => "forget");
 choice_names!(ServoMode, "servo mode", Step => "step", Continuous => "continuous");
+choice_names!(Engine, "engine", Rk4 => "rk4", Rapier => "rapier");
 
 #[cfg(test)]
 mod tests {

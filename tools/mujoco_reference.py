@@ -17,14 +17,18 @@ friction loss and armature zero, gravity 9.81 m/s² along -z) and writes into te
                              joint with the farthest to go) with its speed and acceleration,
                              the servo's accelerations s = [a* + k(x* - x - dt v) + c(v* - v)]
                              / (1 + k dt²/2 + c dt) made torques by MuJoCo's own mass
-                             matrix, MuJoCo's gravity torques at the set-point fed forward,
-                             each within the URDF effort, held over the tick (qfrc_applied)
-                             while MuJoCo integrates RK4 at 0.1 ms; a row every tick
+                             matrix, MuJoCo's bias at the set-point's angles and speeds
+                             (gravity, Coriolis and centrifugal torques, and the joints'
+                             damping) fed forward, each within the URDF effort, held over
+                             the tick (qfrc_applied) while MuJoCo integrates RK4 at 0.1 ms;
+                             a row every tick
   mujoco_panda_moves.csv,    the same for the Franka Panda (tests/data/panda, its fingers
   mujoco_panda_move_N.csv    held shut)
   held_out/oscar6_V.urdf,    variants of the OSCAR-6 (masses x1.3, a rotated tensor with
   held_out/mujoco_swing_V.csv  a repeated moment, centres of mass off the axis, joint
                              damping, all of them) and a passive swing of each
+  held_out/mujoco_move_damped.csv  the damped variant (2 N m s/rad, MuJoCo's own damping
+                             on) servoed through the OSCAR-6's move 2 as above
 
 Needs `pip install mujoco numpy`; run from the repository root:
     python3 tools/mujoco_reference.py
@@ -307,9 +311,9 @@ def servoed_move(model: mujoco.MjModel, effort: np.ndarray, start, goal) -> list
         mujoco.mj_forward(model, data)
         mujoco.mj_fullM(model, data, mass)
         probe.qpos[:] = target
-        probe.qvel[:] = 0.0
+        probe.qvel[:] = speed
         mujoco.mj_forward(model, probe)
-        held = np.clip(probe.qfrc_bias, -effort, effort)
+        held = np.clip(probe.qfrc_bias + model.dof_damping * speed, -effort, effort)
         left = effort - np.abs(held)
         data.qfrc_applied[:] = held + np.clip(mass @ s, -left, left)
         for _ in range(TICK_SUBSTEPS):
@@ -368,6 +372,14 @@ def main() -> None:
             swing(load(variant, damping=True), SWING_STARTS[2]),
         )
     write_moves("mujoco_panda_", "panda.urdf", panda_urdf(), PANDA_MOVES, 7)
+    damped = held_out(urdf)["damped"]
+    write(
+        "held_out/mujoco_move_damped.csv",
+        "MuJoCo %s, held_out/oscar6_damped.urdf, servoed move 2 (eyehand's servo law, 5 ms "
+        "ticks), RK4 %g s, no limits, the URDF's damping; t,%s,v1..v6"
+        % (mujoco.__version__, TICK / TICK_SUBSTEPS, q_cols),
+        servoed_move(load(damped, damping=True), efforts(damped), *MOVES[1]),
+    )
 
 
 if __name__ == "__main__":

@@ -186,7 +186,20 @@ pub(super) fn simulate(args: SimulateArgs) -> Result<(), Failure> {
     if let Some((drift, peak_kinetic)) = drift {
         eprintln!("{}", energy_drift_line(drift, peak_kinetic, arm.time()));
     }
-    Ok(())
+    if let Some(t) = arm.stopped_by_contact() {
+        eprintln!("the move stopped at a contact at {t:.3} s; the servos held the arm there");
+    }
+    // Beyond a velocity limit under power is a fault; a passive arm may fall faster.
+    match (arm.speed_faults(), drive) {
+        ((faults, Some(worst)), Drive::Passive) => {
+            eprintln!("note: {worst} ({faults} of {ticks} ticks), unpowered");
+            Ok(())
+        }
+        ((faults, Some(worst)), _) => Err(failed(format!(
+            "fault: {worst} ({faults} of {ticks} ticks had a joint beyond its velocity limit)"
+        ))),
+        _ => Ok(()),
+    }
 }
 
 /// How far the total energy drifted (J) over a run of `seconds` in which the kinetic

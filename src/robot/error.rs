@@ -56,8 +56,9 @@ pub enum RobotError {
         /// The length it would have (cm).
         length_cm: f64,
     },
-    /// A pose whose weight needs more torque at a joint than the joint's URDF effort.
-    #[error("joint {joint} cannot hold the arm there: its weight needs {torque_nm:.3} N·m, the joint's effort is {effort_nm} N·m")]
+    /// A pose whose weight needs more torque at a joint than the joint's URDF effort: its
+    /// motor is too weak to hold the arm there.
+    #[error("joint {joint}'s motor is too weak to hold the arm there: its weight needs {torque_nm:.3} N·m, the joint's effort is {effort_nm} N·m")]
     CannotHold {
         /// 1-based joint number.
         joint: usize,

@@ -18,7 +18,9 @@ pub use description::{
     load_urdf, parse_urdf, Chain, DescriptionError, DescriptionOptions, RobotDescription, Shape,
     DEFAULT_URDF, DEFAULT_URDF_NAME,
 };
-pub use dynamic::{Drive, DynamicSettings, DynamicSim, Energy, FreeArm, SimCounters};
+pub use dynamic::{
+    Drive, DynamicSettings, DynamicSim, Energy, Engine, FreeArm, SimCounters, SpeedFault,
+};
 pub use error::RobotError;
 pub use kinematic::{limit_stop_fraction, KinematicSim, SetPointTracker, TrapezoidProfile};
 pub use model::{

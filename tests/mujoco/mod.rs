@@ -1,8 +1,8 @@
 //! Reading MuJoCo's reference files (tests/data/mujoco_*.csv, written by
 //! tools/mujoco_reference.py) and measuring the dynamic arm against them; shared by
-//! tests/dynamic_reference.rs and benches/dynamic.rs.
+//! tests/dynamic_reference.rs and benches/dynamic.rs, for either engine.
 
-use eyehand::robot::{parse_urdf, ArmModel, Drive, DynamicSettings, FreeArm, Joints};
+use eyehand::robot::{parse_urdf, ArmModel, Drive, DynamicSettings, Engine, FreeArm, Joints};
 
 /// The rows of a reference file, `#` lines skipped.
 pub fn rows(name: &str) -> Vec<Vec<f64>> {
@@ -28,44 +28,37 @@ pub fn relative(ours: &Joints, reference: &Joints) -> f64 {
     (*ours - reference).amax() / reference.amax()
 }
 
-/// Settings with time step `dt` (s).
-pub fn with_dt(dt: f64) -> DynamicSettings {
+/// The default settings on `engine`, with time step `dt` (s).
+pub fn with_dt(dt: f64, engine: Engine) -> DynamicSettings {
     DynamicSettings {
         dt,
+        engine,
         ..DynamicSettings::default()
     }
 }
 
 /// At each of MuJoCo's 50 poses: the pose and the relative difference of the arm's
-/// accelerations from rest (one step of `dt`, servos, limits and contacts off).
+/// accelerations from rest (one step of `settings`, servos, limits and contacts off).
 pub fn acceleration_gaps(
     model: &ArmModel,
     file: &str,
     columns: usize,
-    dt: f64,
+    settings: DynamicSettings,
 ) -> Vec<(Joints, f64)> {
     rows(file)
         .iter()
         .map(|row| {
             let q = joints(row);
-            let ours = FreeArm::accelerations_at_rest(model.clone(), &q, with_dt(dt))
+            let ours = FreeArm::accelerations_at_rest(model.clone(), &q, settings)
                 .expect("a pose inside the limits");
             (q, relative(&ours, &joints(&row[columns..])))
         })
         .collect()
 }
 
-/// Passive swing `n` (1–3) stepped with `settings` beside MuJoCo's: at each of its rows
-/// the time (s) and the largest joint angle difference (°).
-pub fn swing_gaps(n: usize, settings: DynamicSettings) -> Vec<(f64, f64)> {
-    swing_gaps_of(
-        ArmModel::oscar6(),
-        &format!("mujoco_swing_{n}.csv"),
-        settings,
-    )
-}
-
-/// [`swing_gaps`] for the arm `model` against the swing of reference file `file`.
+/// The passive swing of the arm `model` stepped with `settings` beside MuJoCo's swing of
+/// reference file `file`: at each of its rows the time (s) and the largest joint angle
+/// difference (°).
 pub fn swing_gaps_of(model: ArmModel, file: &str, settings: DynamicSettings) -> Vec<(f64, f64)> {
     let reference = rows(file);
     let start = joints(&reference[0][1..]);
@@ -136,18 +129,43 @@ pub struct MoveGaps {
     pub settle_ticks: (usize, usize),
 }
 
-/// Move `n` of tests/data/PREFIXmoves.csv on `model` at the default settings, held
+/// Move `n` of tests/data/PREFIXmoves.csv on `model` stepped with `settings`, held
 /// against MuJoCo's run of it (PREFIXmove_N.csv, a row every tick).
-pub fn move_gaps(model: &ArmModel, prefix: &str, n: usize) -> MoveGaps {
-    let dof = model.dof();
+pub fn move_gaps(model: &ArmModel, prefix: &str, n: usize, settings: DynamicSettings) -> MoveGaps {
+    let (start, goal) = move_ends(prefix, n, model.dof());
+    trace_gaps(
+        model,
+        &start,
+        &goal,
+        &format!("{prefix}move_{n}.csv"),
+        settings,
+    )
+}
+
+/// The start and goal (rad) of move `n` of tests/data/PREFIXmoves.csv, of an arm of `dof`
+/// joints.
+pub fn move_ends(prefix: &str, n: usize, dof: usize) -> (Joints, Joints) {
     let pose = |values: &[f64]| Joints::from_slice(&values[..dof]);
     let moves = rows(&format!("{prefix}moves.csv"));
     let row = moves
         .iter()
         .find(|row| row[0] as usize == n)
         .unwrap_or_else(|| panic!("no move {n}"));
-    let (start, goal) = (pose(&row[1..]), pose(&row[1 + dof..]));
-    let settings = DynamicSettings::default();
+    (pose(&row[1..]), pose(&row[1 + dof..]))
+}
+
+/// The move of `model` from `start` to `goal` stepped with `settings`, held against
+/// MuJoCo's run of it in reference file `file` (a row every tick).
+pub fn trace_gaps(
+    model: &ArmModel,
+    start: &Joints,
+    goal: &Joints,
+    file: &str,
+    settings: DynamicSettings,
+) -> MoveGaps {
+    let dof = model.dof();
+    let pose = |values: &[f64]| Joints::from_slice(&values[..dof]);
+    let (start, goal) = (*start, *goal);
     let mut arm = FreeArm::new(
         model.clone(),
         &start,
@@ -157,7 +175,7 @@ pub fn move_gaps(model: &ArmModel, prefix: &str, n: usize) -> MoveGaps {
         false,
     )
     .expect("a move inside the limits");
-    let reference = rows(&format!("{prefix}move_{n}.csv"));
+    let reference = rows(file);
     let settled = |q: &Joints, v: &Joints| {
         (*q - goal).amax() <= settings.settle_position_tol && v.amax() <= settings.settle_speed_tol
     };

@@ -14,7 +14,7 @@ use super::{ConfigErrorKind, Rule};
 use crate::control::ServoMode;
 use crate::learn::change::ChangeRecovery;
 use crate::learn::{BroydenUpdate, MergeStrategy, Method};
-use crate::robot::{CameraLink, LearnedJoints};
+use crate::robot::{CameraLink, Engine, LearnedJoints};
 
 use Rule::{AtLeast, NonNegative, OpenUnit, Positive, PositiveUpTo, UnitBelowOne, Within};
 use Scope::{All, Unused};
@@ -80,10 +80,16 @@ config_entries! {
     robot_speed: f64 = 90.0, "°/s", All, Within(0.1, 3600.0);
     /// Joint acceleration of a move's trapezoidal profile.
     robot_accel: f64 = 180.0, "°/s²", All, Within(1.0, 100_000.0);
+    /// What steps the dynamic arm: rk4 (its joint-space equations, fourth order, under
+    /// eyehand's servo law) or rapier (Rapier's multibody integrator and joint motors).
+    engine: Engine = Engine::Rk4, "", DYNAMIC, Rule::Any;
     /// Physics and servo time step (0.005: a 200 Hz control loop).
     dt: f64 = 0.005, "s", DYNAMIC, Within(1e-5, 0.1);
-    /// Rapier's constraint solver iterations, on the ticks Rapier steps (a link touching, dry friction).
+    /// Rapier's constraint solver iterations: every tick on the rapier engine, on rk4 the
+    /// ticks Rapier steps (a link touching, dry friction).
     solver_iterations: usize = 1, "", DYNAMIC, Within(1.0, 100.0);
+    /// Rapier steps per tick on the rapier engine, each of dt divided by this.
+    rapier_substeps: usize = 1, "", DYNAMIC, Within(1.0, 100.0);
     /// Joint servo position gain, scaled by the arm's mass matrix (400000 with motor_damping
     /// 1265: a critically damped 100 Hz servo).
     motor_stiffness: f64 = 400000.0, "1/s²", DYNAMIC, PositiveUpTo(1e9);

@@ -4,7 +4,7 @@ use super::ValueError;
 use crate::control::ServoMode;
 use crate::learn::change::ChangeRecovery;
 use crate::learn::{BroydenUpdate, MergeStrategy, Method};
-use crate::robot::{CameraLink, LearnedJoints};
+use crate::robot::{CameraLink, Engine, LearnedJoints};
 use std::fmt;
 use std::str::FromStr;
 
@@ -93,7 +93,8 @@ named_value!(
     MergeStrategy,
     ChangeRecovery,
     ServoMode,
-    BroydenUpdate
+    BroydenUpdate,
+    Engine
 );
 
 /// `parts` comma-separated items of `raw`, each parsed by `item`; `expected` names the form.
@@ -223,7 +224,7 @@ impl ConfigValue for ReachSetting {
 pub enum SimKind {
     /// Forward kinematics straight from the URDF, no dynamics.
     Kinematic,
-    /// The URDF as a Rapier multibody with motors and gravity.
+    /// The URDF as a multibody under gravity, its joints servoed, stepped by the `engine`.
     Dynamic,
 }
 
@@ -347,6 +348,7 @@ choice_names!(MergeStrategy, "merge strategy", Thesis => "thesis", ChangeDetecti
 choice_names!(ChangeRecovery, "change recovery", Correct => "correct", Forget => "forget");
 choice_names!(BroydenUpdate, "broyden update", Broyden => "broyden", Rls => "rls");
 choice_names!(ServoMode, "servo mode", Step => "step", Continuous => "continuous");
+choice_names!(Engine, "engine", Rk4 => "rk4", Rapier => "rapier");
 
 #[cfg(test)]
 mod tests {

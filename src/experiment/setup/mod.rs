@@ -89,13 +89,15 @@ pub fn trial_settings(config: &Config) -> TrialSettings {
     }
 }
 
-/// The dynamic simulator's settings (SI units) from `robot_speed`, `robot_accel`, `dt`,
-/// `solver_iterations`, the motor gains and the settling entries.
+/// The dynamic simulator's settings (SI units) from `robot_speed`, `robot_accel`, `engine`,
+/// `dt`, `solver_iterations`, `rapier_substeps`, the motor gains and the settling entries.
 pub fn dynamic_settings(config: &Config) -> DynamicSettings {
     DynamicSettings {
         moves: move_settings(config),
+        engine: config.engine,
         dt: config.dt,
         solver_iterations: config.solver_iterations,
+        rapier_substeps: config.rapier_substeps,
         motor_stiffness: config.motor_stiffness,
         motor_damping: config.motor_damping,
         settle_position_tol: config.settle_position_tol.to_radians(),

@@ -4,6 +4,7 @@
 
 use super::builder::Arm;
 use super::energy::Energy;
+use super::faults::SpeedFault;
 use super::servo_law::SetPoint;
 use super::settings::DynamicSettings;
 use crate::robot::{ArmModel, Joints, RobotError, TrapezoidProfile};
@@ -11,14 +12,16 @@ use crate::robot::{ArmModel, Joints, RobotError, TrapezoidProfile};
 /// What the servos do while the arm runs.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Drive {
-    /// Servos off, no gravity feed-forward: the arm swings under its weight.
+    /// Servos off, no feed-forward: the arm swings under its weight.
     Passive,
     /// The servos (and the gravity feed-forward) hold the start pose.
     Hold,
     /// The servos move every joint from the start pose to these angles (rad) along the
     /// straight joint-space line, under the trapezoidal profile of the settings' speed
     /// and acceleration for the joint with the farthest to go (as a step move does, with
-    /// its velocity and acceleration fed forward), then hold them.
+    /// its velocity and acceleration fed forward), then hold them. A contact deeper than
+    /// 0.5 mm stops the move where the arm is, which the servos then hold (as the dynamic
+    /// simulator stops a move).
     MoveTo(Joints),
 }
 
@@ -36,6 +39,12 @@ pub struct FreeArm {
     before: Option<(Joints, Joints)>,
     /// The profile of a [`Drive::MoveTo`].
     profile: TrapezoidProfile,
+    /// When (s) a contact stopped a [`Drive::MoveTo`], and the pose the servos hold since.
+    stopped: Option<(f64, Joints)>,
+    /// Steps after which a joint turned faster than its URDF velocity limit.
+    speed_faults: u64,
+    /// The worst of them.
+    worst_fault: Option<SpeedFault>,
 }
 
 impl FreeArm {
@@ -43,7 +52,9 @@ impl FreeArm {
     /// `settings` (sanitised as the dynamic simulator does); with `limits` false the
     /// joints turn past their URDF limits, with `contacts` false the links pass through
     /// the floor and each other. Fails when an angle of the start (or of a move's goal)
-    /// is not finite, or outside its limits while they apply.
+    /// is not finite, or outside its limits while they apply, and when the servos are to
+    /// hold or move the arm but a joint's motor is too weak to hold it at the start or
+    /// the goal.
     pub fn new(
         model: ArmModel,
         start: &Joints,
@@ -62,6 +73,10 @@ impl FreeArm {
         };
         let settings = settings.sanitized();
         let mut arm = Arm::build(&model, &settings);
+        if drive != Drive::Passive {
+            arm.check_holds(&model, start)?;
+            arm.check_holds(&model, &goal)?;
+        }
         arm.teleport(start);
         arm.release(limits);
         if !contacts {
@@ -78,16 +93,20 @@ impl FreeArm {
             steps: 0,
             before: None,
             profile,
+            stopped: None,
+            speed_faults: 0,
+            worst_fault: None,
         })
     }
 
     /// One physics step of `dt`.
     pub fn step(&mut self) {
         self.before = Some((self.joints(), self.speeds()));
-        let set_point = match self.drive {
-            Drive::Passive => None,
-            Drive::Hold => Some(SetPoint::at_rest(self.start)),
-            Drive::MoveTo(goal) => {
+        let set_point = match (self.drive, self.stopped) {
+            (Drive::Passive, _) => None,
+            (Drive::Hold, _) => Some(SetPoint::at_rest(self.start)),
+            (Drive::MoveTo(_), Some((_, held))) => Some(SetPoint::at_rest(held)),
+            (Drive::MoveTo(goal), None) => {
                 let dt = self.settings.dt;
                 let at = |k: u64| {
                     self.start + (goal - self.start) * self.profile.fraction_at(k as f64 * dt)
@@ -99,6 +118,24 @@ impl FreeArm {
         self.arm
             .step(&self.model, set_point.as_ref(), &self.settings);
         self.steps += 1;
+        if matches!(self.drive, Drive::MoveTo(_)) && self.stopped.is_none() && self.arm.in_contact()
+        {
+            self.stopped = Some((self.time(), self.joints()));
+        }
+        let fault = self.arm.speed_fault(&self.model);
+        self.speed_faults += u64::from(fault.is_some());
+        self.worst_fault = SpeedFault::worse(self.worst_fault, fault);
+    }
+
+    /// Steps after which a joint turned faster than its URDF velocity limit, and the worst
+    /// such speed.
+    pub fn speed_faults(&self) -> (u64, Option<SpeedFault>) {
+        (self.speed_faults, self.worst_fault)
+    }
+
+    /// When (s) a contact stopped the move, if one did.
+    pub fn stopped_by_contact(&self) -> Option<f64> {
+        self.stopped.map(|(t, _)| t)
     }
 
     /// Simulated time since the start (s).

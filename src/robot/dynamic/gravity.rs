@@ -3,7 +3,7 @@
 //! model-based industrial controller adds them to its servo output (servo_law.rs).
 
 use super::builder::{Arm, GRAVITY};
-use crate::robot::{ArmModel, Joints};
+use crate::robot::{ArmModel, Joints, RobotError};
 use nalgebra::Vector3;
 
 impl Arm {
@@ -28,6 +28,23 @@ impl Arm {
                 .dot(&(moment - at.cross(&weight)));
         }
         torques
+    }
+}
+
+impl Arm {
+    /// Fails when a joint's motor is too weak to hold the arm's weight at pose `q` (the
+    /// torque it needs is above the joint's URDF effort, or not a number).
+    pub(super) fn check_holds(&self, model: &ArmModel, q: &Joints) -> Result<(), RobotError> {
+        let torques = self.weight_torques(model, q);
+        let joints = model.joints();
+        match (0..self.dof).find(|&i| torques[i].is_nan() || torques[i].abs() > joints[i].effort) {
+            Some(i) => Err(RobotError::CannotHold {
+                joint: i + 1,
+                torque_nm: torques[i].abs(),
+                effort_nm: joints[i].effort,
+            }),
+            None => Ok(()),
+        }
     }
 }
 

@@ -1,31 +1,52 @@
-//! One tick of the arm: its joint-space equations integrated over the tick by the classical
+//! One tick of the arm on its engine; on `rk4` (motors.rs has `rapier`'s): its joint-space
+//! equations integrated over the tick by the classical
 //! fourth-order Runge–Kutta scheme under joint torques held over it (the servos', or none),
 //! the joint limits as stops; the bodies are then placed where the model's kinematics puts
 //! them (for the camera), and Rapier looks for contacts where a bounding box comes near
-//! something (contacts.rs). While a link touches something, or where a joint has dry
-//! friction, Rapier steps the tick itself under the same torques (to first order: its
-//! contact and friction constraints act there).
+//! something (contacts.rs). Where a joint has dry friction, Rapier steps the tick itself
+//! under the same torques (to first order: its friction constraints act there); while a
+//! link touches something, Rapier steps it in sub-ticks of at most 1 ms, the servo law
+//! run at each (its contact constraints act there).
 
 use super::builder::Arm;
 use super::convert::to_vector;
 use super::joint_space::JointSpace;
 use super::servo_law::SetPoint;
-use super::settings::DynamicSettings;
+use super::settings::{DynamicSettings, Engine};
 use crate::robot::{ArmModel, Joints};
 
 /// The largest rate × step a damped joint's relaxation may have in one Runge–Kutta step
 /// (the scheme is stable below 2.78; this also keeps its decay close).
 const STABLE_RATE_STEP: f64 = 1.5;
+/// The longest step (s) Rapier takes while a link touches something on the `rk4` engine: a
+/// tick is cut into sub-ticks no longer than this.
+const CONTACT_STEP: f64 = 1e-3;
 
 impl Arm {
-    /// Steps the arm one tick of `settings.dt`, its servos sent to `set_point` (none: the
-    /// servos off, the arm left to its weight).
+    /// Steps the arm one tick of `settings.dt` on the settings' engine, its servos sent to
+    /// `set_point` (none: the servos off, the arm left to its weight).
     pub(super) fn step(
         &mut self,
         model: &ArmModel,
         set_point: Option<&SetPoint>,
         settings: &DynamicSettings,
     ) {
+        match settings.engine {
+            Engine::Rk4 => self.step_rk4(model, set_point, settings),
+            Engine::Rapier => self.step_rapier(model, set_point, settings),
+        }
+    }
+
+    /// One tick of the `rk4` engine.
+    fn step_rk4(
+        &mut self,
+        model: &ArmModel,
+        set_point: Option<&SetPoint>,
+        settings: &DynamicSettings,
+    ) {
+        if self.depth > f64::NEG_INFINITY {
+            return self.step_in_contact(model, set_point, settings);
+        }
         let (q, v) = (self.joints(), self.speeds());
         let space = self.joint_space(model, &q, &v);
         let tau = match (&space, set_point) {
@@ -58,6 +79,39 @@ impl Arm {
                 self.depth = self.deepest_contact();
             }
         }
+    }
+
+    /// A tick of the `rk4` engine while a link touches something: Rapier steps it in
+    /// sub-ticks of at most [`CONTACT_STEP`], the servo law run at each toward the
+    /// set-point's path there, so that a servo pushing against a contact cannot whip a
+    /// light joint around within a tick.
+    fn step_in_contact(
+        &mut self,
+        model: &ArmModel,
+        set_point: Option<&SetPoint>,
+        settings: &DynamicSettings,
+    ) {
+        let (dt, n) = (settings.dt, (settings.dt / CONTACT_STEP).ceil().max(1.0));
+        let fine = DynamicSettings {
+            dt: dt / n,
+            ..*settings
+        };
+        self.world.integration_parameters.dt = fine.dt;
+        self.refresh_bodies();
+        for j in 1..=n as usize {
+            let (q, v) = (self.joints(), self.speeds());
+            let tau = match (self.joint_space(model, &q, &v), set_point) {
+                (Some(space), Some(set_point)) => {
+                    let along = set_point.at(j as f64 * fine.dt, dt);
+                    self.servo_torques(model, &space, &along, &q, &v, &fine)
+                }
+                _ => Joints::zeros(self.dof),
+            };
+            self.apply_joint_torques(model, &tau);
+            self.world.step();
+        }
+        self.world.integration_parameters.dt = dt;
+        self.depth = self.deepest_contact();
     }
 
     /// The angles and speeds after `dt` from `q`, `v` under torques `tau`, where the
@@ -141,7 +195,7 @@ impl Arm {
 
     /// Applies joint torques `tau` (N·m) to the bodies for Rapier's step: each acts on the
     /// two bodies its joint connects, equal and opposite.
-    fn apply_joint_torques(&mut self, model: &ArmModel, tau: &Joints) {
+    pub(super) fn apply_joint_torques(&mut self, model: &ArmModel, tau: &Joints) {
         let n = self.dof;
         let frames = model.link_frames(&self.joints());
         let axis = |k: usize| frames[k].rotation * model.joints()[k].axis.into_inner();

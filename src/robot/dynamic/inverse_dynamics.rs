@@ -24,6 +24,18 @@ impl Arm {
 }
 
 impl Placement {
+    /// The torques (N·m) a motion at speeds `v` (rad/s) and accelerations `a` (rad/s²) of
+    /// the bodies placed here needs from the joints' drives: [`torques`](Self::torques)
+    /// and what the joints' damping takes at `v`. At `a` zero it is the bias b(q, q̇) of
+    /// the equations of motion, M(q)·q̈ + b(q, q̇) = τ.
+    pub(super) fn driving_torques(&self, model: &ArmModel, v: &Joints, a: &Joints) -> Joints {
+        let mut torques = self.torques(v, a);
+        for (i, joint) in model.joints().iter().enumerate().take(self.dof) {
+            torques[i] += joint.damping * v[i];
+        }
+        torques
+    }
+
     /// [`Arm::joint_torques`] for the bodies placed here.
     pub(super) fn torques(&self, v: &Joints, a: &Joints) -> Joints {
         let n = self.dof;

@@ -76,10 +76,7 @@ impl Arm {
         v: &Joints,
     ) -> Option<JointSpace> {
         let placed = self.placement(model, q);
-        let mut bias = placed.torques(v, &Joints::zeros(self.dof));
-        for (i, joint) in model.joints().iter().enumerate() {
-            bias[i] += joint.damping * v[i];
-        }
+        let bias = placed.driving_torques(model, v, &Joints::zeros(self.dof));
         Some(JointSpace {
             factor: cholesky(mass_matrix(&placed), self.dof)?,
             bias,

@@ -22,7 +22,7 @@ impl Arm {
             .expect("the arm's multibody is never removed")
     }
 
-    fn multibody_mut(&mut self) -> &mut Multibody {
+    pub(super) fn multibody_mut(&mut self) -> &mut Multibody {
         self.world
             .multibody_joints
             .get_multibody_mut(self.multibody)

@@ -1,7 +1,8 @@
-//! The joint servos' law, one tick at a time: a stiff spring and damper on each joint
-//! toward its set-point, the set-point's acceleration fed forward, made joint torques
-//! through the arm's mass matrix (so one gain pair suits a 25 kg column and a 0.8 kg
-//! flange), plus the weight's torques at the set-point (gravity feed-forward), all within
+//! The joint servos' law of the `rk4` engine, one tick at a time: a stiff spring and
+//! damper on each joint toward its set-point, the set-point's acceleration fed forward,
+//! made joint torques through the arm's mass matrix (so one gain pair suits a 25 kg column
+//! and a 0.8 kg flange), plus the whole bias of the equations of motion at the set-point
+//! (weight, Coriolis and centrifugal torques, the joints' damping) fed forward, all within
 //! each joint's URDF effort. The torques are held over the tick, as a digital servo holds
 //! its output; the law is simple enough for another engine to replay exactly
 //! (tools/mujoco_reference.py).
@@ -34,6 +35,18 @@ impl SetPoint {
         }
     }
 
+    /// This set-point, which a tick of `dt` ends at, `t` into that tick (at `t` = `dt`
+    /// itself), along the path of constant acceleration its angles, speeds and
+    /// accelerations at the tick's end give.
+    pub(super) fn at(&self, t: f64, dt: f64) -> SetPoint {
+        let back = dt - t;
+        SetPoint {
+            angles: self.angles - self.speeds * back + self.accelerations * (0.5 * back * back),
+            speeds: self.speeds - self.accelerations * back,
+            accelerations: self.accelerations,
+        }
+    }
+
     /// The middle one of three set-points `dt` apart (`last`, `next`, `after`): its speed
     /// and acceleration by central differences.
     pub(super) fn between(last: &Joints, next: &Joints, after: &Joints, dt: f64) -> SetPoint {
@@ -49,8 +62,9 @@ impl DynamicSettings {
     /// The accelerations (rad/s²) the servos ask of joints at angles `q` turning at `v`
     /// over one tick toward `set_point`: the spring (stiffness k) and damper (c) taken at
     /// the tick's end, which keeps the stiff default gains stable at k·dt² = 10:
-    /// s = [a* + k·(x* − x − dt·v) + c·(v* − v)] / (1 + k·dt²/2 + c·dt). An arm that
-    /// follows its set-point exactly gets exactly the set-point's acceleration.
+    /// s = [a* + k·(x* − x − dt·v) + c·(v* − v)] / (1 + k·dt²/2 + c·dt). With the bias fed
+    /// forward at the set-point, an arm that follows its set-point exactly gets exactly
+    /// the set-point's acceleration.
     pub(super) fn servo_accelerations(
         &self,
         set_point: &SetPoint,
@@ -66,9 +80,9 @@ impl DynamicSettings {
 
 impl Arm {
     /// The joint torques (N·m) of one tick toward `set_point` for the arm at angles `q`
-    /// and speeds `v`, whose equations of motion there are `space`: the weight's at the
-    /// set-point (each within its joint's effort), and the servo's M·s within the effort
-    /// that leaves.
+    /// and speeds `v`, whose equations of motion there are `space`: the bias at the
+    /// set-point's angles and speeds (each within its joint's effort), and the servo's M·s,
+    /// scaled down as a whole where a joint's share would exceed the effort that leaves it.
     pub(super) fn servo_torques(
         &self,
         model: &ArmModel,
@@ -78,15 +92,28 @@ impl Arm {
         v: &Joints,
         settings: &DynamicSettings,
     ) -> Joints {
-        let weight = self.weight_torques(model, &set_point.angles);
+        let bias = self.placement(model, &set_point.angles).driving_torques(
+            model,
+            &set_point.speeds,
+            &Joints::zeros(self.dof),
+        );
         let servo = space.inertial_torques(&settings.servo_accelerations(set_point, q, v));
         let joints = model.joints();
-        Joints::from_fn(self.dof, |i| {
-            let effort = joints[i].effort;
-            let held = weight[i].clamp(-effort, effort);
-            let left = effort - held.abs();
-            held + servo[i].clamp(-left, left)
-        })
+        let held = Joints::from_fn(self.dof, |i| {
+            bias[i].clamp(-joints[i].effort, joints[i].effort)
+        });
+        // The servo's accelerations scaled as a whole into the effort each joint has left,
+        // so that a joint that cannot give its share does not leave the others pushing
+        // for an acceleration the arm will not have.
+        let scale = (0..self.dof).fold(1.0f64, |scale, i| {
+            let left = joints[i].effort - held[i].abs();
+            if servo[i].abs() > left {
+                scale.min(left / servo[i].abs())
+            } else {
+                scale
+            }
+        });
+        held + servo * scale
     }
 }
 

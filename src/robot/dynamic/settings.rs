@@ -1,7 +1,24 @@
-//! The dynamic simulator's settings: time step, solver, servo gains and when a move counts
-//! as settled.
+//! The dynamic simulator's settings: the engine that steps the arm, time step, solver,
+//! servo gains and when a move counts as settled.
 
 use crate::robot::MoveSettings;
+
+/// What steps the dynamic arm.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Engine {
+    /// eyehand's own: the joint-space equations integrated by a fourth-order Runge–Kutta
+    /// step per tick under its servo law (Rapier places the bodies and steps contacts).
+    #[default]
+    Rk4,
+    /// Rapier's multibody integrator, each joint driven by a Rapier joint motor, its
+    /// limits Rapier's joint limits, its contacts as Rapier resolves them.
+    Rapier,
+}
+
+impl Engine {
+    /// Both engines, the default first.
+    pub const ALL: [Engine; 2] = [Engine::Rk4, Engine::Rapier];
+}
 
 /// How the dynamic simulator steps and servoes the arm. [`Default`] gives the values of the
 /// shipped configs: a stiff, critically damped 100 Hz servo on a 200 Hz control loop.
@@ -10,11 +27,16 @@ pub struct DynamicSettings {
     /// The trapezoidal profile of a move (top speed and acceleration of the lead joint)
     /// and the floor; default 90°/s, 180°/s² and −0.22 m.
     pub moves: MoveSettings,
+    /// What steps the arm; default [`Engine::Rk4`].
+    pub engine: Engine,
     /// Physics and control time step (s); default 0.005 (200 Hz).
     pub dt: f64,
-    /// Rapier's constraint solver iterations, for the ticks Rapier steps (a link touching
-    /// something, dry friction); default 1.
+    /// Rapier's constraint solver iterations (each a sub-step of its step): on the `rapier`
+    /// engine every tick, on `rk4` the ticks Rapier steps (a link touching something, dry
+    /// friction); default 1.
     pub solver_iterations: usize,
+    /// Rapier steps per tick on the `rapier` engine, each of `dt` / this; default 1.
+    pub rapier_substeps: usize,
     /// Position gain of every joint servo (1/s², acceleration-based: the arm's mass matrix
     /// is factored in); default 400,000 (a 100 Hz servo).
     pub motor_stiffness: f64,
@@ -35,8 +57,10 @@ impl Default for DynamicSettings {
     fn default() -> Self {
         DynamicSettings {
             moves: MoveSettings::from_degrees(90.0, 180.0),
+            engine: Engine::Rk4,
             dt: 0.005,
             solver_iterations: 1,
+            rapier_substeps: 1,
             motor_stiffness: 400_000.0,
             motor_damping: 1265.0,
             settle_position_tol: 0.0005f64.to_radians(),
@@ -48,7 +72,7 @@ impl Default for DynamicSettings {
 
 impl DynamicSettings {
     /// These settings with every value that is not finite and positive replaced by its
-    /// default (zero solver iterations become one).
+    /// default (zero solver iterations or sub-steps become one).
     pub fn sanitized(&self) -> DynamicSettings {
         let default = DynamicSettings::default();
         let pick = |value: f64, fallback: f64| {
@@ -68,8 +92,10 @@ impl DynamicSettings {
                     self.moves.floor_z
                 },
             },
+            engine: self.engine,
             dt: pick(self.dt, default.dt),
             solver_iterations: self.solver_iterations.max(1),
+            rapier_substeps: self.rapier_substeps.max(1),
             motor_stiffness: pick(self.motor_stiffness, default.motor_stiffness),
             motor_damping: pick(self.motor_damping, default.motor_damping),
             settle_position_tol: pick(self.settle_position_tol, default.settle_position_tol),

@@ -11,6 +11,9 @@ impl DynamicSim {
         self.arm
             .step(self.plan.model(), Some(set_point), &self.settings);
         SimCounters::count(&self.counters.steps);
+        if self.arm.speed_fault(self.plan.model()).is_some() {
+            SimCounters::count(&self.counters.speed_faults);
+        }
         if let Some(ticks) = &mut self.kept_ticks {
             ticks.push(self.arm.joints());
         }

@@ -11,20 +11,25 @@
 //!   the profile the arm steps until every joint is within `settle_position_tol` of its
 //!   set-point and slower than `settle_speed_tol`, or `settle_timeout` passes (reported in
 //!   the move's [`MoveReport`] and counted, not fatal).
-//! - The servos' law (servo_law.rs): per joint a spring and damper toward the set-point
-//!   taken at the tick's end (stable at the stiff default gains), the set-point's
-//!   acceleration fed forward, made torques through the arm's mass matrix (so one gain
-//!   pair suits a 25 kg column and a 0.8 kg flange), plus a gravity feed-forward computed
-//!   from the model at the set-point, which carries the arm's weight as an industrial
-//!   controller's does; all bounded by the joints' URDF efforts and held over the tick.
-//!   Set-points are clamped to the limits (a command past a limit stops at it, exactly where
-//!   the kinematic simulator stops); the joints' limits stay on as hard stops.
-//! - Each tick integrates the arm's joint-space equations (joint_space.rs: the mass matrix
-//!   and the Newton–Euler bias from the model and the simulated masses) by one classical
-//!   fourth-order Runge–Kutta step (integrator.rs); Rapier places the bodies and looks for
-//!   contacts. While a link touches something, or when a joint has dry friction, Rapier
-//!   steps the tick itself under the same torques, its contact and friction constraints
-//!   acting (first order, `solver_iterations` iterations).
+//! - Two engines (`engine`). `rk4` (the default: it follows MuJoCo closest): the servos'
+//!   law (servo_law.rs) is per joint a spring and damper toward the set-point taken at
+//!   the tick's end (stable at the stiff default gains), the set-point's acceleration fed
+//!   forward, made torques through the arm's mass matrix (so one gain pair suits a 25 kg
+//!   column and a 0.8 kg flange), plus the whole bias of the equations of motion at the
+//!   set-point (weight, Coriolis and centrifugal torques, the joints' damping), which
+//!   carries the arm as a model-based industrial controller does; all bounded by the
+//!   joints' URDF efforts and held over the tick. Each tick integrates the arm's
+//!   joint-space equations (joint_space.rs) by one classical fourth-order Runge–Kutta step
+//!   (integrator.rs); Rapier places the bodies and looks for contacts. While a link
+//!   touches something, or when a joint has dry friction, Rapier steps the tick itself
+//!   under the same torques, its contact and friction constraints acting (first order,
+//!   `solver_iterations` iterations). `rapier` (motors.rs): Rapier's multibody integrator
+//!   steps every tick (`rapier_substeps` steps of it), each joint driven by a Rapier joint
+//!   motor toward the set-point with the same gains, the set-point's inverse dynamics fed
+//!   forward as joint torques; Rapier's joint limits and contacts act.
+//!   Either way set-points are clamped to the limits (a command past a limit stops at it,
+//!   exactly where the kinematic simulator stops), and a joint turning faster than its
+//!   URDF velocity limit is counted as a fault (faults.rs).
 //! - Defaults: `dt` 5 ms (200 Hz), stiffness 400,000/s² and damping 1265/s (a critically
 //!   damped 100 Hz servo). With the joints' damping the URDF's (zero, not Rapier's default
 //!   0.1 N·m·s/rad), the 100 Hz servo with acceleration feed-forward settles within a few
@@ -67,6 +72,7 @@ pub struct SimCounters {
     pub(super) settle_timeouts: AtomicU64,
     pub(super) contact_stops: AtomicU64,
     pub(super) settle_steps: AtomicU64,
+    pub(super) speed_faults: AtomicU64,
 }
 
 impl SimCounters {
@@ -95,13 +101,18 @@ impl SimCounters {
         self.contact_stops.load(Ordering::Relaxed)
     }
 
+    /// Physics steps after which a joint turned faster than its URDF velocity limit.
+    pub fn speed_faults(&self) -> u64 {
+        self.speed_faults.load(Ordering::Relaxed)
+    }
+
     pub(super) fn count(counter: &AtomicU64) {
         counter.fetch_add(1, Ordering::Relaxed);
     }
 }
 
 /// An arm (the OSCAR-6, or any chain of revolute joints) as a Rapier multibody with
-/// gravity, joint limits and position servos.
+/// gravity, joint limits and position servos, stepped by the settings' engine.
 #[derive(Debug)]
 pub struct DynamicSim {
     /// The set-point: the kinematic simulator's pose is where the servos are sent.
@@ -171,17 +182,7 @@ impl Simulator for DynamicSim {
 
     fn place(&mut self, theta: &Controlled) -> Result<(), RobotError> {
         let q = self.model().check_limits(theta)?;
-        let torques = self.arm.weight_torques(self.model(), &q);
-        let joints = self.model().joints();
-        if let Some(i) =
-            (0..joints.len()).find(|&i| torques[i].is_nan() || torques[i].abs() > joints[i].effort)
-        {
-            return Err(RobotError::CannotHold {
-                joint: i + 1,
-                torque_nm: torques[i].abs(),
-                effort_nm: joints[i].effort,
-            });
-        }
+        self.arm.check_holds(self.model(), &q)?;
         self.end_servoing();
         self.plan.place(theta)?;
         let q = self.plan.joints();

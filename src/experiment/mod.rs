@@ -14,6 +14,7 @@ pub mod plot;
 mod preflight;
 mod progress;
 pub mod record;
+mod root_cuts;
 mod run;
 mod run_folder;
 mod run_request;
@@ -24,6 +25,7 @@ mod start_check;
 mod step_figures;
 pub mod study;
 mod summary;
+mod tree_lines;
 
 pub(crate) use config::entry_name;
 pub(crate) use config::shown;
@@ -43,6 +45,7 @@ pub use preflight::{
     contact_stopped_moves, preflight, reachable_points, target_poses_in_contact, PreflightError,
     MIN_REACHABLE_SHARE, REACH_SAMPLES,
 };
+pub use root_cuts::{root_cuts_in_plain_learning, RootCuts, PROBE_TRIALS};
 pub use run::{run, run_learner, run_learner_set_up, RunError, RunOptions, RunResult};
 pub use run_folder::{allocate_run_folder, fresh_run_folder, RunFolderError, RUN_IDS};
 pub use run_request::{RequestError, RunRequest};
@@ -50,3 +53,4 @@ pub use run_setup::{fit_reach_space_to_arm, RunSetup};
 pub use start_check::PrelearningFault;
 pub use step_figures::StepFigures;
 pub use summary::{RunSummary, SensorSummary};
+pub use tree_lines::TREE_LINES_FILE;

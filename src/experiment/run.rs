@@ -8,6 +8,7 @@ use super::output::DataFiles;
 use super::plot::{plot_run, PlotError};
 use super::progress::{LongTrialWatch, RunProgress};
 use super::summary::{RunSummary, SensorSummary};
+use super::tree_lines::TreeLines;
 use super::StepFigures;
 use super::{
     allocate_run_folder, fresh_run_folder, peak_rss_kb, resident_kb, Config, Event, PreflightError,
@@ -212,6 +213,7 @@ fn drive(
     let mut watch = LearningWatch::default();
     let mut finished = 0;
     let mut progress = RunProgress::new(config.trials, options.progress);
+    let mut tree_lines = TreeLines::new(&folder, options.progress);
     let mut long = LongTrialWatch::new();
     let started = Instant::now();
     let mut model_events = Vec::new();
@@ -250,12 +252,13 @@ fn drive(
         if trial % config.depth_info == 0 || trial == config.trials {
             files.record_depth_info(trial, resident_kb(), &stats)?;
             if config.verbose_output != 0 {
-                progress.println(&tree_line(trial, &stats));
+                tree_lines.write(trial, &stats, &progress)?;
             }
         }
         finished = trial;
     }
     files.flush()?;
+    tree_lines.flush()?;
     progress.finish();
     let wall_seconds = started.elapsed().as_secs_f64();
     let stats = learner.stats();
@@ -347,19 +350,6 @@ pub(crate) fn next_trial(
         trials.prelearn(learner)?;
     }
     Ok(trials.run_trial_reporting(learner, after_step)?)
-}
-
-/// One line on how the tree is built up, for `verbose_output`.
-fn tree_line(trial: usize, stats: &LearnerStats) -> String {
-    let mut line = format!(
-        "trial {trial}: {} nodes, {} bins, {} patterns |",
-        stats.nodes, stats.bins, stats.patterns
-    );
-    for (depth, level) in stats.levels.iter().enumerate().filter(|(_, l)| l.nodes > 0) {
-        let error = level.error.map_or("-".to_string(), |e| format!("{e:.2e}"));
-        line += &format!(" d{depth}: {} nodes, error {error};", level.nodes);
-    }
-    line
 }
 
 fn host_name() -> String {

@@ -10,8 +10,9 @@
 
 mod common;
 
-use common::run_cli;
-use std::path::Path;
+use common::Finished;
+use std::path::{Path, PathBuf};
+use std::process::Command;
 
 const SEEDS: [u64; 3] = [1, 2, 3];
 
@@ -30,6 +31,8 @@ enum Measure {
     TrialsPerHour,
     /// The trial of the first root merge (none: the run's trials + 1).
     FirstRootCut,
+    /// 1 when the run learned, 0 when it ended with "nothing was learned".
+    Learned,
 }
 
 /// One row: what is measured, the study's figure (`None`: shape only) and what the study
@@ -56,13 +59,14 @@ const fn d(step: usize, from: usize, to: usize) -> Measure {
 
 /// The rows of the runs with an event at trial 1,500: the level before, right after and at
 /// the end, after steps 1, 3 and 4.
-const EVENT_ROWS: [(Measure, &str); 6] = [
+const EVENT_ROWS: [(Measure, &str); 7] = [
     (d(4, 1000, 1500), "4-step mm, trials 1000-1499"),
     (d(4, 1500, 1600), "4-step mm, trials 1500-1599"),
     (d(4, 2500, 3001), "4-step mm, trials 2500-3000"),
     (d(3, 2500, 3001), "3-step mm, trials 2500-3000"),
     (d(1, 2500, 3001), "1-step mm, trials 2500-3000"),
     (Measure::FirstRootCut, "first root cut (trial)"),
+    (Measure::Learned, "runs that learned (share)"),
 ];
 
 /// The results: configs/study/ file, the study's rows.
@@ -248,7 +252,33 @@ fn first_root_cut(folder: &Path, trials: usize) -> f64 {
         .unwrap_or(trials as f64 + 1.0)
 }
 
-fn measured(measure: Measure, run: &common::Finished) -> f64 {
+/// Runs `eyehand run --config FILE --seed SEED` into `data` and reads its summary; a run
+/// that ended with "nothing was learned" (exit 1, its files complete) counts as well.
+fn run_figure(data: &Path, file: &Path, seed: u64) -> Finished {
+    let output = Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .arg("run")
+        .arg("--config")
+        .arg(file)
+        .args(["--seed", &seed.to_string(), "--quiet", "--no-plot"])
+        .arg("--data")
+        .arg(data)
+        .output()
+        .expect("eyehand runs");
+    let folder = PathBuf::from(String::from_utf8_lossy(&output.stdout).trim());
+    let json = std::fs::read_to_string(folder.join("summary.json")).unwrap_or_else(|e| {
+        panic!(
+            "{}: {e}: {}",
+            file.display(),
+            String::from_utf8_lossy(&output.stderr)
+        )
+    });
+    Finished {
+        summary: serde_json::from_str(&json).expect("a valid summary"),
+        folder,
+    }
+}
+
+fn measured(measure: Measure, run: &Finished) -> f64 {
     let summary = &run.summary;
     match measure {
         Measure::Distance { step, from, to } => distance(&run.folder, step, from, to),
@@ -262,6 +292,7 @@ fn measured(measure: Measure, run: &common::Finished) -> f64 {
         Measure::Bins => summary.bins as f64,
         Measure::TrialsPerHour => summary.trials_per_second * 3600.0,
         Measure::FirstRootCut => first_root_cut(&run.folder, summary.trials),
+        Measure::Learned => f64::from(u8::from(summary.learned)),
     }
 }
 
@@ -295,15 +326,9 @@ fn main() {
             continue;
         }
         let file = root.join(format!("{name}.conf"));
-        let runs: Vec<common::Finished> = SEEDS
+        let runs: Vec<Finished> = SEEDS
             .iter()
-            .map(|seed| {
-                let seed = seed.to_string();
-                run_cli(
-                    data.path(),
-                    &["--config", file.to_str().expect("a path"), "--seed", &seed],
-                )
-            })
+            .map(|&seed| run_figure(data.path(), &file, seed))
             .collect();
         for row in rows {
             let values: Vec<f64> = runs.iter().map(|r| measured(row.measure, r)).collect();

@@ -70,3 +70,42 @@ fn the_studys_90_degree_turn_cuts_the_root_within_a_few_trials_and_it_relearns()
         "relearned to {relearned} mm (before the turn {before} mm)"
     );
 }
+
+/// `eyehand check-config FILE`'s stderr.
+fn check_config_stderr(file: &Path) -> String {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .arg("check-config")
+        .arg(file)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+#[test]
+fn check_config_warns_of_merges_that_cut_the_root_while_the_arm_is_unchanged() {
+    let study = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/study.conf");
+    assert_eq!(
+        check_config_stderr(&study),
+        "",
+        "the study's file cuts nothing"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let low = dir.path().join("low.conf");
+    let listing = std::fs::read_to_string(&study).unwrap();
+    std::fs::write(
+        &low,
+        listing.replace("am_error_tresh         5.0", "am_error_tresh 0.5"),
+    )
+    .unwrap();
+    let warned = check_config_stderr(&low);
+    assert!(
+        warned.contains("am_error_tresh 0.5 over am_error_iters 50 cut the tree at its root")
+            && warned.contains("in 1499 trials of plain learning"),
+        "{warned}"
+    );
+}

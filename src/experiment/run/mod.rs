@@ -3,5 +3,6 @@
 
 pub(super) mod drive;
 pub(super) mod interrupt;
+pub(super) mod long_trial;
 pub(super) mod progress_bar;
 pub(super) mod tree_lines;

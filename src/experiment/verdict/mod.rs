@@ -3,6 +3,7 @@
 //! cut the root while it learns an unchanged arm.
 
 pub(super) mod failures;
+pub(super) mod learning_progress;
 pub(super) mod learning_verdict;
 pub(super) mod milestones;
 pub(super) mod root_cuts;

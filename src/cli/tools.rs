@@ -3,7 +3,10 @@
 use super::{angles_in_range, bad_input, failed, print_warnings, say, warned, Failure};
 use crate::experiment::plot::plot_run;
 use crate::experiment::setup::load_arm;
-use crate::experiment::{defaults_text, unused_entries, Config, RunError, RunOptions, Sources};
+use crate::experiment::{
+    defaults_text, root_cuts_in_plain_learning, unused_entries, Config, RootCuts, RunError,
+    RunOptions, Sources,
+};
 use crate::robot::Controlled;
 use std::path::PathBuf;
 
@@ -89,11 +92,32 @@ pub(super) fn check_config(args: CheckConfigArgs) -> Result<(), Failure> {
         e => bad_input(e),
     })?;
     print_warnings(&setup.warnings);
+    let cuts = root_cuts_in_plain_learning(&setup).map_err(failed)?;
+    print_warnings(&root_cut_warning(&file, &setup.config, cuts));
     let explained = match args.explain {
         true => setup.config.explained_text(&setup.sources),
         false => String::new(),
     };
     say(&(explained + &notes + &format!("{file}: ok\n")))
+}
+
+/// The warning for a file whose absolute merge cut the tree at its root while it learned
+/// an unchanged arm, naming the entries that set it; none when `cuts` found no cut.
+fn root_cut_warning(file: &str, config: &Config, cuts: Option<RootCuts>) -> Vec<String> {
+    let Some(RootCuts {
+        trials,
+        cuts,
+        first: Some(first),
+    }) = cuts
+    else {
+        return Vec::new();
+    };
+    vec![format!(
+        "{file}: am_error_tresh {} over am_error_iters {} cut the tree at its root {cuts} times \
+         in {trials} trials of plain learning (seed {}, no event; first at trial {first}): a run \
+         would throw away what it learned; raise am_error_tresh or am_error_iters",
+        config.am_error_tresh, config.am_error_iters, config.seed
+    )]
 }
 
 /// A note for each entry a file gives that eyehand accepts but does not implement.

@@ -24,6 +24,7 @@ pub use output::run_folder::{allocate_run_folder, fresh_run_folder, RunFolderErr
 pub use output::summary::{RunSummary, SensorSummary};
 pub use run::drive::{run, run_learner, run_learner_set_up, RunError, RunOptions, RunResult};
 pub use run::interrupt::StopRequest;
+pub use run::tree_lines::TREE_LINES_FILE;
 pub use setup::events::{Event, EventError};
 pub use setup::preflight::{
     contact_stopped_moves, preflight, reachable_points, target_poses_in_contact, PreflightError,
@@ -37,4 +38,5 @@ pub use verdict::learning_verdict::{LearningWatch, NotLearned, NotLearnedKind, R
 pub use verdict::milestones::{
     FourStepTrace, LEVEL_BEFORE_EVENT, RECOVERY_FACTOR, RECOVERY_WINDOW,
 };
+pub use verdict::root_cuts::{root_cuts_in_plain_learning, RootCuts, PROBE_TRIALS};
 pub use verdict::step_figures::StepFigures;

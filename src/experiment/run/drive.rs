@@ -8,6 +8,7 @@ use crate::experiment::plot::{plot_run, PlotError};
 use crate::experiment::run::interrupt::StopRequest;
 use crate::experiment::run::long_trial::LongTrialWatch;
 use crate::experiment::run::progress_bar::RunProgress;
+use crate::experiment::run::tree_lines::TreeLines;
 use crate::experiment::verdict::failures::FailureTally;
 use crate::experiment::verdict::learning_progress::learner_entries;
 use crate::experiment::verdict::learning_verdict::{LearningWatch, RunEnd};
@@ -214,6 +215,7 @@ fn drive(
     let mut watch = LearningWatch::for_trials(config.trials);
     let mut finished = 0;
     let mut progress = RunProgress::new(config.trials, options.progress);
+    let mut tree_lines = TreeLines::new(&folder, options.progress);
     let long = LongTrialWatch::start(progress.printer(), config.method);
     let started = Instant::now();
     let mut model_events = Vec::new();
@@ -249,12 +251,13 @@ fn drive(
         if trial % config.depth_info == 0 || trial == config.trials {
             files.record_depth_info(trial, resident_kb(), &stats)?;
             if config.verbose_output != 0 {
-                progress.println(&tree_line(trial, &stats));
+                tree_lines.write(trial, &stats, &progress)?;
             }
         }
         finished = trial;
     }
     files.flush()?;
+    tree_lines.flush()?;
     progress.finish();
     let wall_seconds = started.elapsed().as_secs_f64();
     let stats = learner.stats();
@@ -348,19 +351,6 @@ pub(crate) fn next_trial(
         trials.prelearn(learner)?;
     }
     Ok(trials.run_trial_observed(learner, observer)?)
-}
-
-/// One line on how the tree is built up, for `verbose_output`.
-fn tree_line(trial: usize, stats: &LearnerStats) -> String {
-    let mut line = format!(
-        "trial {trial}: {} nodes, {} bins, {} patterns |",
-        stats.nodes, stats.bins, stats.patterns
-    );
-    for (depth, level) in stats.levels.iter().enumerate().filter(|(_, l)| l.nodes > 0) {
-        let error = level.error.map_or("-".to_string(), |e| format!("{e:.2e}"));
-        line += &format!(" d{depth}: {} nodes, error {error};", level.nodes);
-    }
-    line
 }
 
 fn host_name() -> String {

@@ -5,3 +5,4 @@ pub(super) mod drive;
 pub(super) mod interrupt;
 pub(super) mod long_trial;
 pub(super) mod progress_bar;
+pub(super) mod tree_lines;

@@ -1,11 +1,17 @@
 //! Merging: cutting off a subtree that does worse than it should.
 //!
-//! Going down a pattern's path, the first node that is due is merged:
-//! - **absolute merge**: its mean error E over its last `am_error_iters` patterns is above
-//!   `am_error_tresh`;
-//! - **relative merge** (not the root): that mean is above its parent's mean error on the
-//!   node's box, over the same patterns, by more than `merge_error`. (The study's eq. 2.2
-//!   has its two sides swapped; this is the rule its text describes.)
+//! A node's running error E is the mean miss (degrees, study §2.2.4) of the tree's answer
+//! over the last `am_error_iters` of the patterns it monitors: one per step of a trial, the
+//! step's move to where the trial ended. A node monitors once it has taken in a full window
+//! of patterns (see docs/STUDY.md for the reading and the passages behind it). Going down a
+//! pattern's path, the first node that is due is merged:
+//! - **absolute merge** (the root): its running error is above `am_error_tresh`. Every
+//!   pattern reaches the root, so after a major change of the mapping its error is the
+//!   first to cross, and the tree starts afresh; a deeper node's running error, over a
+//!   smaller and often harder box, crosses it while nothing changed (§4.4.2, §4.4.3);
+//! - **relative merge** (not the root): its running error is above its parent's mean
+//!   error on the node's box by more than `merge_error`. (The study's eq. 2.2 has its two
+//!   sides swapped; this is the rule its text describes.)
 //!
 //! A merge cuts the node and its whole subtree; their bins, with their patterns, go back to
 //! the parent. Merging the root throws everything away: the tree starts afresh. Every merge
@@ -27,7 +33,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
                 .flatten()
                 .filter(|errors| errors.is_full())
                 .and_then(|errors| errors.mean());
-            if own > s.am_error_tresh {
+            if id == ROOT && own > s.am_error_tresh {
                 Some((id, MergeKind::Absolute))
             } else if parents.is_some_and(|parents| own > parents + s.merge_error) {
                 Some((id, MergeKind::Relative))

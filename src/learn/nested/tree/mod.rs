@@ -15,10 +15,13 @@
 //!   none, the answer is zero.
 //! - **Training.** A pattern trains every node on its path, root first, each followed by the
 //!   known patterns it earns; before that, each node's error on it is measured.
-//! - **Errors.** A pattern's error in a node is E = ‖o − t‖, the distance in degrees by
-//!   which the node's answer o misses the target Δθ t. Only a node with an answer of its
-//!   own measures. Each node keeps a running mean over its last `am_error_iters` patterns
-//!   and one per sub-box; each depth one over its last `monitor_ave` patterns (reported).
+//! - **Errors.** A pattern's error is E = ‖o − t‖, the distance in degrees by which an
+//!   answer o misses the target Δθ t. Each node measures its own answer's error on the
+//!   patterns of each sub-box (a running mean over the last `am_error_iters`: the split
+//!   test, and the parent's side of the relative merge), and each depth its nodes' own
+//!   errors over its last `monitor_ave` patterns (reported). A node's running error, for
+//!   the merges, is the tree's answer's error over its last `am_error_iters` monitored
+//!   patterns (one per trial step: see [`merge`]).
 //!   The merge thresholds compare the mean of E (degrees, as the study words
 //!   `am_error_tresh`: an average miss of 5° means the node is lost). The split threshold
 //!   compares the mean of E² — the study's "average sum-squared error": its shipped values

@@ -121,8 +121,11 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
         }
         let seeding = self.watch.is_some() && self.recovery == ChangeRecovery::Correct;
         let mut patterns = 0;
+        let last = path.last();
         for (from, to) in self.patterns.pairs(path) {
             patterns += 1;
+            // A step's miss is what its move lacked to reach where the trial ended.
+            let monitored = last.is_some_and(|last| std::ptr::eq(to, last));
             let pattern = (self.pattern_of)(from, to);
             if seeding {
                 self.corrections.remember(self.trial, (from, to), &pattern);
@@ -131,7 +134,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
                 self.corrections.book(&pattern);
             } else {
                 let corrected = self.corrections.pattern(&pattern);
-                self.train(&corrected, true)?;
+                self.train(&corrected, true, monitored)?;
             }
         }
         if let (0, Some(watch)) = (patterns, &mut self.watch) {
@@ -141,7 +144,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
         if let Some(fresh) = self.corrections.refit(|x| tree.answer(x)) {
             self.tree.after_correction(self.split_patterns);
             for pattern in fresh {
-                self.train(&pattern, false)?;
+                self.train(&pattern, false, false)?;
             }
         }
         self.tree.retrain_due().map(drop)
@@ -197,9 +200,14 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
 #[allow(private_bounds)]
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N> {
     /// Trains one pattern; `watched`: its error counts towards the change watch's value of
-    /// the trial.
-    fn train(&mut self, pattern: &Pattern<N>, watched: bool) -> Result<(), LearnError> {
-        let event = self.tree.train(pattern)?;
+    /// the trial; `monitored`: towards the running errors of the nodes on its path.
+    fn train(
+        &mut self,
+        pattern: &Pattern<N>,
+        watched: bool,
+        monitored: bool,
+    ) -> Result<(), LearnError> {
+        let event = self.tree.train_monitored(pattern, monitored)?;
         if let Some(watch) = &mut self.watch {
             if event == TreeEvent::Reset {
                 watch.restart();

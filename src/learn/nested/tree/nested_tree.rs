@@ -116,7 +116,11 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// from its stale fit if that has done better than deferring; once a correction is
     /// fixed, only nodes whose fit supports `x` answer, and the root in any case.)
     pub(crate) fn answer(&self, x: &SVector<f64, N>) -> Vector3<f64> {
-        let path = self.descend(self.rule.key(x, self.settings.max_depth));
+        self.answer_on(&self.descend(self.rule.key(x, self.settings.max_depth)), x)
+    }
+
+    /// [`answer`](Self::answer) at `x`, whose path is `path`.
+    pub(super) fn answer_on(&self, path: &Path, x: &SVector<f64, N>) -> Vector3<f64> {
         path.nodes()
             .iter()
             .rev()

@@ -2,15 +2,27 @@
 //! after a detected change, its stale fit weighed against its ancestors), the pattern taken
 //! in by every node on the path and kept in its bin, then a merge or split where due.
 
-use super::{Approximator, BinKey, BranchRule, NestedTree, TreeEvent};
+use super::{Approximator, BinKey, BranchRule, NestedTree, Path, TreeEvent};
 use crate::learn::LearnError;
 use crate::learn::Pattern;
 use nalgebra::Vector3;
 
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
-    /// Trains `pattern` to every node on its path, stores it in its bin, then merges or
-    /// splits where that is due. The pattern gets the next sequence number.
+    /// [`train_monitored`](Self::train_monitored) with every pattern monitored.
+    #[cfg(test)]
     pub(crate) fn train(&mut self, pattern: &Pattern<N>) -> Result<TreeEvent, LearnError> {
+        self.train_monitored(pattern, true)
+    }
+
+    /// Trains `pattern` to every node on its path, stores it in its bin, then merges or
+    /// splits where that is due. The pattern gets the next sequence number. When it is
+    /// `monitored` (a step's move to where its trial ended), the error of the tree's answer
+    /// to it joins the running error of the nodes on its path.
+    pub(crate) fn train_monitored(
+        &mut self,
+        pattern: &Pattern<N>,
+        monitored: bool,
+    ) -> Result<TreeEvent, LearnError> {
         let finite = |v: &f64| v.is_finite();
         if !(pattern.input.iter().all(finite) && pattern.target.iter().all(finite)) {
             self.journal.last_error = None;
@@ -20,6 +32,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         self.journal.next_seq += 1;
         let key = self.rule.key(&pattern.input, self.settings.max_depth);
         let path = self.descend(key);
+        let miss =
+            monitored.then(|| (self.answer_on(&path, &pattern.input) - pattern.target).norm());
         self.journal.last_error = None;
         // The error of the deepest node so far that answered from its own model.
         let mut fallback = None;
@@ -27,6 +41,9 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             let (answered, own) = self.train_node(id, key, pattern, seq, fallback);
             self.journal.last_error = answered.or(self.journal.last_error);
             fallback = own.or(fallback);
+        }
+        if let Some(miss) = miss {
+            self.monitor(&path, miss);
         }
         self.store(path.deepest(), key, pattern, seq)?;
         if let Some(event) = self.merge_if_due(&path)? {
@@ -63,7 +80,6 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         }
         let error = own.or(stale.filter(|_| node.stale_ok(&self.recovery.verdict)));
         if let Some(error) = error {
-            node.errors.push(error);
             self.levels.record_error(node.depth, error);
             if let Some(branch) = key.branch(node.depth + 1) {
                 node.box_errors_mut(branch, window).push(error);
@@ -79,6 +95,19 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         node.model.refit();
         self.mark_touched(id);
         (error, own)
+    }
+
+    /// Adds `miss`, the error of the tree's answer to a pattern, to the running error of
+    /// every node on the pattern's `path` that had taken in a full window of patterns
+    /// before it: a node is watched from then on (see [`merge`](super::merge)).
+    fn monitor(&mut self, path: &Path, miss: f64) {
+        let window = self.settings.am_error_iters as u64;
+        for &id in path.nodes() {
+            let node = &mut self.nodes[id as usize];
+            if node.taken > window {
+                node.errors.push(miss);
+            }
+        }
     }
 
     /// Books node `id` as having taken in one more pattern since its last re-training

@@ -76,8 +76,11 @@ fn a_relative_merge_compares_a_child_with_its_parent_on_the_same_patterns() {
     // Sub-box 31 is [4, 8)⁵; elsewhere here means the lower half of every dimension.
     let in_box = |rng: &mut ChaCha8Rng| moved(rng, |x| 4.0 + 0.5 * x);
     let elsewhere = |rng: &mut ChaCha8Rng| moved(rng, |x| 0.5 * x);
-    for _ in 1..window {
+    // The child watches its running error once it has taken in a window of patterns.
+    for i in 1..2 * window {
         assert_eq!(t.train(&in_box(&mut rng)).unwrap(), TreeEvent::Trained);
+        let watched = i.saturating_sub(window);
+        assert_eq!(t.nodes[child as usize].errors.len(), watched, "pattern {i}");
         // Patterns elsewhere fill neither window.
         t.train(&elsewhere(&mut rng)).unwrap();
     }
@@ -97,4 +100,25 @@ fn a_relative_merge_compares_a_child_with_its_parent_on_the_same_patterns() {
         "the child and its own child, logged once"
     );
     assert_eq!(recount(&t), counters(&t));
+}
+
+#[test]
+fn a_nodes_running_error_is_the_trees_miss_on_monitored_patterns_after_a_full_window() {
+    let mut t = tree(still(2));
+    let window = t.settings.am_error_iters;
+    let mut rng = ChaCha8Rng::seed_from_u64(9);
+    for _ in 0..window {
+        t.train_monitored(&random_pattern(&mut rng), true).unwrap();
+    }
+    assert_eq!(t.nodes[ROOT as usize].errors.len(), 0, "not yet watched");
+    for _ in 0..10 {
+        t.train_monitored(&random_pattern(&mut rng), false).unwrap();
+    }
+    assert_eq!(t.nodes[ROOT as usize].errors.len(), 0, "not monitored");
+    let pattern = random_pattern(&mut rng);
+    let miss = (t.answer(&pattern.input) - pattern.target).norm();
+    t.train_monitored(&pattern, true).unwrap();
+    let root = &t.nodes[ROOT as usize].errors;
+    assert_eq!(root.len(), 1);
+    assert!((root.mean().unwrap() - miss).abs() <= 1e-6 * miss, "{miss}");
 }

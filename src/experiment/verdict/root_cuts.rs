@@ -1,0 +1,57 @@
+//! Whether a config's merges cut the learner's tree at its root while it learns an
+//! unchanged arm: `check-config` learns the config's first trials without its events and
+//! counts the root merges, so a file whose absolute merge fires on plain learning is
+//! caught before a run throws its tree away.
+
+use crate::experiment::run::drive::next_trial;
+use crate::experiment::{RunError, RunSetup};
+use crate::learn::{Method, ModelEvent};
+
+/// Trials a probe learns at most.
+pub const PROBE_TRIALS: usize = 2000;
+
+/// What learning a config's first trials without its events did to the tree's root.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RootCuts {
+    /// Trials learned: those before the config's first event, at most [`PROBE_TRIALS`].
+    pub trials: usize,
+    /// Times the root was merged.
+    pub cuts: usize,
+    /// The trial of the first.
+    pub first: Option<usize>,
+}
+
+/// Learns the first trials of `setup`'s config without any event (the trials before its
+/// first event, at most [`PROBE_TRIALS`]) and counts the root merges. `None` for a method
+/// without the study's merges, or one too slow to learn that many trials here (`nnw`).
+pub fn root_cuts_in_plain_learning(setup: &RunSetup) -> Result<Option<RootCuts>, RunError> {
+    let config = &setup.config;
+    if !matches!(config.method, Method::Lin5 | Method::Lin8) {
+        return Ok(None);
+    }
+    let first_event = setup.events.iter().map(|e| e.trial()).min();
+    let trials = first_event
+        .map_or(config.trials, |t| t.saturating_sub(1))
+        .min(config.trials)
+        .min(PROBE_TRIALS);
+    let mut learner = setup.learner(None)?;
+    let mut loop_ = setup.trial_loop();
+    learner.start_trial(0);
+    loop_.prelearn(learner.as_mut())?;
+    let mut probe = RootCuts {
+        trials,
+        cuts: 0,
+        first: None,
+    };
+    let mut events = Vec::new();
+    for trial in 1..=trials {
+        next_trial(&mut loop_, learner.as_mut(), &[], trial, &mut |_, _| {})?;
+        learner.drain_events(&mut events);
+        if events.iter().any(ModelEvent::is_root_merge) {
+            probe.first.get_or_insert(trial);
+        }
+        probe.cuts += events.iter().filter(|e| e.is_root_merge()).count();
+        events.clear();
+    }
+    Ok(Some(probe))
+}

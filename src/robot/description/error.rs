@@ -184,8 +184,8 @@ pub enum DescriptionErrorKind {
         /// The mesh as the URDF names it.
         filename: String,
     },
-    /// A collision mesh in a format other than OBJ and STL.
-    #[error("link `{link}`: collision mesh `{filename}` is neither OBJ nor STL")]
+    /// A collision mesh in a format other than OBJ, STL and COLLADA.
+    #[error("link `{link}`: collision mesh `{filename}` is not OBJ, STL or COLLADA")]
     UnsupportedMesh {
         /// The link.
         link: String,

@@ -5,18 +5,24 @@
 # crates build in a fraction of the time they take optimised); then the Python package built
 # into a virtual environment (target/python-venv) and its pytest suite (python/tests).
 #
-# Needs python3 (≥ 3.9, with venv); installs maturin, gymnasium, numpy, scikit-learn and
+# Needs python3 (≥ 3.9, with venv); installs example-robot-data (the arms of
+# tests/corpus.rs, named by EYEHAND_ROBOT_DATA), maturin, gymnasium, numpy, scikit-learn and
 # pytest from PyPI into the environment. The package is built in cargo's `dev` profile so
 # that it reuses the dependencies `cargo test` just compiled (`pip install ./python` builds
 # the release wheel a user installs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+venv=target/python-venv
+[ -x "$venv/bin/python" ] || python3 -m venv "$venv"
+# The public robot collection tests/corpus.rs runs its arms from (data only, hence no deps).
+"$venv/bin/pip" install --quiet --disable-pip-version-check --no-deps example-robot-data==6.0.0
+purelib=$("$venv/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
+export EYEHAND_ROBOT_DATA="$purelib/cmeel.prefix/share/example-robot-data"
+
 cargo test --locked
 cargo test --locked --features rerun --profile recording --test show recording
 
-venv=target/python-venv
-[ -x "$venv/bin/python" ] || python3 -m venv "$venv"
 "$venv/bin/pip" install --quiet --disable-pip-version-check \
     maturin gymnasium numpy scikit-learn pytest
 rm -rf target/python-wheel

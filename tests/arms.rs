@@ -251,7 +251,7 @@ fn wrong_arm_entries_are_clear_errors() {
     let urdf = PANDA.urdf();
     let urdf = urdf.to_str().unwrap();
     let learned = "learned_joints=panda_joint1,panda_joint2,panda_joint4";
-    let cases: [(&[&str], &str); 4] = [
+    let cases: [(&[&str], &str); 5] = [
         (
             &["--set", "camera_link=nowhere", "--set", learned],
             "camera link `nowhere` is not a link of the robot",
@@ -274,9 +274,15 @@ fn wrong_arm_entries_are_clear_errors() {
             ],
             "learned joint `panda_joint6` is not on the chain",
         ),
+        // The Panda's right finger mimics its left one: a <mimic> is refused by name, on
+        // the chain or off it.
         (
             &["--set", "camera_link=panda_leftfinger", "--set", learned],
-            "joint `panda_finger_joint1` on the chain to the camera is prismatic",
+            "joint `panda_finger_joint2` off the chain follows `panda_finger_joint1` on it (<mimic>)",
+        ),
+        (
+            &["--set", "camera_link=panda_rightfinger", "--set", learned],
+            "joint `panda_finger_joint2` on the chain to the camera link follows `panda_finger_joint1` (<mimic>)",
         ),
     ];
     let data = tempfile::tempdir().unwrap();

@@ -249,32 +249,33 @@ fn a_mesh_that_is_not_a_mesh_is_named() {
     let dir = folder_with(&[
         ("bad.obj", "hello, I am a shopping list\n"),
         ("bad.stl", "not an stl"),
-        ("arm.dae", "<COLLADA/>"),
+        ("bad.dae", "<COLLADA/>"),
+        ("arm.ply", "ply\nformat ascii 1.0\n"),
     ]);
     let options = DescriptionOptions::default();
-    for bad in ["bad.obj", "bad.stl"] {
+    for bad in ["bad.obj", "bad.stl", "bad.dae"] {
         let kind = parse_in(&mesh_arm(bad, bad), dir.path(), &options).unwrap_err();
         let Kind::NotAMesh { link, filename, .. } = kind else {
             panic!("{bad}: {kind}")
         };
         assert_eq!((link.as_str(), filename.as_str()), ("a", bad));
     }
-    let kind = parse_in(&mesh_arm("arm.dae", "arm.dae"), dir.path(), &options).unwrap_err();
+    let kind = parse_in(&mesh_arm("arm.ply", "arm.ply"), dir.path(), &options).unwrap_err();
     assert_eq!(
         kind,
         Kind::UnsupportedMesh {
             link: "a".into(),
-            filename: "arm.dae".into()
+            filename: "arm.ply".into()
         }
     );
 }
 
 #[test]
 fn a_missing_collision_mesh_becomes_a_capsule_with_a_warning() {
-    let dir = folder_with(&[("pkg/meshes/a.obj", BOX_OBJ), ("arm.dae", "<COLLADA/>")]);
+    let dir = folder_with(&[("robots/pkg/meshes/a.obj", BOX_OBJ), ("arm.ply", "ply\n")]);
     let none = DescriptionOptions::default();
     let arm = parse_in(
-        &mesh_arm("package://pkg/meshes/a.obj", "arm.dae"),
+        &mesh_arm("package://pkg/meshes/a.obj", "arm.ply"),
         dir.path(),
         &none,
     )
@@ -284,7 +285,7 @@ fn a_missing_collision_mesh_becomes_a_capsule_with_a_warning() {
         [
             DescriptionWarning::UnreadVisualMesh {
                 link: "a".into(),
-                filename: "arm.dae".into()
+                filename: "arm.ply".into()
             },
             DescriptionWarning::MissingCollisionMesh {
                 link: "a".into(),
@@ -306,10 +307,10 @@ fn a_missing_collision_mesh_becomes_a_capsule_with_a_warning() {
     assert!(arm.links[1].visuals.is_empty());
     // With the package's folder on the search path the mesh is read, scaled by 2 along z.
     let found = DescriptionOptions {
-        package_paths: vec![PathBuf::from("/nowhere"), dir.path().to_path_buf()],
+        package_paths: vec![PathBuf::from("/nowhere"), dir.path().join("robots")],
     };
     let arm = parse_in(
-        &mesh_arm("package://pkg/meshes/a.obj", "pkg/meshes/a.obj"),
+        &mesh_arm("package://pkg/meshes/a.obj", "robots/pkg/meshes/a.obj"),
         dir.path(),
         &found,
     )

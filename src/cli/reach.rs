@@ -63,8 +63,11 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
     if own_arm {
         fit_reach_space_to_arm(&mut config, &mut sources);
     }
-    let model = warned(load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?);
+    let loaded = load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?;
+    let camera = loaded.camera.clone();
+    let model = warned(loaded);
     let mut report = arm_lines(&model);
+    let _ = writeln!(report, "camera link          {camera}");
     // Fitted once, and only for `auto`.
     let fit = match config.reach_space {
         ReachSetting::Auto => Some(fit_reach(&config, &model)),
@@ -74,7 +77,13 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
         Some(fit) => fit.map(|fit| fit.space),
         None => reach_space(&config, &model),
     }
-    .map_err(|why| bad_input(PreflightError::NoReachSpace(why)))?;
+    .map_err(|why| {
+        // What was chosen is printed before why no space fits it.
+        match say(&report) {
+            Ok(()) => bad_input(PreflightError::NoReachSpace(why)),
+            Err(failure) => failure,
+        }
+    })?;
     let how = match config.reach_space {
         ReachSetting::Auto => "fitted",
         ReachSetting::Given(_) => "given",

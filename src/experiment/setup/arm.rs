@@ -4,11 +4,12 @@
 use crate::camera::CameraModel;
 use crate::experiment::{Config, ReachSetting};
 use crate::robot::description::{
-    mesh_candidates, DescriptionError, DescriptionErrorKind as Kind, DescriptionOptions,
-    DescriptionWarning, RobotDescription,
+    camera_choice, mesh_candidates, DescriptionError, DescriptionErrorKind as Kind,
+    DescriptionOptions, DescriptionWarning, RobotDescription,
 };
 use crate::robot::{
-    ArmModel, ArmSettings, ReachFit, ReachFitFailure, ReachSpace, DEFAULT_URDF, DEFAULT_URDF_NAME,
+    ArmModel, ArmSettings, CameraLink, ReachFit, ReachFitFailure, ReachSpace, DEFAULT_URDF,
+    DEFAULT_URDF_NAME,
 };
 use crate::units::M_PER_CM;
 use nalgebra::Vector3;
@@ -34,6 +35,8 @@ pub struct LoadedArm {
     /// many meshes, and the first one's link, file and the paths it was looked for at);
     /// empty when nothing was missing.
     pub warnings: Vec<String>,
+    /// The camera link and why it is the one: `auto`'s reason, or the config naming it.
+    pub camera: String,
 }
 
 /// The arm of `urdf` (else the config's `urdf`; the shipped OSCAR-6 without either) as
@@ -48,6 +51,14 @@ pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<LoadedArm, Descr
         None => RobotDescription::parse(DEFAULT_URDF, DEFAULT_URDF_NAME, Path::new("."), &options)?,
     };
     let model = ArmModel::from_description(&description, &arm_settings(config))?;
+    let camera = match &config.camera_link {
+        CameraLink::Auto => {
+            let choice = camera_choice(&description);
+            let name = &description.links[choice.link].name;
+            format!("`{name}` (camera_link auto: {})", choice.reason)
+        }
+        CameraLink::Named(name) => format!("`{name}` (the config's camera_link)"),
+    };
     let folder = urdf.and_then(Path::parent).unwrap_or(Path::new("."));
     let file = &description.file;
     let warnings = match description.warnings.as_slice() {
@@ -63,7 +74,11 @@ pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<LoadedArm, Descr
             }]
         }
     };
-    Ok(LoadedArm { model, warnings })
+    Ok(LoadedArm {
+        model,
+        warnings,
+        camera,
+    })
 }
 
 /// How many meshes a URDF's warnings are about, by what stands in for them: the head of

@@ -6,11 +6,12 @@
 //! touch at the zero pose (the wrist's three links share its centre). Every link but the
 //! base may touch an obstacle.
 //!
-//! A collision mesh's hull is measured as its bounding box. Cheap first: each collision
+//! A collision mesh is measured as its convex hull. Cheap first: each collision
 //! element is held by a capsule (a cylinder or capsule by its own segment, a box by its
-//! longest axis, a ball by its centre), and the distance between
-//! capsules, or between a link's and an obstacle's bounding boxes, bounds the true distance
-//! from below. Only a pair whose bound is under [`NEAR`] is measured exactly (parry). A
+//! longest axis, a ball by its centre, a hull by its bounding box's), and the distance
+//! between capsules, or between a link's and an obstacle's bounding boxes, bounds the true
+//! distance from below. Only a pair whose bound is under [`NEAR`] is measured exactly
+//! (parry; a hull first by its bounding box, then, under [`NEAR`] still, itself). A
 //! move is marched in steps no pair can close its gap in, from the turns of the joints
 //! between the two and how far the nearer end reaches: small moves far from contact cost
 //! one look.
@@ -35,13 +36,34 @@ const KNOWN_GAP_MARGIN: f64 = 1e-9;
 /// The most bodies an arm has: the base and one per joint (the camera on the last).
 const MAX_BODIES: usize = MAX_JOINTS + 1;
 
-/// A collision element: its parry shape at its pose in the body frame, and the capsule that
-/// holds it (segment ends in the body frame, radius).
+/// A collision element: its parry shape at its pose in the body frame, the box around it
+/// when it is a mesh's hull (pose and shape), and the capsule that holds it (segment ends
+/// in the body frame, radius).
 #[derive(Debug, Clone)]
 struct Part {
     pose: Pose,
     shape: SharedShape,
+    boxed: Option<(Pose, SharedShape)>,
     capsule: Capsule,
+}
+
+impl Part {
+    /// The distance (m) from this part placed at `at` to `other`'s `shape` at `pose`: exact
+    /// for a primitive and for a hull under [`NEAR`], the hull's box's distance above it.
+    fn distance_to(
+        &self,
+        at: &Pose,
+        pose: &Pose,
+        shape: &dyn rapier3d_f64::parry::shape::Shape,
+    ) -> f64 {
+        if let Some((box_pose, cuboid)) = &self.boxed {
+            let bound = exact(&(at * box_pose), cuboid.as_ref(), pose, shape);
+            if bound >= NEAR {
+                return bound;
+            }
+        }
+        exact(&(at * self.pose), self.shape.as_ref(), pose, shape)
+    }
 }
 
 /// The arm's bodies as parts, the pairs of bodies that may touch, and how far each body
@@ -197,7 +219,7 @@ impl ArmGeometry {
                 let (pose, cuboid) = obstacle.parts();
                 let shapes = self.bodies[k]
                     .iter()
-                    .map(|a| exact(&(to_pose(at) * a.pose), a.shape.as_ref(), &pose, &cuboid));
+                    .map(|a| a.distance_to(&to_pose(at), &pose, &cuboid));
                 shapes.fold(f64::INFINITY, f64::min)
             };
             if gap.is_nan() || gap <= 0.0 {
@@ -314,8 +336,8 @@ pub(crate) fn contact_pairs(model: &ArmModel, bodies: &[Elements]) -> Vec<(usize
     let touch = |i: usize, j: usize| {
         bodies[i].iter().any(|(p, s)| {
             bodies[j].iter().any(|(q, t)| {
-                let (a, shape_a) = measured(&(frame(i) * p), s);
-                let (b, shape_b) = measured(&(frame(j) * q), t);
+                let (a, shape_a) = parts(&(frame(i) * p), s);
+                let (b, shape_b) = parts(&(frame(j) * q), t);
                 intersection_test(&a, shape_a.as_ref(), &b, shape_b.as_ref())
                     .map_or(true, |hit| hit.intersecting)
             })
@@ -348,24 +370,19 @@ fn part((pose, shape): &(Isometry3<f64>, Shape)) -> Part {
         Shape::Cuboid(size) => box_capsule(pose, &Vector3::zeros(), &size),
         Shape::Mesh { centre, size, .. } => box_capsule(pose, &centre, &size),
     };
-    let (pose, shape) = measured(pose, shape);
+    let boxed = match shape {
+        Shape::Mesh { centre, size, .. } => Some(parts(
+            &(pose * Translation3::from(*centre)),
+            &Shape::Cuboid(*size),
+        )),
+        _ => None,
+    };
+    let (pose, shape) = parts(pose, shape);
     Part {
         pose,
         shape,
+        boxed,
         capsule: Capsule { ends, radius },
-    }
-}
-
-/// The parry pose and shape the rule measures an element by: a hull by its bounding box
-/// (never nearer than the hull, so the rule stops a move no later than the physics'
-/// contacts would; and a box's distances are far cheaper than a many-sided hull's), any
-/// other shape as it is.
-fn measured(pose: &Isometry3<f64>, shape: &Shape) -> (Pose, SharedShape) {
-    match shape {
-        Shape::Mesh { centre, size, .. } => {
-            parts(&(pose * Translation3::from(*centre)), &Shape::Cuboid(*size))
-        }
-        other => parts(pose, other),
     }
 }
 
@@ -388,14 +405,17 @@ fn box_capsule(
     )
 }
 
-/// The exact distance between parts `a` and `b` of bodies at `at_a` and `at_b`.
+/// The distance between parts `a` and `b` of bodies at `at_a` and `at_b`: exact under
+/// [`NEAR`], a lower bound above it (a hull's box's distance).
 fn parts_distance(a: &Part, at_a: &Isometry3<f64>, b: &Part, at_b: &Isometry3<f64>) -> f64 {
-    exact(
-        &(to_pose(at_a) * a.pose),
-        a.shape.as_ref(),
-        &(to_pose(at_b) * b.pose),
-        b.shape.as_ref(),
-    )
+    let (at_a, at_b) = (to_pose(at_a), to_pose(at_b));
+    if let Some((box_pose, cuboid)) = &b.boxed {
+        let bound = a.distance_to(&at_a, &(at_b * box_pose), cuboid.as_ref());
+        if bound >= NEAR {
+            return bound;
+        }
+    }
+    a.distance_to(&at_a, &(at_b * b.pose), b.shape.as_ref())
 }
 
 /// A capsule: the points within `radius` of the segment between `ends`.

@@ -4,7 +4,7 @@
 
 use crate::robot::kinematic::motion::last_holding;
 use crate::robot::{ArmModel, ArmPose, Controlled, Frames, Joints, Shape, MAX_JOINTS};
-use nalgebra::{Isometry3, Translation3, Unit, Vector3};
+use nalgebra::{Isometry3, Unit, Vector3};
 
 /// Shapes never get shorter than this when a link is shortened (m).
 const MIN_SIZE: f64 = 1e-3;
@@ -363,7 +363,8 @@ fn link_sinking_speeds(
     speeds
 }
 
-/// The lowest world height (m) of `shape` at world pose `pose`.
+/// The lowest world height (m) of `shape` at world pose `pose` (a mesh's: its hull's lowest
+/// vertex).
 fn lowest_z(pose: &Isometry3<f64>, shape: &Shape) -> f64 {
     let centre = pose.translation.vector.z;
     let axis_z = (pose.rotation * Vector3::z()).z.abs();
@@ -376,8 +377,20 @@ fn lowest_z(pose: &Isometry3<f64>, shape: &Shape) -> f64 {
         }
         Shape::Cylinder { radius, length } => centre - 0.5 * length * axis_z - radius * across,
         Shape::Capsule { radius, length } => centre - 0.5 * length * axis_z - radius,
-        Shape::Mesh { centre, size, .. } => {
-            lowest_z(&(pose * Translation3::from(centre)), &Shape::Cuboid(size))
+        Shape::Mesh { ref mesh, .. } => {
+            let row = pose
+                .rotation
+                .to_rotation_matrix()
+                .matrix()
+                .row(2)
+                .transpose();
+            let lowest = mesh
+                .hull_or_mesh()
+                .vertices
+                .iter()
+                .map(|v| row.dot(&v.coords))
+                .fold(f64::INFINITY, f64::min);
+            centre + lowest
         }
     }
 }

@@ -1,6 +1,7 @@
 //! The arm a description gives when the config leaves it to the arm (`camera_link auto`,
-//! `learned_joints auto`): the camera on the chain's end, and the study's three learned
-//! joints — base yaw, shoulder, elbow — found by what they do at the rest pose.
+//! `learned_joints auto`): the camera on the chain's end short of any gripper part, and the
+//! study's three learned joints — base yaw, shoulder, elbow — found by what they do at the
+//! rest pose.
 
 use super::{Chain, DescriptionError, DescriptionErrorKind as Kind, JointKind, RobotDescription};
 use nalgebra::{Isometry3, Point3, Vector3};
@@ -11,22 +12,59 @@ const NAMED_CAMERA_LINK: &str = "camera_link";
 /// vertical: a base yaw.
 const VERTICAL: f64 = 0.99;
 
+/// Words in a moving joint's name that say it moves a part of a gripper, not the arm.
+const GRIPPER_WORDS: [&str; 6] = ["gripper", "finger", "jaw", "claw", "knuckle", "thumb"];
+/// The flange frame ROS-Industrial descriptions put at the end of the arm.
+const TOOL_FRAME: &str = "tool0";
+
+/// The camera link `camera_link auto` picks, and why.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CameraChoice {
+    /// The link's index in the description.
+    pub link: usize,
+    /// Why, in words.
+    pub reason: String,
+}
+
+/// The camera link of `camera_link auto` ([`camera_choice`]).
+pub fn auto_camera_link(description: &RobotDescription) -> usize {
+    camera_choice(description).link
+}
+
 /// The camera link of `camera_link auto`: the link named `camera_link` where there is one,
 /// else the link where the chain from the root ends: followed through every single child,
 /// and at a branch into the child whose subtree turns most joints, it stops at a leaf or
-/// where no child turns a joint any more (a hand whose fingers slide: the hand).
-pub fn auto_camera_link(description: &RobotDescription) -> usize {
+/// where no child turns a joint any more (a hand whose fingers slide: the hand), or at the
+/// link that carries a gripper joint (the hand). It never passes a gripper joint — a moving joint whose name says gripper, finger, jaw, claw,
+/// knuckle or thumb, or that mimics or is mimicked by another — so the camera never rides
+/// on a part that moves relative to the flange; and where the chain ends in `tool0` (the
+/// flange frame of ROS-Industrial descriptions) among fixed children, it is that.
+pub fn camera_choice(description: &RobotDescription) -> CameraChoice {
     if let Some(link) = description.link_index(NAMED_CAMERA_LINK) {
-        return link;
+        return CameraChoice {
+            link,
+            reason: format!("the link named `{NAMED_CAMERA_LINK}`"),
+        };
     }
     let mut at = description.root;
+    let mut gripper = None;
     loop {
         let children: Vec<usize> = description.links[at]
             .child_joints
             .iter()
+            .filter(|&&j| {
+                let part = moves_a_gripper(description, j);
+                if part && gripper.is_none() {
+                    gripper = Some(description.joints[j].name.clone());
+                }
+                !part
+            })
             .map(|&j| description.joints[j].child)
             .collect();
         let turning = |link: usize| turning_joints_below(description, link);
+        if gripper.is_some() {
+            return chain_end(description, at, children, gripper);
+        }
         let next = match children.as_slice() {
             [only] => Some(*only),
             _ => children
@@ -37,9 +75,51 @@ pub fn auto_camera_link(description: &RobotDescription) -> usize {
         };
         match next {
             Some(child) => at = child,
-            None => return at,
+            None => return chain_end(description, at, children, gripper),
         }
     }
+}
+
+/// The camera link where the walk stopped at `at` (its children past any gripper joint).
+fn chain_end(
+    description: &RobotDescription,
+    at: usize,
+    children: Vec<usize>,
+    gripper: Option<String>,
+) -> CameraChoice {
+    let tool = children
+        .into_iter()
+        .find(|&c| description.links[c].name == TOOL_FRAME);
+    if let Some(link) = tool {
+        return CameraChoice {
+            link,
+            reason: format!("`{TOOL_FRAME}`, the flange frame at the end of the chain"),
+        };
+    }
+    let reason = match gripper {
+        Some(joint) => format!(
+            "the end of the chain before the gripper joint `{joint}` (a gripper's parts move \
+             relative to the flange)"
+        ),
+        None => "the end of the chain".to_string(),
+    };
+    CameraChoice { link: at, reason }
+}
+
+/// True when joint `j` moves and its name says it moves a gripper part, or it mimics or
+/// is mimicked by another joint.
+fn moves_a_gripper(description: &RobotDescription, j: usize) -> bool {
+    let joint = &description.joints[j];
+    if !joint.kind.moves() {
+        return false;
+    }
+    let name = joint.name.to_ascii_lowercase();
+    GRIPPER_WORDS.iter().any(|word| name.contains(word))
+        || joint.mimic.is_some()
+        || description
+            .joints
+            .iter()
+            .any(|other| other.mimic.as_ref().is_some_and(|m| m.joint == joint.name))
 }
 
 /// Whether the joint into `link` turns.

@@ -3,7 +3,7 @@
 //! and the moving joints off the chain (fingers) listed to be held at their defaults.
 
 use super::inertia::Inertial;
-use super::joint::{JointDynamics, JointKind, JointLimits};
+use super::joint::{Joint, JointDynamics, JointKind, JointLimits};
 use super::{DescriptionError, DescriptionErrorKind as Kind, RobotDescription};
 use nalgebra::{Isometry3, Unit, Vector3};
 
@@ -44,7 +44,8 @@ pub struct HeldJoint {
     pub joint: usize,
     /// The joint's URDF name.
     pub name: String,
-    /// Where it is held: 0 clamped into its limits (rad or m).
+    /// Where it is held: 0 clamped into its limits, or where its `<mimic>` puts it from
+    /// its held leader (rad or m).
     pub position: f64,
     /// The chain body it hangs from (`None` when it hangs below another held joint).
     pub body: Option<usize>,
@@ -86,6 +87,15 @@ impl Chain {
                 link: camera_link.to_string(),
             }));
         }
+        if let Some((joint, mimic)) = moving.iter().find_map(|&j| {
+            let joint = &description.joints[j];
+            joint.mimic.as_ref().map(|m| (joint, m))
+        }) {
+            return Err(description.error(Kind::MimicOnChain {
+                joint: joint.name.clone(),
+                leader: mimic.joint.clone(),
+            }));
+        }
         let seeds = std::iter::once(description.root)
             .chain(moving.iter().map(|&j| description.joints[j].child));
         let bodies: Vec<ChainBody> = seeds
@@ -122,15 +132,17 @@ impl Chain {
             .iter()
             .enumerate()
             .filter(|(j, joint)| joint.kind.moves() && !moving.contains(j))
-            .map(|(j, joint)| HeldJoint {
-                joint: j,
-                name: joint.name.clone(),
-                position: joint.limits.default_position(),
-                body: bodies
-                    .iter()
-                    .position(|b| pose_in(b, joint.parent).is_some()),
+            .map(|(j, joint)| {
+                Ok(HeldJoint {
+                    joint: j,
+                    name: joint.name.clone(),
+                    position: held_position(description, joint, &moving)?,
+                    body: bodies
+                        .iter()
+                        .position(|b| pose_in(b, joint.parent).is_some()),
+                })
             })
-            .collect();
+            .collect::<Result<Vec<_>, DescriptionError>>()?;
         Ok(Chain {
             file: description.file.clone(),
             joints,
@@ -210,4 +222,28 @@ impl ChainBody {
         });
         ChainBody { links, inertial }
     }
+}
+
+/// Where a joint off the chain is held: 0 clamped into its limits, or, for a joint that
+/// mimics another held joint, the leader's position times the multiplier plus the offset.
+/// A mimic of a chain joint, or of no joint, is an error naming both.
+fn held_position(
+    description: &RobotDescription,
+    joint: &Joint,
+    moving: &[usize],
+) -> Result<f64, DescriptionError> {
+    let Some(mimic) = &joint.mimic else {
+        return Ok(joint.limits.default_position());
+    };
+    let names = || (joint.name.clone(), mimic.joint.clone());
+    let Some(leader) = description.joint_index(&mimic.joint) else {
+        let (joint, leader) = names();
+        return Err(description.error(Kind::UnknownMimicLeader { joint, leader }));
+    };
+    if moving.contains(&leader) {
+        let (joint, leader) = names();
+        return Err(description.error(Kind::MimicsChainJoint { joint, leader }));
+    }
+    let leader = &description.joints[leader];
+    Ok(mimic.multiplier * leader.limits.default_position() + mimic.offset)
 }

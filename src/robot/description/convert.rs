@@ -1,7 +1,7 @@
 //! urdf-rs values into nalgebra ones, checked: poses, inertials and joints.
 
 use super::inertia::Inertial;
-use super::joint::{Joint, JointDynamics, JointKind, JointLimits};
+use super::joint::{Joint, JointDynamics, JointKind, JointLimits, Mimic};
 use super::ranges::{within, MAX_LENGTH_M, MAX_MASS_KG};
 use super::DescriptionErrorKind as Kind;
 use nalgebra::{Isometry3, Matrix3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
@@ -128,7 +128,25 @@ pub(super) fn joint(
         axis,
         limits: limits(joint, kind)?,
         dynamics,
+        mimic: mimic(joint)?,
     })
+}
+
+/// The joint's `<mimic>`, its numbers checked.
+fn mimic(joint: &urdf_rs::Joint) -> Result<Option<Mimic>, Kind> {
+    let Some(given) = &joint.mimic else {
+        return Ok(None);
+    };
+    let mimic = Mimic {
+        joint: given.joint.clone(),
+        multiplier: given.multiplier.unwrap_or(1.0),
+        offset: given.offset.unwrap_or(0.0),
+    };
+    finite(
+        &[mimic.multiplier, mimic.offset],
+        &format!("joint `{}` mimic", joint.name),
+    )?;
+    Ok(Some(mimic))
 }
 
 fn limits(joint: &urdf_rs::Joint, kind: JointKind) -> Result<JointLimits, Kind> {

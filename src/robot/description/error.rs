@@ -199,8 +199,8 @@ pub enum DescriptionErrorKind {
         /// The mesh as the URDF names it.
         filename: String,
     },
-    /// A collision mesh in a format other than OBJ and STL.
-    #[error("link `{link}`: collision mesh `{filename}` is neither OBJ nor STL")]
+    /// A collision mesh in a format other than OBJ, STL and COLLADA.
+    #[error("link `{link}`: collision mesh `{filename}` is not OBJ, STL or COLLADA")]
     UnsupportedMesh {
         /// The link.
         link: String,
@@ -212,6 +212,39 @@ pub enum DescriptionErrorKind {
     UnknownLink {
         /// The name asked for.
         link: String,
+    },
+    /// A moving joint on the chain that follows another (`<mimic>`): the arm's joints
+    /// are moved one by one.
+    #[error(
+        "joint `{joint}` on the chain to the camera link follows `{leader}` (<mimic>): a chain \
+         joint that mimics another is not supported; choose a camera_link before it"
+    )]
+    MimicOnChain {
+        /// The follower.
+        joint: String,
+        /// The joint it mimics.
+        leader: String,
+    },
+    /// A joint off the chain that follows a joint on it (`<mimic>`): it would move with
+    /// the arm, which holds every joint off the chain.
+    #[error(
+        "joint `{joint}` off the chain follows `{leader}` on it (<mimic>): a held joint that \
+         moves with the arm is not supported; choose a camera_link that leaves `{leader}` off \
+         the chain"
+    )]
+    MimicsChainJoint {
+        /// The follower.
+        joint: String,
+        /// The chain joint it mimics.
+        leader: String,
+    },
+    /// A `<mimic>` naming a joint the robot does not have.
+    #[error("joint `{joint}` mimics `{leader}`, which is not a joint of the robot")]
+    UnknownMimicLeader {
+        /// The follower.
+        joint: String,
+        /// The name it gives.
+        leader: String,
     },
     /// A camera link with no moving joint between it and the root.
     #[error("camera link `{link}` does not move: no moving joint lies between it and the root")]

@@ -38,8 +38,8 @@ pub enum Shape {
         radius: f64,
     },
     /// A triangle mesh read from a file. As a collision element the ray-cast camera sees
-    /// its triangles, the physics' contacts its convex hull, the floor and contact rules
-    /// the hull's bounding box.
+    /// its triangles; the physics' contacts and the floor and contact rules use its convex
+    /// hull (the rules look at the hull's bounding box first).
     Mesh {
         /// The mesh as read, with its hull.
         mesh: Arc<MeshGeometry>,
@@ -69,7 +69,7 @@ impl Shape {
     }
 }
 
-/// A mesh read from an OBJ or STL file, already scaled.
+/// A mesh read from an OBJ, STL or COLLADA file, already scaled.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MeshGeometry {
     /// The mesh as the URDF names it.

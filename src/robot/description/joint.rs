@@ -56,6 +56,18 @@ pub struct JointDynamics {
     pub friction: f64,
 }
 
+/// A joint that follows another (the URDF's `<mimic>`): its position is the leader's times
+/// `multiplier` plus `offset`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mimic {
+    /// The leader joint's name.
+    pub joint: String,
+    /// The factor on the leader's position (1 when the URDF gives none).
+    pub multiplier: f64,
+    /// The offset added (rad or m; 0 when the URDF gives none).
+    pub offset: f64,
+}
+
 /// A joint between two links of the description.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Joint {
@@ -75,6 +87,8 @@ pub struct Joint {
     pub limits: JointLimits,
     /// Damping and friction.
     pub dynamics: JointDynamics,
+    /// The joint it follows, if it mimics one.
+    pub mimic: Option<Mimic>,
 }
 
 impl Joint {

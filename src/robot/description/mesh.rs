@@ -1,13 +1,13 @@
-//! Triangle meshes read from OBJ (tobj) and STL (stl_io) files, scaled as the URDF says,
-//! and their convex hulls (parry, through Rapier's re-export).
+//! Triangle meshes read from OBJ, STL and COLLADA files (mesh-loader), scaled as the URDF
+//! says, COLLADA's unit and up axis honoured, and their convex hulls (parry, through Rapier's
+//! re-export).
 
 use super::ranges::{number, MAX_LENGTH_M, MIN_SIZE_M};
 use nalgebra::{Point3, Vector3};
 use rapier3d_f64::parry::math::Vector as ParryVector;
 use rapier3d_f64::parry::transformation::try_convex_hull;
 use std::collections::HashMap;
-use std::fs::File;
-use std::io::BufReader;
+use std::io::Read;
 use std::path::Path;
 
 /// A triangle mesh in a link's geometry frame (m).
@@ -26,6 +26,8 @@ pub enum MeshFormat {
     Obj,
     /// STL, ASCII or binary (`.stl`).
     Stl,
+    /// COLLADA (`.dae`): its `<unit>` and `<up_axis>` taken into account.
+    Collada,
 }
 
 impl MeshFormat {
@@ -35,7 +37,16 @@ impl MeshFormat {
         match extension.as_str() {
             "obj" => Some(MeshFormat::Obj),
             "stl" => Some(MeshFormat::Stl),
+            "dae" => Some(MeshFormat::Collada),
             _ => None,
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            MeshFormat::Obj => "OBJ",
+            MeshFormat::Stl => "STL",
+            MeshFormat::Collada => "COLLADA",
         }
     }
 }
@@ -46,15 +57,52 @@ const FLAT: f64 = 1e-9;
 impl TriangleMesh {
     /// Reads a mesh file and scales it per axis; the error is the reason in words.
     pub fn read(path: &Path, format: MeshFormat, scale: &Vector3<f64>) -> Result<Self, String> {
-        let file = crate::files::open_regular(path, crate::files::MAX_MESH_BYTES)
+        let mut file = crate::files::open_regular(path, crate::files::MAX_MESH_BYTES)
             .map_err(|e| e.to_string())?;
-        let mut reader = BufReader::new(file);
-        let mut mesh = match format {
-            MeshFormat::Obj => read_obj(&mut reader)?,
-            MeshFormat::Stl => read_stl(&mut reader)?,
+        let mut bytes = Vec::new();
+        file.read_to_end(&mut bytes).map_err(|e| e.to_string())?;
+        let unreadable = |e: std::io::Error| format!("not a readable {} file ({e})", format.name());
+        let (scene, up) = match format {
+            MeshFormat::Obj => (
+                mesh_loader::obj::from_slice(&bytes, Some(path), no_materials)
+                    .map_err(unreadable)?,
+                UpAxis::Z,
+            ),
+            MeshFormat::Stl => (
+                mesh_loader::stl::from_slice(&bytes).map_err(unreadable)?,
+                UpAxis::Z,
+            ),
+            MeshFormat::Collada => (
+                mesh_loader::collada::from_slice(&bytes).map_err(unreadable)?,
+                UpAxis::of_collada(&bytes)?,
+            ),
         };
-        for vertex in &mut mesh.vertices {
-            *vertex = Point3::from(vertex.coords.component_mul(scale));
+        let mut mesh = TriangleMesh {
+            vertices: Vec::new(),
+            triangles: Vec::new(),
+        };
+        // The readers give each triangle corners of its own: equal corners become one vertex.
+        let mut index: HashMap<[u64; 3], u32> = HashMap::new();
+        for part in &scene.meshes {
+            for face in &part.faces {
+                let mut triangle = [0; 3];
+                for (corner, &i) in triangle.iter_mut().zip(face) {
+                    let v = part.vertices.get(i as usize).ok_or_else(|| {
+                        format!("a triangle names vertex {i} of {}", part.vertices.len())
+                    })?;
+                    let z_up = up.to_z_up(Vector3::new(v[0], v[1], v[2]).cast::<f64>());
+                    let point = Point3::from(z_up.component_mul(scale));
+                    let next = u32::try_from(mesh.vertices.len())
+                        .map_err(|_| "it has more than 2^32 vertices".to_string())?;
+                    *corner = *index
+                        .entry(point.coords.map(f64::to_bits).into())
+                        .or_insert_with(|| {
+                            mesh.vertices.push(point);
+                            next
+                        });
+                }
+                mesh.triangles.push(triangle);
+            }
         }
         if scale.product() < 0.0 {
             for triangle in &mut mesh.triangles {
@@ -145,58 +193,51 @@ impl TriangleMesh {
     }
 }
 
-fn read_obj(reader: &mut BufReader<File>) -> Result<TriangleMesh, String> {
-    let options = tobj::LoadOptions {
-        triangulate: true,
-        ignore_points: true,
-        ignore_lines: true,
-        ..Default::default()
-    };
-    let no_materials = |_: &Path| -> tobj::MTLLoadResult { Ok((Vec::new(), HashMap::new())) };
-    let (models, _) = tobj::load_obj_buf(reader, &options, no_materials)
-        .map_err(|e| format!("not a readable OBJ file ({e})"))?;
-    let mut mesh = TriangleMesh {
-        vertices: Vec::new(),
-        triangles: Vec::new(),
-    };
-    for model in models {
-        let offset = mesh.vertices.len() as u32;
-        let positions = &model.mesh.positions;
-        mesh.vertices.extend(
-            positions
-                .chunks_exact(3)
-                .map(|p| Point3::new(p[0], p[1], p[2])),
-        );
-        mesh.triangles.extend(
-            model
-                .mesh
-                .indices
-                .chunks_exact(3)
-                .map(|t| [t[0] + offset, t[1] + offset, t[2] + offset]),
-        );
-    }
-    Ok(mesh)
+/// An OBJ file's materials are not read: the reader mesh-loader asks for them finds none.
+fn no_materials(_: &Path) -> std::io::Result<Vec<u8>> {
+    Err(std::io::Error::other("materials are not read"))
 }
 
-fn read_stl(reader: &mut BufReader<File>) -> Result<TriangleMesh, String> {
-    let stl = stl_io::read_stl(reader).map_err(|e| format!("not a readable STL file ({e})"))?;
-    Ok(TriangleMesh {
-        vertices: stl
-            .vertices
-            .iter()
-            .map(|v| Point3::new(v[0] as f64, v[1] as f64, v[2] as f64))
-            .collect(),
-        triangles: stl
-            .faces
-            .iter()
-            .map(|f| f.vertices.map(|i| i as u32))
-            .collect(),
-    })
+/// The axis a COLLADA file calls up (`<asset><up_axis>`, `Y_UP` when absent as the
+/// format says); URDF meshes are Z-up.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum UpAxis {
+    X,
+    Y,
+    Z,
+}
+
+impl UpAxis {
+    fn of_collada(bytes: &[u8]) -> Result<UpAxis, String> {
+        let text = String::from_utf8_lossy(&bytes[..bytes.len().min(1 << 16)]);
+        let Some(start) = text.find("<up_axis>") else {
+            return Ok(UpAxis::Y);
+        };
+        let rest = &text[start + "<up_axis>".len()..];
+        let value = rest.split('<').next().unwrap_or("").trim();
+        match value {
+            "X_UP" => Ok(UpAxis::X),
+            "Y_UP" => Ok(UpAxis::Y),
+            "Z_UP" => Ok(UpAxis::Z),
+            other => Err(format!("its up_axis `{other}` is none of X_UP, Y_UP, Z_UP")),
+        }
+    }
+
+    /// A point of a file with this up axis in the Z-up frame (the COLLADA specification's
+    /// right, up and in axes kept: X_UP's right is -y, Y_UP's and Z_UP's is x).
+    fn to_z_up(self, v: Vector3<f64>) -> Vector3<f64> {
+        match self {
+            UpAxis::X => Vector3::new(-v.y, -v.z, v.x),
+            UpAxis::Y => Vector3::new(v.x, -v.z, v.y),
+            UpAxis::Z => v,
+        }
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::fs::File;
     use std::io::Write;
 
     fn written(name: &str, text: &[u8]) -> (tempfile::TempDir, std::path::PathBuf) {
@@ -252,6 +293,67 @@ mod tests {
         let (_dir, path) = written("t.stl", b"garbage that is neither ascii nor binary stl");
         let reason = TriangleMesh::read(&path, MeshFormat::Stl, &Vector3::repeat(1.0)).unwrap_err();
         assert!(reason.contains("STL"), "{reason}");
+    }
+
+    /// A COLLADA tetrahedron in millimetres with the given up axis, instanced in its scene.
+    fn collada(up: &str) -> String {
+        format!(
+            r##"<?xml version="1.0"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="millimeter" meter="0.001"/>{up}</asset>
+  <library_geometries><geometry id="t" name="t"><mesh>
+    <source id="t-pos"><float_array id="t-arr" count="12">0 0 0 1000 0 0 0 1000 0 0 0 1000</float_array>
+      <technique_common><accessor source="#t-arr" count="4" stride="3">
+        <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+      </accessor></technique_common></source>
+    <vertices id="t-vtx"><input semantic="POSITION" source="#t-pos"/></vertices>
+    <triangles count="4"><input semantic="VERTEX" source="#t-vtx" offset="0"/>
+      <p>0 2 1 0 1 3 0 3 2 1 2 3</p></triangles>
+  </mesh></geometry></library_geometries>
+  <library_visual_scenes><visual_scene id="s"><node id="n">
+    <instance_geometry url="#t"/></node></visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>
+"##
+        )
+    }
+
+    /// The unit scales to metres; Y_UP's y becomes z (and z becomes -y), X_UP's x becomes
+    /// z; the triangles keep facing out.
+    #[test]
+    fn a_collada_mesh_is_read_in_metres_with_z_up() {
+        let one = Vector3::repeat(1.0);
+        for (up, expected) in [
+            (
+                "<up_axis>Z_UP</up_axis>",
+                [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            ),
+            (
+                "<up_axis>Y_UP</up_axis>",
+                [[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]],
+            ),
+            ("", [[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]]),
+            (
+                "<up_axis>X_UP</up_axis>",
+                [[0.0, 0.0, 1.0], [-1.0, 0.0, 0.0], [0.0, -1.0, 0.0]],
+            ),
+        ] {
+            let (_dir, path) = written("t.dae", collada(up).as_bytes());
+            assert_eq!(MeshFormat::of(&path), Some(MeshFormat::Collada));
+            let mesh = TriangleMesh::read(&path, MeshFormat::Collada, &one).unwrap();
+            for corner in expected {
+                let corner = Point3::from(Vector3::from(corner));
+                assert!(
+                    mesh.vertices.iter().any(|p| (p - corner).norm() < 1e-6),
+                    "{up}: {corner} in {:?}",
+                    mesh.vertices
+                );
+            }
+            assert!((signed_volume(&mesh) - 1.0 / 6.0).abs() < 1e-6, "{up}");
+        }
+        let (_dir, path) = written("t.dae", collada("<up_axis>W_UP</up_axis>").as_bytes());
+        let reason = TriangleMesh::read(&path, MeshFormat::Collada, &one).unwrap_err();
+        assert!(reason.contains("W_UP"), "{reason}");
     }
 
     #[test]

@@ -18,12 +18,12 @@ mod robot;
 mod tree;
 mod warning;
 
-pub use auto_arm::auto_camera_link;
+pub use auto_arm::{auto_camera_link, camera_choice, CameraChoice};
 pub use chain::{Chain, ChainBody, ChainJoint, HeldJoint};
 pub use error::{DescriptionError, DescriptionErrorKind};
 pub use geometry::{GeometryElement, MeshGeometry, Shape};
 pub use inertia::Inertial;
-pub use joint::{Joint, JointDynamics, JointKind, JointLimits};
+pub use joint::{Joint, JointDynamics, JointKind, JointLimits, Mimic};
 pub use link::Link;
 pub use mesh::{MeshFormat, TriangleMesh};
 pub use oscar6::{load_urdf, parse_urdf, DEFAULT_URDF, DEFAULT_URDF_NAME};

@@ -1,6 +1,6 @@
 //! Where a URDF's mesh `filename` points on disk: relative to the URDF's folder, absolute,
-//! `file://`, or `package://NAME/...` looked up in a list of search paths; never outside the
-//! folders a mesh may be read from.
+//! `file://`, or `package://NAME/...` looked up in a list of search paths, then in the folder
+//! tree the URDF lies in; never outside the folders a mesh may be read from.
 
 use std::path::{Path, PathBuf};
 
@@ -20,7 +20,8 @@ pub enum MeshPathError {
 /// Finds the file a mesh `filename` names, or `None` when nothing is at any candidate.
 ///
 /// `package://NAME/REST` is tried as `SEARCH/NAME/REST` for every search path, then as
-/// `SEARCH/REST` for a search path that is itself the package folder NAME; the file must
+/// `SEARCH/REST` for a search path that is itself the package folder NAME, then in the
+/// package folder found in the URDF's folder tree ([`package_in_tree`]); the file must
 /// stay inside that search folder (after resolving `..` and symbolic links). Any other name
 /// must lead inside the URDF's folder or one of the search paths. The first candidate at
 /// which something is must be a regular file.
@@ -57,10 +58,10 @@ pub fn resolve_mesh(
     if !plain(package) || !plain(inside) {
         return Err(MeshPathError::OutsidePackage);
     }
-    for (search, path) in package_candidates(package, inside, package_paths) {
+    for (search, path) in package_candidates(package, inside, urdf_folder, package_paths) {
         if let Some(found) = regular(path) {
             let path = found?;
-            return if lies_inside(&path, search) {
+            return if lies_inside(&path, &search) {
                 Ok(Some(path))
             } else {
                 Err(MeshPathError::OutsidePackage)
@@ -85,23 +86,60 @@ fn lies_inside(path: &Path, folder: &Path) -> bool {
 }
 
 /// The search folder and path of every place `package://PACKAGE/INSIDE` may be, in order.
-fn package_candidates<'a>(
-    package: &'a str,
-    inside: &'a str,
-    package_paths: &'a [PathBuf],
-) -> impl Iterator<Item = (&'a Path, PathBuf)> {
+fn package_candidates(
+    package: &str,
+    inside: &str,
+    urdf_folder: &Path,
+    package_paths: &[PathBuf],
+) -> Vec<(PathBuf, PathBuf)> {
     let nested = package_paths
         .iter()
-        .map(move |search| (search.as_path(), search.join(package).join(inside)));
+        .map(|search| (search.clone(), search.join(package).join(inside)));
     let itself = package_paths
         .iter()
-        .filter(move |search| search.file_name().is_some_and(|name| name == package))
-        .map(move |search| (search.as_path(), search.join(inside)));
-    nested.chain(itself)
+        .filter(|search| search.file_name().is_some_and(|name| name == package))
+        .map(|search| (search.clone(), search.join(inside)));
+    let tree = package_in_tree(package, urdf_folder).map(|found| {
+        let path = found.join(inside);
+        (found, path)
+    });
+    nested.chain(itself).chain(tree).collect()
+}
+
+/// The package folder NAME as ROS finds it for a URDF inside a package's folder tree:
+/// walking up from the URDF's folder, the first folder that is named NAME or whose
+/// `package.xml` names it, or that holds a folder named NAME.
+fn package_in_tree(package: &str, urdf_folder: &Path) -> Option<PathBuf> {
+    let start = if urdf_folder.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        urdf_folder
+    };
+    let start = start.canonicalize().ok()?;
+    start.ancestors().find_map(|folder| {
+        if folder.file_name().is_some_and(|name| name == package)
+            || package_xml_names(folder, package)
+        {
+            return Some(folder.to_path_buf());
+        }
+        let child = folder.join(package);
+        child.is_dir().then_some(child)
+    })
+}
+
+/// True when `folder/package.xml` exists and its `<name>` is `package`.
+fn package_xml_names(folder: &Path, package: &str) -> bool {
+    let Ok(text) = std::fs::read_to_string(folder.join("package.xml")) else {
+        return false;
+    };
+    text.split("<name>")
+        .nth(1)
+        .and_then(|rest| rest.split("</name>").next())
+        .is_some_and(|name| name.trim() == package)
 }
 
 /// Every path a mesh `filename` may be at, in the order they are tried (none for a
-/// `package://` mesh without search paths).
+/// `package://` mesh without search paths outside a folder tree holding its package).
 pub fn mesh_candidates(
     filename: &str,
     urdf_folder: &Path,
@@ -109,7 +147,8 @@ pub fn mesh_candidates(
 ) -> Vec<PathBuf> {
     if let Some(rest) = filename.strip_prefix("package://") {
         let (package, inside) = rest.split_once('/').unwrap_or((rest, ""));
-        return package_candidates(package, inside, package_paths)
+        return package_candidates(package, inside, urdf_folder, package_paths)
+            .into_iter()
             .map(|(_, path)| path)
             .collect();
     }
@@ -163,6 +202,71 @@ mod tests {
         assert_eq!(
             resolve_mesh("package://arm/meshes/b.stl", &urdf, &search),
             Ok(None)
+        );
+    }
+
+    /// A ROS package's meshes without `package_paths`: the URDF inside a folder named like
+    /// the package, inside one whose `package.xml` names it, or beside a folder of its name.
+    #[test]
+    fn a_package_is_found_in_the_urdf_folder_tree() {
+        let dir = tempfile::tempdir().unwrap();
+        let root = dir.path().canonicalize().unwrap();
+        for folder in [
+            "ws/arm_a/urdf",
+            "ws/arm_a/meshes",
+            "ws/renamed/urdf",
+            "ws/tool_b/meshes",
+        ] {
+            fs::create_dir_all(root.join(folder)).unwrap();
+        }
+        fs::write(root.join("ws/arm_a/meshes/a.stl"), "solid").unwrap();
+        fs::write(root.join("ws/tool_b/meshes/b.stl"), "solid").unwrap();
+        fs::write(
+            root.join("ws/renamed/package.xml"),
+            "<package format=\"3\">\n  <name> arm_c </name>\n</package>\n",
+        )
+        .unwrap();
+        fs::create_dir_all(root.join("ws/renamed/meshes")).unwrap();
+        fs::write(root.join("ws/renamed/meshes/c.stl"), "solid").unwrap();
+        let cases = [
+            (
+                "ws/arm_a/urdf",
+                "package://arm_a/meshes/a.stl",
+                "ws/arm_a/meshes/a.stl",
+            ),
+            (
+                "ws/arm_a/urdf",
+                "package://tool_b/meshes/b.stl",
+                "ws/tool_b/meshes/b.stl",
+            ),
+            (
+                "ws/renamed/urdf",
+                "package://arm_c/meshes/c.stl",
+                "ws/renamed/meshes/c.stl",
+            ),
+        ];
+        for (urdf, uri, file) in cases {
+            assert_eq!(
+                resolve_mesh(uri, &root.join(urdf), &[]),
+                Ok(Some(root.join(file))),
+                "{uri}"
+            );
+        }
+        assert_eq!(
+            resolve_mesh(
+                "package://arm_d/meshes/a.stl",
+                &root.join("ws/arm_a/urdf"),
+                &[]
+            ),
+            Ok(None)
+        );
+        assert_eq!(
+            mesh_candidates(
+                "package://arm_a/meshes/x.stl",
+                &root.join("ws/arm_a/urdf"),
+                &[]
+            ),
+            [root.join("ws/arm_a/meshes/x.stl")]
         );
     }
 

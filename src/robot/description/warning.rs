@@ -14,7 +14,7 @@ pub enum DescriptionWarning {
         /// The mesh as the URDF names it.
         filename: String,
     },
-    /// A visual mesh in a format other than OBJ and STL: the visual element is left out.
+    /// A visual mesh in a format other than OBJ, STL and COLLADA: the visual element is left out.
     UnreadVisualMesh {
         /// The link.
         link: String,
@@ -57,7 +57,7 @@ impl fmt::Display for DescriptionWarning {
             }
             DescriptionWarning::UnreadVisualMesh { link, filename } => write!(
                 f,
-                "link `{link}`: visual mesh `{filename}` is neither OBJ nor STL, left out"
+                "link `{link}`: visual mesh `{filename}` is not OBJ, STL or COLLADA, left out"
             ),
             DescriptionWarning::MissingCollisionMesh {
                 link,

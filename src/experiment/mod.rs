@@ -19,6 +19,7 @@ mod run_folder;
 mod run_request;
 mod run_setup;
 pub mod setup;
+pub mod report;
 pub mod show;
 mod start_check;
 mod step_figures;

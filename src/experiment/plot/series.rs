@@ -53,15 +53,18 @@ impl Series {
         Ok(series)
     }
 
-    /// The points smoothed by a centred moving average over `window` points.
+    /// The points smoothed by a trailing moving average over `window` points.
     pub fn smoothed(&self, window: usize) -> Vec<(f64, f64)> {
         moving_average(&self.points, window)
     }
 }
 
-/// A centred moving average over `window` points (shorter at the ends).
+/// A trailing moving average over `window` points: each point the mean of itself and the
+/// `window - 1` points before it (fewer at the start), so a change shows from the trial it
+/// happens in on, never before it (a centred average would draw it up to half a window
+/// early, before its event).
 pub fn moving_average(points: &[(f64, f64)], window: usize) -> Vec<(f64, f64)> {
-    let half = window.max(1) / 2;
+    let window = window.max(1);
     let mut prefix = Vec::with_capacity(points.len() + 1);
     prefix.push(0.0);
     for (_, v) in points {
@@ -69,7 +72,7 @@ pub fn moving_average(points: &[(f64, f64)], window: usize) -> Vec<(f64, f64)> {
     }
     (0..points.len())
         .map(|i| {
-            let (lo, hi) = (i.saturating_sub(half), (i + half + 1).min(points.len()));
+            let (lo, hi) = ((i + 1).saturating_sub(window), i + 1);
             (points[i].0, (prefix[hi] - prefix[lo]) / (hi - lo) as f64)
         })
         .collect()
@@ -102,14 +105,29 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_moving_average_is_centred_and_shrinks_at_the_ends() {
+    fn the_moving_average_trails_and_shrinks_at_the_start() {
         let points: Vec<_> = (0..5).map(|i| (i as f64, i as f64 * 2.0)).collect();
         let smooth = moving_average(&points, 3);
         assert_eq!(
             smooth,
-            vec![(0.0, 1.0), (1.0, 2.0), (2.0, 4.0), (3.0, 6.0), (4.0, 7.0)]
+            vec![(0.0, 0.0), (1.0, 1.0), (2.0, 2.0), (3.0, 4.0), (4.0, 6.0)]
         );
         assert_eq!(moving_average(&points, 1), points);
+    }
+
+    #[test]
+    fn smoothing_never_moves_a_change_before_its_event() {
+        // A jump from 1 to 100 at trial 500 (the event's trial).
+        let points: Vec<_> = (1..=1000)
+            .map(|t| (f64::from(t), if t < 500 { 1.0 } else { 100.0 }))
+            .collect();
+        for window in [1, 2, 50, 61, 999] {
+            for (trial, value) in moving_average(&points, window) {
+                if trial < 500.0 {
+                    assert_eq!(value, 1.0, "window {window}, trial {trial}");
+                }
+            }
+        }
     }
 
     #[test]

@@ -5,7 +5,8 @@ mod arm;
 mod learners;
 
 pub use arm::{
-    arm_entry, arm_settings, fit_reach, fitted_boundaries, learned_ranges, load_arm, reach_space,
+    arm_entry, arm_settings, fit_reach, fitted_boundaries, learned_ranges, load_arm,
+    load_description, reach_space,
     LoadedArm, BOUNDARY_MARGIN_DEG,
 };
 pub use learners::{

@@ -16,7 +16,9 @@ const EYEHAND: &str = env!("CARGO_BIN_EXE_eyehand");
 /// The page's data: the JSON in its `report-data` script element.
 fn page_data(html: &Path) -> Value {
     let text = std::fs::read_to_string(html).unwrap();
-    let start = text.find(r#"<script id="report-data" type="application/json">"#).unwrap();
+    let start = text
+        .find(r#"<script id="report-data" type="application/json">"#)
+        .unwrap();
     let rest = &text[start..];
     let json = &rest[rest.find('>').unwrap() + 1..rest.find("</script>").unwrap()];
     serde_json::from_str(json).unwrap()
@@ -63,8 +65,15 @@ fn dom(html: &Path, hash: &str) -> String {
 fn screenshot(html: &Path, hash: &str) -> (usize, Vec<[u8; 3]>) {
     let dir = tempfile::tempdir().unwrap();
     let png = dir.path().join("shot.png");
-    let output = chromium(&url(html, hash), &[format!("--screenshot={}", png.display())]);
-    assert!(png.is_file(), "no screenshot: {}", String::from_utf8_lossy(&output.stderr));
+    let output = chromium(
+        &url(html, hash),
+        &[format!("--screenshot={}", png.display())],
+    );
+    assert!(
+        png.is_file(),
+        "no screenshot: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
     let decoder = png::Decoder::new(std::fs::File::open(&png).unwrap());
     let mut reader = decoder.read_info().unwrap();
     let mut buffer = vec![0; reader.output_buffer_size()];
@@ -84,7 +93,12 @@ fn is_arm(p: [u8; 3]) -> bool {
 }
 
 fn pose(value: &Value) -> Isometry3<f64> {
-    let v: Vec<f64> = value.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    let v: Vec<f64> = value
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
     Isometry3::from_parts(
         Translation3::new(v[0], v[1], v[2]),
         UnitQuaternion::from_quaternion(Quaternion::new(v[6], v[3], v[4], v[5])),
@@ -92,7 +106,12 @@ fn pose(value: &Value) -> Isometry3<f64> {
 }
 
 fn point(value: &Value) -> Point3<f64> {
-    let v: Vec<f64> = value.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    let v: Vec<f64> = value
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
     Point3::new(v[0], v[1], v[2])
 }
 
@@ -123,7 +142,9 @@ fn arm_near(shot: &(usize, Vec<[u8; 3]>), (x, y): (f64, f64)) -> bool {
             px >= 0
                 && py >= 0
                 && (px as usize) < *width
-                && pixels.get(py as usize * width + px as usize).is_some_and(|p| is_arm(*p))
+                && pixels
+                    .get(py as usize * width + px as usize)
+                    .is_some_and(|p| is_arm(*p))
         })
     })
 }
@@ -132,7 +153,12 @@ fn arm_near(shot: &(usize, Vec<[u8; 3]>), (x, y): (f64, f64)) -> bool {
 /// (whose body frames the page's must match).
 fn part_centres(data: &Value, model: &ArmModel, trial: &Value, k: usize) -> Vec<Point3<f64>> {
     let look = &trial["poses"][k];
-    let degrees: Vec<f64> = look["joints_deg"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+    let degrees: Vec<f64> = look["joints_deg"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
     let q = Joints::from_fn(degrees.len(), |i| degrees[i].to_radians());
     let mut frames = vec![Isometry3::identity()];
     frames.extend(model.link_frames(&q).iter().copied());
@@ -158,12 +184,18 @@ fn the_page_draws_the_arm_where_the_model_puts_it_and_the_slider_moves_it() {
     let mut config = Config::default_config();
     config.trials = 30;
     config.seed = 3;
-    let folder = run(&RunOptions::new(config, data_dir.path())).unwrap().folder;
+    let folder = run(&RunOptions::new(config, data_dir.path()))
+        .unwrap()
+        .folder;
     let status = Command::new(EYEHAND)
         .args(["report", folder.to_str().unwrap(), "--trial", "30"])
         .output()
         .unwrap();
-    assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
     let html = folder.join("report.html");
     let data = page_data(&html);
     let trial = &data["trials"][0];
@@ -175,30 +207,70 @@ fn the_page_draws_the_arm_where_the_model_puts_it_and_the_slider_moves_it() {
     for k in [0, last] {
         let hash = format!("trial=30&pose={k}");
         let drawn = dom(&html, &hash);
-        assert!(drawn.contains(r#"data-scene="drawn""#), "{}", &drawn[..drawn.len().min(300)]);
+        assert!(
+            drawn.contains(r#"data-scene="drawn""#),
+            "{}",
+            &drawn[..drawn.len().min(300)]
+        );
         assert!(drawn.contains(&format!(r#"data-pose="30:{k}""#)));
         let shot = screenshot(&html, &hash);
         let centres = part_centres(&data, &model, trial, k);
-        let hits = centres.iter().filter(|c| arm_near(&shot, projected(&data["view"], c))).count();
-        assert!(hits >= centres.len() - 1, "pose {k}: {hits} of {} part centres drawn in the arm's colour", centres.len());
+        let hits = centres
+            .iter()
+            .filter(|c| arm_near(&shot, projected(&data["view"], c)))
+            .count();
+        assert!(
+            hits >= centres.len() - 1,
+            "pose {k}: {hits} of {} part centres drawn in the arm's colour",
+            centres.len()
+        );
         shots.push(shot);
     }
-    let changed = shots[0].1.iter().zip(&shots[1].1).filter(|(a, b)| is_arm(**a) != is_arm(**b)).count();
-    assert!(changed > 2000, "moving the slider changed {changed} arm pixels");
+    let changed = shots[0]
+        .1
+        .iter()
+        .zip(&shots[1].1)
+        .filter(|(a, b)| is_arm(**a) != is_arm(**b))
+        .count();
+    assert!(
+        changed > 2000,
+        "moving the slider changed {changed} arm pixels"
+    );
 }
 
 /// A Panda run (`configs/arms/panda.conf`) with `run --report`.
 fn panda_run(data: &Path) -> PathBuf {
     let output = Command::new(EYEHAND)
-        .args(["run", "--config", "configs/arms/panda.conf", "--trials", "10", "--seed", "2"])
-        .args(["--quiet", "--no-plot", "--report", "--data", data.to_str().unwrap()])
+        .args([
+            "run",
+            "--config",
+            "configs/arms/panda.conf",
+            "--trials",
+            "10",
+            "--seed",
+            "2",
+        ])
+        .args([
+            "--quiet",
+            "--no-plot",
+            "--report",
+            "--data",
+            data.to_str().unwrap(),
+        ])
         .output()
         .unwrap();
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
     let stdout = String::from_utf8(output.stdout).unwrap();
     let mut lines = stdout.lines();
     let folder = PathBuf::from(lines.next().unwrap());
-    assert_eq!(lines.next().map(PathBuf::from), Some(folder.join("report.html")));
+    assert_eq!(
+        lines.next().map(PathBuf::from),
+        Some(folder.join("report.html"))
+    );
     folder
 }
 
@@ -217,8 +289,17 @@ fn a_panda_runs_page_shows_the_pandas_meshes() {
         .filter(|p| p["shape"]["kind"] == "mesh")
         .map(|p| p["link"].as_str().unwrap())
         .collect();
-    for link in ["panda_link0", "panda_link3", "panda_link7", "panda_hand", "panda_leftfinger"] {
-        assert!(mesh_links.contains(&link), "{link} is drawn from its mesh: {mesh_links:?}");
+    for link in [
+        "panda_link0",
+        "panda_link3",
+        "panda_link7",
+        "panda_hand",
+        "panda_leftfinger",
+    ] {
+        assert!(
+            mesh_links.contains(&link),
+            "{link} is drawn from its mesh: {mesh_links:?}"
+        );
     }
     let triangles: usize = arm["meshes"]
         .as_array()
@@ -228,14 +309,21 @@ fn a_panda_runs_page_shows_the_pandas_meshes() {
         .sum();
     assert!(triangles > 1000, "{triangles} triangles");
     let drawn = dom(&html, "");
-    assert!(drawn.contains(r#"data-scene="drawn""#), "{}", &drawn[..drawn.len().min(300)]);
+    assert!(
+        drawn.contains(r#"data-scene="drawn""#),
+        "{}",
+        &drawn[..drawn.len().min(300)]
+    );
     let (width, pixels) = screenshot(&html, "");
     let in_view = pixels
         .iter()
         .enumerate()
         .filter(|(i, p)| {
             let (x, y) = ((i % width) as u32, (i / width) as u32);
-            x < VIEW_ORIGIN.0 + VIEW_SIZE.0 && y >= VIEW_ORIGIN.1 && y < VIEW_ORIGIN.1 + VIEW_SIZE.1 && is_arm(**p)
+            x < VIEW_ORIGIN.0 + VIEW_SIZE.0
+                && y >= VIEW_ORIGIN.1
+                && y < VIEW_ORIGIN.1 + VIEW_SIZE.1
+                && is_arm(**p)
         })
         .count();
     assert!(in_view > 3000, "{in_view} arm pixels in the 3-D view");
@@ -244,7 +332,10 @@ fn a_panda_runs_page_shows_the_pandas_meshes() {
 #[test]
 fn a_folder_that_is_no_run_is_refused_before_any_work() {
     let empty = tempfile::tempdir().unwrap();
-    let output = Command::new(EYEHAND).args(["report", empty.path().to_str().unwrap()]).output().unwrap();
+    let output = Command::new(EYEHAND)
+        .args(["report", empty.path().to_str().unwrap()])
+        .output()
+        .unwrap();
     assert_eq!(output.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&output.stderr).contains("neither a run folder"));
 }

@@ -10,7 +10,7 @@ const el = (tag, attrs = {}, children = []) => {
   for (const c of [].concat(children)) node.append(c);
   return node;
 };
-const PALETTE = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#8c564b', '#e377c2', '#17becf', '#bcbd22', '#7f7f7f', '#ff7f0e'];
+const PALETTE = ['#1f77b4', '#ff7f0e', '#2ca02c', '#9467bd', '#8c564b', '#e377c2', '#17becf', '#bcbd22', '#7f7f7f', '#ff7f0e'];
 const ARM_COLOUR = 0xe07020;
 
 // Numbers as a reader wants them: four significant digits, scientific below 1e-4.
@@ -138,7 +138,7 @@ async function drawArm(section) {
     label.textContent = `trial ${trial.trial}, pose ${k} of ${trial.poses.length - 1} (${step})` +
       (trial.failure ? ` — failed: ${trial.failure}` : '');
     const rows = [
-      ['joints (°)', pose.joints_deg.map(fmt).join(', ')],
+      ['joints (°)', pose.joints_deg.map((q) => q.toFixed(2)).join(', ')],
       ['reading c', pose.reading ? pose.reading.map(fmt).join(', ') : `not seen: ${pose.not_seen}`],
       ['distance to the goal (mm)', fmt(pose.distance_mm)],
       ['simulated time (s)', fmt(pose.sim_time_s)],
@@ -209,7 +209,7 @@ function drawPanel(container, panel) {
     if (chart) chart.destroy();
     const series = [{ label: 'trial', value: (u, v) => v == null ? '—' : String(v) }].concat(panel.series.map((s, i) => ({
       label: s.label,
-      stroke: s.faint ? 'rgba(90,110,200,0.35)' : PALETTE[(i + (panel.series[0].faint ? 0 : 0)) % PALETTE.length],
+      stroke: s.faint ? 'rgba(90,110,200,0.35)' : PALETTE[(i - (panel.series[0].faint ? 1 : 0)) % PALETTE.length],
       width: s.faint ? 1 : 2,
       points: { show: false },
       value: (u, v) => fmt(v),

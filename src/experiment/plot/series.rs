@@ -94,10 +94,38 @@ pub(super) fn decimated(points: &[(f64, f64)], at_most: usize) -> Vec<(f64, f64)
 
 /// The trials at which the run's events happened, from its `info` file.
 pub fn event_trials(info: &str) -> Vec<f64> {
+    event_marks(info)
+        .into_iter()
+        .map(|(trial, _)| trial)
+        .collect()
+}
+
+/// The run's events from its `info` file: the trial each happened at and the event as
+/// written (`rotate:1500:90`), the label of its mark.
+pub fn event_marks(info: &str) -> Vec<(f64, String)> {
     info.lines()
         .filter_map(|l| l.strip_prefix("event "))
-        .filter_map(|e| e.split(':').nth(1)?.parse().ok())
+        .filter_map(|e| Some((e.split(':').nth(1)?.parse().ok()?, e.trim().to_string())))
         .collect()
+}
+
+/// The unit a time used of at most `max_minutes` reads best in, and the factor from
+/// minutes to it: minutes from one minute on, else seconds from one second on, else ms.
+pub fn time_unit(max_minutes: f64) -> (&'static str, f64) {
+    if max_minutes >= 1.0 {
+        ("minutes", 1.0)
+    } else if max_minutes >= 1.0 / 60.0 {
+        ("s", 60.0)
+    } else {
+        ("ms", 60_000.0)
+    }
+}
+
+/// `points` (trial, minutes) in the unit [`time_unit`] picks for them, with its name.
+pub fn time_in_unit(points: &[(f64, f64)]) -> (&'static str, Vec<(f64, f64)>) {
+    let max = points.iter().map(|p| p.1).fold(0.0, f64::max);
+    let (unit, factor) = time_unit(max);
+    (unit, points.iter().map(|&(t, m)| (t, m * factor)).collect())
 }
 
 #[cfg(test)]
@@ -172,5 +200,17 @@ mod tests {
     fn events_are_read_from_info() {
         let info = "host x\nevent rotate:1500:90\nevent elongate:20:2:-10\nseed 1\n";
         assert_eq!(event_trials(info), vec![1500.0, 20.0]);
+        let marks = event_marks(info);
+        assert_eq!(marks[1], (20.0, "elongate:20:2:-10".to_string()));
+    }
+
+    #[test]
+    fn time_reads_in_minutes_seconds_or_milliseconds() {
+        assert_eq!(time_unit(12.0), ("minutes", 1.0));
+        assert_eq!(time_unit(0.5), ("s", 60.0));
+        assert_eq!(time_unit(0.0025), ("ms", 60_000.0));
+        let (unit, points) = time_in_unit(&[(1.0, 0.001), (2.0, 0.0025)]);
+        assert_eq!(unit, "ms");
+        assert!((points[1].1 - 150.0).abs() < 1e-9);
     }
 }

@@ -8,8 +8,8 @@ use crate::experiment::show::RecordedRun;
 use crate::robot::description::{
     auto_camera_link, Chain, GeometryElement, RobotDescription, Shape, TriangleMesh,
 };
-use crate::robot::{ArmModel, DescriptionError, Joints};
 use crate::robot::CameraLink;
+use crate::robot::{ArmModel, DescriptionError, Joints};
 use nalgebra::Isometry3;
 use serde_json::{json, Value};
 use std::sync::Arc;

@@ -41,7 +41,9 @@ mod tests {
         let pose = Isometry3::from_parts(Translation3::new(0.5, -0.25, 1.0), turn);
         let [x, y, z, qx, qy, qz, qw] = pose_json(&pose);
         assert_eq!((x, y, z), (0.5, -0.25, 1.0));
-        assert!(qx.abs() < 1e-7 && qy.abs() < 1e-7 && (qz.abs() - 1.0).abs() < 1e-7 && qw.abs() < 1e-7);
+        assert!(
+            qx.abs() < 1e-7 && qy.abs() < 1e-7 && (qz.abs() - 1.0).abs() < 1e-7 && qw.abs() < 1e-7
+        );
         assert_eq!(base64_f32(&[1.0]), "AACAPw==");
         assert_eq!(base64_u32(&[1, 256]), "AQAAAAABAAA=");
         assert!(png_data_url(&[0x89]).starts_with("data:image/png;base64,iQ=="));

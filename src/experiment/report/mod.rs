@@ -47,7 +47,9 @@ impl Default for ReportOptions {
 #[non_exhaustive]
 pub enum ReportError {
     /// The folder is neither a run's nor a study's.
-    #[error("{0} is neither a run folder (no info file) nor a compare or sweep folder (no cells.json)")]
+    #[error(
+        "{0} is neither a run folder (no info file) nor a compare or sweep folder (no cells.json)"
+    )]
     NotAFolder(PathBuf),
     /// The run could not be replayed (or a trial asked for is not in it).
     #[error(transparent)]
@@ -189,7 +191,10 @@ fn view_of(scene: &ArmScene, run: &RecordedRun, trials: &[Value]) -> Value {
     }
     points.push(Point3::origin());
     let (low, high) = points.iter().fold(
-        (Point3::from([f64::INFINITY; 3]), Point3::from([f64::NEG_INFINITY; 3])),
+        (
+            Point3::from([f64::INFINITY; 3]),
+            Point3::from([f64::NEG_INFINITY; 3]),
+        ),
         |(low, high), p| (low.inf(p), high.sup(p)),
     );
     let target = nalgebra::center(&low, &high);

@@ -71,12 +71,18 @@ mod tests {
             ("OrbitControls.js", THREE_ORBIT),
             ("uPlot", UPLOT),
         ] {
-            assert!(!text.contains("</script"), "{name} would end its script element");
+            assert!(
+                !text.contains("</script"),
+                "{name} would end its script element"
+            );
         }
         let html = page("a <run> & more", &json!({"info": "note </script> here"}));
         assert!(html.contains("<title>a &lt;run&gt; &amp; more</title>"));
         assert_eq!(html.matches("</script>").count(), 6);
         assert!(html.contains(r#"note <\/script> here"#));
-        assert!(!html.contains(" src=\"http") && !html.contains("<link"), "no network");
+        assert!(
+            !html.contains(" src=\"http") && !html.contains("<link"),
+            "no network"
+        );
     }
 }

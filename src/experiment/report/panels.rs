@@ -3,7 +3,7 @@
 //! used) with the run's events; for a study, one panel per feedback step with a curve per
 //! finished cell.
 
-use crate::experiment::plot::{moving_average, PlotError, Series, PANELS};
+use crate::experiment::plot::{moving_average, time_in_unit, PlotError, Series, PANELS};
 use crate::experiment::study::StudyFolder;
 use crate::experiment::study::StudyPlan;
 use serde_json::{json, Value};
@@ -53,12 +53,13 @@ pub(super) fn run_panels(run_dir: &Path, smooth: usize) -> Result<Vec<Value>, Pl
         }));
     }
     let nodes = read(run_dir, "nodes")?;
+    let (time_unit, time) = time_in_unit(&nodes.minutes);
     let figures = [
         (PANELS[5], "nodes", nodes.points.clone()),
         (PANELS[6], "bins", read(run_dir, "bins")?.points),
         (PANELS[7], "kB", read(run_dir, "mem")?.points),
         (PANELS[8], "patterns", read(run_dir, "patterns")?.points),
-        (PANELS[9], "minutes", nodes.minutes.clone()),
+        (PANELS[9], time_unit, time),
     ];
     for (title, unit, points) in figures {
         let trials: Vec<f64> = points.iter().map(|p| p.0).collect();
@@ -105,7 +106,8 @@ pub(super) fn study_panels(
         let series: Vec<Value> = curves
             .iter()
             .map(|(label, curve)| {
-                let values: Vec<Option<f64>> = trials.iter().map(|t| curve.get(t).copied()).collect();
+                let values: Vec<Option<f64>> =
+                    trials.iter().map(|t| curve.get(t).copied()).collect();
                 json!({"label": label, "values": values})
             })
             .collect();

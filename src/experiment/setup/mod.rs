@@ -6,8 +6,7 @@ mod learners;
 
 pub use arm::{
     arm_entry, arm_settings, fit_reach, fitted_boundaries, learned_ranges, load_arm,
-    load_description, reach_space,
-    LoadedArm, BOUNDARY_MARGIN_DEG,
+    load_description, reach_space, LoadedArm, BOUNDARY_MARGIN_DEG,
 };
 pub use learners::{
     ffn_settings, input_bounds, issgp_settings, kohonen_settings, lin5_settings, lin8_settings,

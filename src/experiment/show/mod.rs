@@ -24,7 +24,6 @@ pub use recorded_run::RecordedRun;
 pub use replay::{replay, TrialTrace};
 pub(crate) use trial_files::{remove_scratch_patterns, show_folder};
 
-
 pub use trial_files::{show_trials, CameraPictures, ShowReport};
 pub use trial_range::TrialRange;
 pub use watch::Look;

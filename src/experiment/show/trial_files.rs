@@ -129,8 +129,8 @@ fn write_trial(
     let path = folder.join("arm.png");
     write_arm_image(&path, trace, &arm_title(run_dir, trace)).map_err(failed(path))?;
     let path = folder.join("trial.json");
-    let text =
-        serde_json::to_string_pretty(&trial_json(trace, &pictures.camera)).map_err(|e| e.to_string());
+    let text = serde_json::to_string_pretty(&trial_json(trace, &pictures.camera))
+        .map_err(|e| e.to_string());
     text.and_then(|t| std::fs::write(&path, t + "\n").map_err(|e| e.to_string()))
         .map_err(failed(path))?;
     Ok(images.len())

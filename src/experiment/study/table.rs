@@ -9,7 +9,7 @@ use std::collections::BTreeMap;
 use std::path::PathBuf;
 
 /// Trials the curves are smoothed over.
-const CURVE_SMOOTHING: usize = 50;
+pub(super) const CURVE_SMOOTHING: usize = 50;
 /// Trials in the running 4-step mean whose first reach of a level the compare table gives.
 pub const TRIALS_TO_WINDOW: usize = 200;
 /// The 4-step levels (mm) the compare table gives each seed's trials to.
@@ -150,14 +150,15 @@ pub fn sweep_table(runs: &[CellResult]) -> String {
     table
 }
 
-/// Each label's 4-step distance, smoothed over 50 trials and averaged over its seeds.
-pub fn four_step_curves(runs: &[CellResult]) -> Result<Vec<Curve>, PlotError> {
+/// Each label's distance after feedback step `step` (1..5), smoothed over the last 50
+/// trials and averaged over its seeds.
+pub fn step_curves(runs: &[CellResult], step: usize) -> Result<Vec<Curve>, PlotError> {
     by_label(runs)
         .into_iter()
         .map(|(label, group)| {
             let mut sums: BTreeMap<u64, (f64, usize)> = BTreeMap::new();
             for run in group {
-                let path = run.folder.join("4step");
+                let path = run.folder.join(format!("{step}step"));
                 let series =
                     Series::read(&path).map_err(|source| PlotError::Read { path, source })?;
                 for (trial, value) in moving_average(&series.points, CURVE_SMOOTHING) {

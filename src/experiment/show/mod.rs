@@ -8,6 +8,7 @@ mod camera_image;
 mod divergence;
 mod recorded_run;
 mod replay;
+mod replay_bar;
 mod trial_files;
 mod trial_range;
 mod watch;

@@ -211,6 +211,7 @@ function drawPanel(container, panel) {
       label: s.label,
       stroke: s.faint ? 'rgba(90,110,200,0.35)' : PALETTE[(i - (panel.series[0].faint ? 1 : 0)) % PALETTE.length],
       width: s.faint ? 1 : 2,
+      spanGaps: true,
       points: { show: false },
       value: (u, v) => fmt(v),
     })));
@@ -274,6 +275,8 @@ async function main() {
   if (data.summary) tables.append(el('h3', {}, 'summary.json'), keyValueTable(summaryRows(data.summary)));
   if (data.info) tables.append(el('h3', {}, 'info'), keyValueTable(infoRows(data.info)));
   document.documentElement.dataset.scene = 'drawn';
+  // Milliseconds from the page's start to everything drawn.
+  document.documentElement.dataset.drawnMs = performance.now().toFixed(0);
 }
 
 main().catch((e) => {

@@ -149,14 +149,13 @@ pub(super) fn draw_panel(area: &Area<'_>, panel: &Panel<'_>) -> Result<(), Strin
                         RED.stroke_width(1),
                     ))
                     .map_err(|e| e.to_string())?;
-                let (x, y) = chart.backend_coord(&(trial, y1));
                 let style = (FAMILY, 12).into_font().color(&RED);
-                area.draw(&Text::new(
-                    label.as_str(),
-                    (x + 4, y + 4 + 14 * k as i32),
-                    style,
-                ))
-                .map_err(|e| e.to_string())?;
+                let offset = (4, 4 + 14 * k as i32);
+                chart
+                    .draw_series(std::iter::once(
+                        EmptyElement::at((trial, y1)) + Text::new(label.clone(), offset, style),
+                    ))
+                    .map_err(|e| e.to_string())?;
             }
             for line in &panel.lines {
                 chart
@@ -235,14 +234,15 @@ mod tests {
     /// The colour of the test's line.
     const INK: RGBColor = RGBColor(200, 0, 100);
 
-    /// Draws `points` into the left panel of a 2×1 image, then counts the line's pixels
-    /// outside that panel (in the right one).
-    fn pixels_outside(points: &[(f64, f64)], log_y: bool) -> usize {
+    /// Size of the test's image: two panels side by side.
+    const SIZE: (u32, u32) = (800, 300);
+
+    /// Draws `points` (and an event halfway) into the left panel of a 2×1 image.
+    fn drawn(points: &[(f64, f64)], log_y: bool) -> Vec<u8> {
         register_font().unwrap();
-        let (w, h) = (800u32, 300u32);
-        let mut rgb = vec![255u8; (w * h * 3) as usize];
+        let mut rgb = vec![255u8; (SIZE.0 * SIZE.1 * 3) as usize];
         {
-            let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+            let root = BitMapBackend::with_buffer(&mut rgb, SIZE).into_drawing_area();
             let panels = root.split_evenly((1, 2));
             let line = Line {
                 points,
@@ -259,13 +259,41 @@ mod tests {
             draw_panel(&panels[0], &panel).unwrap();
             root.present().unwrap();
         }
+        rgb
+    }
+
+    /// The pixels (x, y) of `rgb` for which `colour` holds.
+    fn pixels(rgb: &[u8], colour: impl Fn([u8; 3]) -> bool) -> Vec<(u32, u32)> {
+        let (w, h) = SIZE;
         (0..h)
-            .flat_map(|y| (w / 2..w).map(move |x| (x, y)))
+            .flat_map(|y| (0..w).map(move |x| (x, y)))
             .filter(|&(x, y)| {
                 let i = ((y * w + x) * 3) as usize;
-                rgb[i..i + 3] == [INK.0, INK.1, INK.2]
+                colour([rgb[i], rgb[i + 1], rgb[i + 2]])
             })
+            .collect()
+    }
+
+    /// The line's pixels outside its panel (in the right one).
+    fn pixels_outside(points: &[(f64, f64)], log_y: bool) -> usize {
+        let ink = |p: [u8; 3]| p == [INK.0, INK.1, INK.2];
+        let rgb = drawn(points, log_y);
+        pixels(&rgb, ink)
+            .iter()
+            .filter(|(x, _)| *x >= SIZE.0 / 2)
             .count()
+    }
+
+    #[test]
+    fn events_are_marked_and_labelled() {
+        let points: Vec<(f64, f64)> = (1..=6).map(|t| (f64::from(t), 1.0)).collect();
+        let rgb = drawn(&points, false);
+        let red = pixels(&rgb, |[r, g, b]| r > 200 && g < 160 && b < 160);
+        let mut columns: Vec<u32> = red.iter().map(|(x, _)| *x).collect();
+        columns.sort_unstable();
+        columns.dedup();
+        // The line is one column; its label's letters span dozens more.
+        assert!(columns.len() > 30, "red in {} columns", columns.len());
     }
 
     #[test]

@@ -136,7 +136,8 @@ fn window_line(runs: &[CellResult]) -> String {
     format!(
         "Distances: mean over the last {} trials of each run (summary.json's `window`); \
          trials to a level: the first trial at which the mean 4-step distance of the last \
-         {TRIALS_TO_WINDOW} trials is below it; `-`: none.\n\n",
+         {TRIALS_TO_WINDOW} trials is below it (`never`: not reached); `-`: no such figure \
+         (no such step, or a learner that counts no nodes).\n\n",
         windows.join(" or ")
     )
 }
@@ -198,11 +199,12 @@ pub fn sweep_table(runs: &[CellResult]) -> String {
 }
 
 /// Each label's distance after feedback step `step` (1..5), smoothed over the last 50
-/// trials and averaged over its seeds.
+/// trials and averaged over its seeds, at the trials every seed has.
 pub fn step_curves(runs: &[CellResult], step: usize) -> Result<Vec<Curve>, PlotError> {
     by_label(runs)
         .into_iter()
         .map(|(label, group)| {
+            let seeds = group.len();
             let mut sums: BTreeMap<u64, (f64, usize)> = BTreeMap::new();
             for run in group {
                 let path = run.folder.join(format!("{step}step"));
@@ -213,8 +215,10 @@ pub fn step_curves(runs: &[CellResult], step: usize) -> Result<Vec<Curve>, PlotE
                     *entry = (entry.0 + value, entry.1 + 1);
                 }
             }
+            // Only trials every seed has: a mean over some of them would jump.
             let points = sums
                 .into_iter()
+                .filter(|(_, (_, n))| *n == seeds)
                 .map(|(t, (s, n))| (t as f64, s / n as f64))
                 .collect();
             Ok(Curve {

@@ -4,6 +4,7 @@
 //! missing.
 
 use eyehand::experiment::report::{VIEW_ORIGIN, VIEW_SIZE};
+use eyehand::experiment::show::{show_trials, TrialRange};
 use eyehand::experiment::{run, Config, RunOptions};
 use eyehand::robot::{ArmModel, Joints};
 use nalgebra::{Isometry3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
@@ -275,9 +276,12 @@ fn panda_run(data: &Path) -> PathBuf {
 }
 
 #[test]
-fn a_panda_runs_page_shows_the_pandas_meshes() {
+fn a_panda_runs_page_shows_the_pandas_meshes_and_show_draws_its_trials() {
     let data_dir = tempfile::tempdir().unwrap();
     let folder = panda_run(data_dir.path());
+    let shown = show_trials(&folder, TrialRange::single(10)).unwrap();
+    assert_eq!(shown.folders, vec![folder.join("show").join("10")]);
+    assert!(shown.camera_images >= 2, "{shown:?}");
     let html = folder.join("report.html");
     let data = page_data(&html);
     let arm = &data["arm"];

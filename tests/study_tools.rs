@@ -215,6 +215,20 @@ fn compare_gives_each_seeds_trials_to_a_level_and_to_recover_after_the_event() {
         row("lin5").ends_with("| 222, 247 | never, never | 120, 121 |"),
         "{stdout}"
     );
+    // The comparison's page: a panel per feedback step, a curve per cell, the table.
+    let out = eyehand(&["report", lines[0]], data.path());
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let page = std::fs::read_to_string(data.path().join(lines[0]).join("report.html")).unwrap();
+    assert!(page.contains(r#""kind":"study""#));
+    assert_eq!(page.matches(r#""title":"distance after step "#).count(), 5);
+    assert!(
+        page.contains(r#""label":"3: lin5 seed 2""#),
+        "a curve per cell"
+    );
+    assert!(
+        page.contains("trials to recover after rotate:250:30"),
+        "its table"
+    );
 }
 
 #[test]

@@ -8,7 +8,7 @@
 //! so the blob's pixels stay exactly what the camera saw. Where the camera does not see the
 //! object (its reading fails), the image shows the scene alone.
 
-use super::watch::Look;
+use super::tracer::Look;
 use crate::camera::{CameraModel, PixelCoverage, RaycastCamera, Scene};
 use crate::experiment::plot::{register_font, FAMILY};
 use plotters::prelude::*;

@@ -179,13 +179,13 @@ pub(super) fn draw_panel(area: &Area<'_>, panel: &Panel<'_>) -> Result<(), Strin
 const Y_LABELS: usize = 12;
 
 /// Decimals that tell apart the labels of a linear axis from `low` to `high` with about
-/// `labels` ticks: as many as the tick step needs (a 0.0005 step gets 4).
+/// `labels` ticks: as many as the tick step needs (a 0.0002 step gets 4, a 100 step none).
 pub(super) fn tick_decimals(low: f64, high: f64, labels: usize) -> usize {
     let step = (high - low) / labels.max(1) as f64;
     if !(step.is_finite() && step > 0.0) {
         return 0;
     }
-    (-step.log10().floor()).max(0.0) as usize + 1
+    (-step.log10()).ceil().max(0.0) as usize
 }
 
 /// A log axis's label: plain for ordinary magnitudes, `1e-5` style for tiny or huge ones.
@@ -329,6 +329,12 @@ mod tests {
             distinct.dedup();
             assert_eq!(distinct, labels, "{low}..{high}");
             assert!(labels.len() >= 3, "{labels:?}");
+            if high - low >= 12.0 {
+                assert!(
+                    labels.iter().all(|l| !l.contains('.')),
+                    "whole numbers: {labels:?}"
+                );
+            }
         }
     }
 

@@ -2,7 +2,7 @@
 //! applies to and the rule its value must meet on its own. The parser, the defaults,
 //! `info`, `config defaults`, the error messages and docs/CONFIG.md all come from here.
 
-use super::declaration::{meets_rule, one_line, Declaration};
+use super::declaration::{bad_value, meets_rule, one_line, Declaration};
 use super::package_paths::PackagePaths;
 use super::scope::{
     Scope, BOUNDED, DYNAMIC, FFN, ISSGP, KOHONEN, LIN8, LWPR, MLP, NESTED, NETS, NNW, PERCEPTRONS,

@@ -2,6 +2,7 @@
 //! is judged against the others' final values; each entry's own range is declared beside
 //! it (`entries.rs`) and checked first.
 
+mod cost;
 mod issgp;
 mod lwpr;
 mod sensing;
@@ -43,7 +44,8 @@ impl Config {
         self.check_timing()?;
         self.check_arm()?;
         self.check_lwpr()?;
-        self.check_issgp()
+        self.check_issgp()?;
+        self.check_cost()
     }
 
     /// The arm entries on their own; whether the URDF has such a link and joints is

@@ -244,6 +244,11 @@ pub struct ObstacleBox {
     pub size_cm: [f64; 3],
 }
 
+/// The farthest an obstacle's centre may lie from the world's origin on an axis (cm): 100 m.
+pub(super) const OBSTACLE_REACH_CM: f64 = 1e4;
+/// The thinnest and the longest side of an obstacle (cm): 0.1 mm and 100 m.
+pub(super) const OBSTACLE_SIDE_CM: (f64, f64) = (0.01, 1e4);
+
 impl ObstacleBox {
     /// `[x, y, z, sx, sy, sz]`: its centre and side lengths (cm), as the config line and
     /// `summary.json` give them.
@@ -281,6 +286,20 @@ impl ConfigValue for ObstacleBox {
         let (centre, size) = values.split_at(3);
         if size.iter().any(|&side| side <= 0.0) {
             return Err(bad("every side must be above 0"));
+        }
+        if centre.iter().any(|c| c.abs() > OBSTACLE_REACH_CM) {
+            return Err(bad(&format!(
+                "its centre must be within {OBSTACLE_REACH_CM} cm of the world's origin on each axis"
+            )));
+        }
+        if size
+            .iter()
+            .any(|side| !(OBSTACLE_SIDE_CM.0..=OBSTACLE_SIDE_CM.1).contains(side))
+        {
+            return Err(bad(&format!(
+                "every side must be from {} to {} cm",
+                OBSTACLE_SIDE_CM.0, OBSTACLE_SIDE_CM.1
+            )));
         }
         Ok(ObstacleBox {
             centre_cm: [centre[0], centre[1], centre[2]],

@@ -16,6 +16,7 @@ pub use page::{VIEW_ORIGIN, VIEW_SIZE};
 use crate::experiment::plot::PlotError;
 use crate::experiment::show::{RecordedRun, ShowError};
 use crate::experiment::study::{StudyError, StudyFolder};
+use crate::files::{read_text, MAX_RUN_FILE_BYTES};
 use crate::robot::DescriptionError;
 use nalgebra::{Point3, Vector3};
 use serde_json::{json, Value};
@@ -122,8 +123,8 @@ fn run_report(dir: &Path, options: &ReportOptions) -> Result<(String, Value), Re
         .iter()
         .map(|e| json!({"trial": e.trial(), "label": e.to_string()}))
         .collect();
-    let info = std::fs::read_to_string(dir.join("info")).unwrap_or_default();
-    let summary: Value = std::fs::read_to_string(dir.join("summary.json"))
+    let info = read_text(&dir.join("info"), MAX_RUN_FILE_BYTES).unwrap_or_default();
+    let summary: Value = read_text(&dir.join("summary.json"), MAX_RUN_FILE_BYTES)
         .ok()
         .and_then(|text| serde_json::from_str(&text).ok())
         .unwrap_or(Value::Null);
@@ -229,7 +230,7 @@ fn study_report(dir: &Path, options: &ReportOptions) -> Result<(String, Value), 
         "title": title,
         "panels": panels::study_panels(&folder, &plan, options.smooth)?,
         "events": events,
-        "table": std::fs::read_to_string(dir.join("table.md")).ok(),
+        "table": read_text(&dir.join("table.md"), MAX_RUN_FILE_BYTES).ok(),
     });
     Ok((title, data))
 }

@@ -3,7 +3,7 @@
 use super::ValueError;
 use crate::control::ServoMode;
 use crate::learn::change::ChangeRecovery;
-use crate::learn::{MergeStrategy, Method};
+use crate::learn::{BroydenUpdate, MergeStrategy, Method};
 use crate::robot::{CameraLink, LearnedJoints};
 use std::fmt;
 use std::str::FromStr;
@@ -92,7 +92,8 @@ named_value!(
     CameraKind,
     MergeStrategy,
     ChangeRecovery,
-    ServoMode
+    ServoMode,
+    BroydenUpdate
 );
 
 /// `parts` comma-separated items of `raw`, each parsed by `item`; `expected` names the form.
@@ -344,6 +345,7 @@ choice_names!(SimKind, "simulator", Kinematic => "kinematic", Dynamic => "dynami
 choice_names!(CameraKind, "camera", Projection => "projection", Raycast => "raycast");
 choice_names!(MergeStrategy, "merge strategy", Thesis => "thesis", ChangeDetection => "change_detection");
 choice_names!(ChangeRecovery, "change recovery", Correct => "correct", Forget => "forget");
+choice_names!(BroydenUpdate, "broyden update", Broyden => "broyden", Rls => "rls");
 choice_names!(ServoMode, "servo mode", Step => "step", Continuous => "continuous");
 
 #[cfg(test)]

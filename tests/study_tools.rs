@@ -185,13 +185,21 @@ fn compare_gives_each_seeds_trials_to_a_level_and_to_recover_after_the_event() {
     assert!(out.status.success(), "{}", text(&out.stderr));
     let stdout = text(&out.stdout);
     let lines: Vec<&str> = stdout.lines().collect();
+    let header = lines
+        .iter()
+        .position(|l| l.starts_with("| method |"))
+        .unwrap();
     assert!(
-        lines[1].ends_with(
+        lines[header - 2].starts_with("Distances: mean over the last 40 trials of each run"),
+        "the table states its window: {stdout}"
+    );
+    assert!(
+        lines[header].ends_with(
             "| nodes | trials to 1 mm | trials to 0.1 mm | trials to recover after rotate:250:30 |"
         ),
         "{stdout}"
     );
-    assert_eq!(lines[2].matches("---|").count(), 13, "{stdout}");
+    assert_eq!(lines[header + 1].matches("---|").count(), 13, "{stdout}");
     let row = |method: &str| {
         lines
             .iter()
@@ -207,6 +215,20 @@ fn compare_gives_each_seeds_trials_to_a_level_and_to_recover_after_the_event() {
         row("lin5").ends_with("| 222, 247 | never, never | 120, 121 |"),
         "{stdout}"
     );
+    // The comparison's page: a panel per feedback step, a curve per cell, the table.
+    let out = eyehand(&["report", lines[0]], data.path());
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let page = std::fs::read_to_string(data.path().join(lines[0]).join("report.html")).unwrap();
+    assert!(page.contains(r#""kind":"study""#));
+    assert_eq!(page.matches(r#""title":"distance after step "#).count(), 5);
+    assert!(
+        page.contains(r#""label":"3: lin5 seed 2""#),
+        "a curve per cell"
+    );
+    assert!(
+        page.contains("trials to recover after rotate:250:30"),
+        "its table"
+    );
 }
 
 #[test]
@@ -216,6 +238,7 @@ fn compare_plans_cover_every_method_and_seed_and_refuse_duplicates() {
         trials: 10,
         seeds: vec![4, 5, 6],
         events: vec!["rotate:5:90".parse().unwrap()],
+        sets: Vec::new(),
         configs: Some(configs().to_path_buf()),
     };
     let plan = compare_plan(&request).unwrap();
@@ -737,4 +760,32 @@ fn a_study_on_a_terminal_shows_cells_done_and_trials_per_second() {
         screen.contains("cell 1 finished"),
         "no line per cell in {screen:?}"
     );
+}
+
+#[test]
+fn compare_set_changes_every_cells_config_and_a_bad_entry_is_refused_before_any_run() {
+    let mut request = CompareRequest {
+        methods: vec![Method::Lin5, Method::Mlp],
+        trials: 10,
+        seeds: vec![1, 2],
+        events: Vec::new(),
+        sets: vec![("camera_noise_px".into(), "0.25".into())],
+        configs: Some(configs().to_path_buf()),
+    };
+    let plan = compare_plan(&request).unwrap();
+    let configs = plan.check().unwrap();
+    assert_eq!(configs.len(), 4);
+    assert!(
+        configs.iter().all(|c| c.camera_noise_px == 0.25),
+        "every cell sets it"
+    );
+    request.sets.clear();
+    let plain = compare_plan(&request).unwrap().check().unwrap();
+    assert!(
+        plain.iter().all(|c| c.camera_noise_px == 0.0),
+        "the default without --set"
+    );
+    request.sets = vec![("no_such_entry".into(), "1".into())];
+    let refused = compare_plan(&request).unwrap_err().to_string();
+    assert!(refused.contains("no_such_entry"), "{refused}");
 }

@@ -1,11 +1,12 @@
 //! The command line: `eyehand run`, `plot`, `compare`, `sweep`, `check-config`, `config`, `fk`,
-//! `reach`, `simulate` and `show`.
+//! `reach`, `simulate`, `show` and `report`.
 //! Flags are parsed here (validation only); each command hands resolved values to the
 //! library and turns the outcome into an exit code: 2 for bad input, 1 for a failed run,
 //! 130/143 for a run stopped by SIGINT/SIGTERM. Output goes through `say`, so a closed
 //! pipe or a full disk behind stdout ends the program with a code, never a panic.
 
 mod reach;
+mod report;
 mod run;
 mod show;
 mod simulate;
@@ -48,6 +49,8 @@ enum Command {
     Simulate(simulate::SimulateArgs),
     /// Re-simulates trials of a run and draws them into RUN_DIR/show/N/.
     Show(show::ShowArgs),
+    /// Writes DIR/report.html: a run's (or a compare/sweep's) page for the browser.
+    Report(report::ReportArgs),
 }
 
 /// What a command's failure exits with, and says.
@@ -154,6 +157,7 @@ pub fn execute(cli: Cli) -> ExitCode {
         Command::Reach(args) => reach::reach(args),
         Command::Simulate(args) => simulate::simulate(args),
         Command::Show(args) => show::show(args),
+        Command::Report(args) => report::report(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

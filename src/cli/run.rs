@@ -1,6 +1,7 @@
 //! `eyehand run`.
 
 use super::{bad_input, failed, say, Failure};
+use crate::experiment::report::ReportOptions;
 use crate::experiment::show::TrialRange;
 use crate::experiment::{
     self, CameraKind, Event, RunError, RunRequest, RunResult, SimKind, StopRequest,
@@ -48,6 +49,9 @@ pub(super) struct RunArgs {
     /// Does not draw plot.png at the end.
     #[arg(long)]
     no_plot: bool,
+    /// Writes the run's report.html (eyehand report) at the end.
+    #[arg(long)]
+    report: bool,
     #[command(flatten)]
     record: super::show::RecordArgs,
 }
@@ -90,6 +94,7 @@ impl RunArgs {
 
 pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
     let quiet = args.quiet;
+    let report = args.report;
     args.record.check()?;
     let record = args.record.clone();
     let mut options = args.request()?.options().map_err(bad_input)?;
@@ -105,6 +110,9 @@ pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
     say(&format!("{}\n", result.folder.display()))?;
     if !quiet {
         say(&result.summary.one_screen())?;
+    }
+    if report {
+        super::report::write_and_say(&result.folder, &ReportOptions::default())?;
     }
     outcome(&result, &stop)?;
     let finished = TrialRange {

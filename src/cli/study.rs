@@ -41,6 +41,10 @@ pub(super) struct CompareArgs {
     /// Folder of per-method configs (<method>.conf; default: configs/ if it exists).
     #[arg(long)]
     configs: Option<PathBuf>,
+    /// Sets any config entry of every run: NAME=VALUE (repeatable; applied after the
+    /// method's config).
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    sets: Vec<String>,
     #[command(flatten)]
     slurm: SlurmArgs,
 }
@@ -134,6 +138,7 @@ pub(super) fn compare(args: CompareArgs) -> Result<(), Failure> {
         trials: args.trials.unwrap_or(1),
         seeds: parse_seeds(&args.seeds).map_err(study_failure)?,
         events: args.events,
+        sets: super::run::name_values(&args.sets)?,
         configs: args.configs,
     };
     let plan = compare_plan(&request).map_err(study_failure)?;

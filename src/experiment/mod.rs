@@ -5,6 +5,7 @@ mod config;
 mod output;
 pub mod plot;
 pub mod record;
+pub mod report;
 mod run;
 pub mod setup;
 pub mod show;

@@ -60,6 +60,18 @@ impl Method {
     }
 }
 
+impl Method {
+    /// True for the methods whose size is a count of nodes: the tree nodes of lin5, lin8
+    /// and nnw, the receptive fields of lwpr and the neurons of kohonen (ffn and mlp are
+    /// one net, ik and issgp have none).
+    pub fn has_nodes(self) -> bool {
+        matches!(
+            self,
+            Method::Lin5 | Method::Lin8 | Method::Nnw | Method::Lwpr | Method::Kohonen
+        )
+    }
+}
+
 impl fmt::Display for Method {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())

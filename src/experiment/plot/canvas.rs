@@ -1,4 +1,6 @@
-//! Shared drawing: the font, and one line panel (title, axes, smoothed series, event marks).
+//! Shared drawing: the font, and one line panel (title, axes, smoothed series, labelled
+//! event marks). Every point is drawn inside its panel and every tick label differs from its
+//! neighbours.
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -32,8 +34,8 @@ pub(super) struct Panel<'a> {
     pub lines: Vec<Line<'a>>,
     /// Log-scaled y axis.
     pub log_y: bool,
-    /// Trials to mark with a vertical line.
-    pub events: &'a [f64],
+    /// Events to mark with a vertical line: trial and label.
+    pub events: &'a [(f64, String)],
 }
 
 /// One line of a panel.
@@ -43,8 +45,6 @@ pub(super) struct Line<'a> {
     pub points: &'a [(f64, f64)],
     /// Its colour.
     pub colour: RGBColor,
-    /// Its legend label (shown when a panel has several lines).
-    pub label: String,
 }
 
 type Area<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
@@ -99,6 +99,16 @@ pub(super) fn bounds(lines: &[Line<'_>], log_y: bool) -> ((f64, f64), (f64, f64)
 /// Draws one panel into `area`.
 pub(super) fn draw_panel(area: &Area<'_>, panel: &Panel<'_>) -> Result<(), String> {
     let ((x0, x1), (y0, y1)) = bounds(&panel.lines, panel.log_y);
+    let zeros = panel.log_y
+        && panel
+            .lines
+            .iter()
+            .any(|l| l.points.iter().any(|p| p.1 <= 0.0));
+    let y_desc = if zeros {
+        format!("{} (0 drawn on the bottom line)", panel.y_label)
+    } else {
+        panel.y_label.to_string()
+    };
     let mut builder = ChartBuilder::on(area);
     builder
         .caption(panel.title, (FAMILY, 18))
@@ -107,13 +117,16 @@ pub(super) fn draw_panel(area: &Area<'_>, panel: &Panel<'_>) -> Result<(), Strin
         .margin_right(36)
         .x_label_area_size(32)
         .y_label_area_size(62);
-    // On a log axis the zeros lie on its bottom, the floor.
-    let floor = if panel.log_y { y0 } else { f64::MIN };
-    let zeros = panel.log_y
-        && panel
-            .lines
-            .iter()
-            .any(|l| l.points.iter().any(|p| p.1 <= 0.0));
+    // Every point inside the panel: on a log axis the zeros lie on its bottom, the floor.
+    let inside = |&(x, y): &(f64, f64)| (x.clamp(x0, x1), y.clamp(y0, y1));
+    let decimals = tick_decimals(y0, y1, Y_LABELS);
+    let y_tick = |y: &f64| {
+        if panel.log_y {
+            compact(*y)
+        } else {
+            format!("{y:.decimals$}")
+        }
+    };
     macro_rules! finish {
         ($chart:expr) => {{
             let mut chart = $chart.map_err(|e| e.to_string())?;
@@ -121,53 +134,35 @@ pub(super) fn draw_panel(area: &Area<'_>, panel: &Panel<'_>) -> Result<(), Strin
                 .configure_mesh()
                 .x_desc("trial")
                 .max_light_lines(2)
-                .y_desc(panel.y_label)
+                .y_desc(y_desc.as_str())
                 .label_style((FAMILY, 12))
-                .y_labels(12)
+                .y_labels(Y_LABELS)
                 .x_label_formatter(&|x| format!("{x:.0}"))
-                .y_label_formatter(&|y| compact(*y))
+                .y_label_formatter(&y_tick)
                 .draw()
                 .map_err(|e| e.to_string())?;
-            if zeros {
-                chart
-                    .draw_series(DashedLineSeries::new(
-                        [(x0, floor), (x1, floor)],
-                        6,
-                        4,
-                        BLACK.stroke_width(1),
-                    ))
-                    .map_err(|e| e.to_string())?
-                    .label("0 (drawn on the floor)")
-                    .legend(|(x, y)| PathElement::new([(x, y), (x + 16, y)], BLACK));
-            }
-            for &trial in panel.events {
+            for (k, (trial, label)) in panel.events.iter().enumerate() {
+                let trial = trial.clamp(x0, x1);
                 chart
                     .draw_series(LineSeries::new(
                         [(trial, y0), (trial, y1)],
                         RED.stroke_width(1),
                     ))
                     .map_err(|e| e.to_string())?;
-            }
-            let many = panel.lines.len() > 1;
-            for line in &panel.lines {
-                let colour = line.colour;
-                let points = line.points.iter().map(|&(x, y)| (x, y.max(floor)));
-                let series = chart
-                    .draw_series(LineSeries::new(points, colour.stroke_width(2)))
-                    .map_err(|e| e.to_string())?;
-                if many {
-                    series
-                        .label(line.label.as_str())
-                        .legend(move |(x, y)| PathElement::new([(x, y), (x + 16, y)], colour));
-                }
-            }
-            if many || zeros {
+                let style = (FAMILY, 12).into_font().color(&RED);
+                let offset = (4, 4 + 14 * k as i32);
                 chart
-                    .configure_series_labels()
-                    .label_font((FAMILY, 13))
-                    .background_style(WHITE.mix(0.8))
-                    .border_style(BLACK)
-                    .draw()
+                    .draw_series(std::iter::once(
+                        EmptyElement::at((trial, y1)) + Text::new(label.clone(), offset, style),
+                    ))
+                    .map_err(|e| e.to_string())?;
+            }
+            for line in &panel.lines {
+                chart
+                    .draw_series(LineSeries::new(
+                        line.points.iter().map(inside),
+                        line.colour.stroke_width(2),
+                    ))
                     .map_err(|e| e.to_string())?;
             }
         }};
@@ -180,7 +175,20 @@ pub(super) fn draw_panel(area: &Area<'_>, panel: &Panel<'_>) -> Result<(), Strin
     Ok(())
 }
 
-/// A short axis label: plain for ordinary magnitudes, `1e-5` style for tiny or huge ones.
+/// Labels asked for on a y axis.
+const Y_LABELS: usize = 12;
+
+/// Decimals that tell apart the labels of a linear axis from `low` to `high` with about
+/// `labels` ticks: as many as the tick step needs (a 0.0002 step gets 4, a 100 step none).
+pub(super) fn tick_decimals(low: f64, high: f64, labels: usize) -> usize {
+    let step = (high - low) / labels.max(1) as f64;
+    if !(step.is_finite() && step > 0.0) {
+        return 0;
+    }
+    (-step.log10()).ceil().max(0.0) as usize
+}
+
+/// A log axis's label: plain for ordinary magnitudes, `1e-5` style for tiny or huge ones.
 fn compact(v: f64) -> String {
     let a = v.abs();
     if a == 0.0 {
@@ -217,7 +225,116 @@ mod tests {
         Line {
             points,
             colour: BLACK,
-            label: String::new(),
+        }
+    }
+
+    use plotters::coord::ranged1d::Ranged;
+    use plotters::coord::types::RangedCoordf64;
+
+    /// The colour of the test's line.
+    const INK: RGBColor = RGBColor(200, 0, 100);
+
+    /// Size of the test's image: two panels side by side.
+    const SIZE: (u32, u32) = (800, 300);
+
+    /// Draws `points` (and an event halfway) into the left panel of a 2×1 image.
+    fn drawn(points: &[(f64, f64)], log_y: bool) -> Vec<u8> {
+        register_font().unwrap();
+        let mut rgb = vec![255u8; (SIZE.0 * SIZE.1 * 3) as usize];
+        {
+            let root = BitMapBackend::with_buffer(&mut rgb, SIZE).into_drawing_area();
+            let panels = root.split_evenly((1, 2));
+            let line = Line {
+                points,
+                colour: INK,
+            };
+            let events = [(points[points.len() / 2].0, "rotate:3:90".to_string())];
+            let panel = Panel {
+                title: "nodes",
+                y_label: "nodes",
+                lines: vec![line],
+                log_y,
+                events: &events,
+            };
+            draw_panel(&panels[0], &panel).unwrap();
+            root.present().unwrap();
+        }
+        rgb
+    }
+
+    /// The pixels (x, y) of `rgb` for which `colour` holds.
+    fn pixels(rgb: &[u8], colour: impl Fn([u8; 3]) -> bool) -> Vec<(u32, u32)> {
+        let (w, h) = SIZE;
+        (0..h)
+            .flat_map(|y| (0..w).map(move |x| (x, y)))
+            .filter(|&(x, y)| {
+                let i = ((y * w + x) * 3) as usize;
+                colour([rgb[i], rgb[i + 1], rgb[i + 2]])
+            })
+            .collect()
+    }
+
+    /// The line's pixels outside its panel (in the right one).
+    fn pixels_outside(points: &[(f64, f64)], log_y: bool) -> usize {
+        let ink = |p: [u8; 3]| p == [INK.0, INK.1, INK.2];
+        let rgb = drawn(points, log_y);
+        pixels(&rgb, ink)
+            .iter()
+            .filter(|(x, _)| *x >= SIZE.0 / 2)
+            .count()
+    }
+
+    #[test]
+    fn events_are_marked_and_labelled() {
+        let points: Vec<(f64, f64)> = (1..=6).map(|t| (f64::from(t), 1.0)).collect();
+        let rgb = drawn(&points, false);
+        let red = pixels(&rgb, |[r, g, b]| r > 200 && g < 160 && b < 160);
+        let mut columns: Vec<u32> = red.iter().map(|(x, _)| *x).collect();
+        columns.sort_unstable();
+        columns.dedup();
+        // The line is one column; its label's letters span dozens more.
+        assert!(columns.len() > 30, "red in {} columns", columns.len());
+    }
+
+    #[test]
+    fn no_curve_point_is_drawn_outside_its_panel() {
+        // Steep growth, huge values, zeros on a log axis, a single point.
+        let steep: Vec<(f64, f64)> = (1..=500)
+            .map(|t| (f64::from(t), f64::from(t).powi(3)))
+            .collect();
+        assert_eq!(pixels_outside(&steep, false), 0);
+        assert_eq!(pixels_outside(&steep, true), 0);
+        let zeros = [(1.0, 0.0), (2.0, 5.0), (3.0, 0.0), (4.0, 1e9)];
+        assert_eq!(pixels_outside(&zeros, true), 0);
+        assert_eq!(pixels_outside(&[(7.0, 3.0)], false), 0);
+    }
+
+    #[test]
+    fn tick_labels_of_a_linear_axis_are_distinct() {
+        // The time used of a short run: 0 to 0.0025 minutes.
+        for (low, high) in [
+            (0.0, 0.0025),
+            (0.0, 1.0),
+            (8500.0, 10_000.0),
+            (0.0, 70.0),
+            (-3e-6, 2e-6),
+        ] {
+            let decimals = tick_decimals(low, high, Y_LABELS);
+            let labels: Vec<String> = RangedCoordf64::from(low..high)
+                .key_points(Y_LABELS)
+                .iter()
+                .map(|y| format!("{y:.decimals$}"))
+                .collect();
+            let mut distinct = labels.clone();
+            distinct.dedup();
+            assert_eq!(distinct, labels, "{low}..{high}");
+            assert!(labels.len() >= 3, "{labels:?}");
+            if high - low >= 12.0 {
+                assert!(
+                    labels.iter().all(|l| !l.contains('.')),
+                    "whole numbers: {labels:?}"
+                );
+            }
         }
     }
 

@@ -9,7 +9,7 @@ mod series;
 pub(crate) use canvas::{register_font, FAMILY};
 pub use compare_plot::{plot_curves, Curve};
 pub use run_plot::{plot_run, PANELS, PLOT_SIZE};
-pub use series::{event_trials, moving_average, Series};
+pub use series::{event_marks, event_trials, moving_average, time_in_unit, time_unit, Series};
 
 /// Why a plot could not be drawn.
 #[derive(Debug, thiserror::Error)]

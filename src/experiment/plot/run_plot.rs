@@ -1,10 +1,10 @@
 //! One PNG per run with the panels of the study's result figures: distance after feedback
 //! steps 1..5 (log axis, mm), nodes, bins, memory, patterns and time used, each against
-//! trials and smoothed, with the run's events marked. Long runs are drawn from evenly
-//! spaced points of their smoothed curves.
+//! trials and smoothed (a trailing mean), with the run's events marked and labelled. Long
+//! runs are drawn from evenly spaced points of their smoothed curves.
 
 use super::canvas::{draw_panel, register_font, Line, Panel, PALETTE};
-use super::series::{decimated, event_trials, Series};
+use super::series::{decimated, event_marks, time_in_unit, Series};
 use super::PlotError;
 use crate::files::{read_text, MAX_RUN_FILE_BYTES};
 use plotters::prelude::*;
@@ -37,7 +37,7 @@ pub fn plot_run(run_dir: &Path, smooth: usize) -> Result<PathBuf, PlotError> {
         Series::read(&path).map_err(|source| PlotError::Read { path, source })
     };
     let info = read_text(&run_dir.join("info"), MAX_RUN_FILE_BYTES).unwrap_or_default();
-    let events = event_trials(&info);
+    let events = event_marks(&info);
     let steps: Vec<Series> = (1..=5)
         .map(|s| read(&format!("{s}step")))
         .collect::<Result<_, _>>()?;
@@ -57,7 +57,8 @@ pub fn plot_run(run_dir: &Path, smooth: usize) -> Result<PathBuf, PlotError> {
     lines.push((PANELS[6].into(), "bins", thin(&bins.points), false));
     lines.push((PANELS[7].into(), "kB", thin(&mem.points), false));
     lines.push((PANELS[8].into(), "patterns", thin(&patterns.points), false));
-    lines.push((PANELS[9].into(), "minutes", thin(&nodes.minutes), false));
+    let (time_unit, time) = time_in_unit(&nodes.minutes);
+    lines.push((PANELS[9].into(), time_unit, thin(&time), false));
 
     let out = run_dir.join("plot.png");
     let draw_error = |reason: String| PlotError::Draw {
@@ -99,7 +100,12 @@ fn title_of(run_dir: &Path, info: &str, trials: usize, smooth: usize) -> String 
 /// A panel's title, y label, points and whether its y axis is logarithmic.
 type PanelLine = (String, &'static str, Vec<(f64, f64)>, bool);
 
-fn draw_panels(out: &Path, title: &str, lines: &[PanelLine], events: &[f64]) -> Result<(), String> {
+fn draw_panels(
+    out: &Path,
+    title: &str,
+    lines: &[PanelLine],
+    events: &[(f64, String)],
+) -> Result<(), String> {
     let root = BitMapBackend::new(out, PLOT_SIZE).into_drawing_area();
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     let root = root
@@ -112,7 +118,6 @@ fn draw_panels(out: &Path, title: &str, lines: &[PanelLine], events: &[f64]) -> 
             lines: vec![Line {
                 points,
                 colour: PALETTE[0],
-                label: name.clone(),
             }],
             log_y: *log_y,
             events,

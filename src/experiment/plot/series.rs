@@ -54,15 +54,18 @@ impl Series {
         Ok(series)
     }
 
-    /// The points smoothed by a centred moving average over `window` points.
+    /// The points smoothed by a trailing moving average over `window` points.
     pub fn smoothed(&self, window: usize) -> Vec<(f64, f64)> {
         moving_average(&self.points, window)
     }
 }
 
-/// A centred moving average over `window` points (shorter at the ends).
+/// A trailing moving average over `window` points: each point the mean of itself and the
+/// `window - 1` points before it (fewer at the start), so a change shows from the trial it
+/// happens in on, never before it (a centred average would draw it up to half a window
+/// early, before its event).
 pub fn moving_average(points: &[(f64, f64)], window: usize) -> Vec<(f64, f64)> {
-    let half = window.max(1) / 2;
+    let window = window.max(1);
     let mut prefix = Vec::with_capacity(points.len() + 1);
     prefix.push(0.0);
     for (_, v) in points {
@@ -70,7 +73,7 @@ pub fn moving_average(points: &[(f64, f64)], window: usize) -> Vec<(f64, f64)> {
     }
     (0..points.len())
         .map(|i| {
-            let (lo, hi) = (i.saturating_sub(half), (i + half + 1).min(points.len()));
+            let (lo, hi) = ((i + 1).saturating_sub(window), i + 1);
             (points[i].0, (prefix[hi] - prefix[lo]) / (hi - lo) as f64)
         })
         .collect()
@@ -92,10 +95,38 @@ pub(super) fn decimated(points: &[(f64, f64)], at_most: usize) -> Vec<(f64, f64)
 
 /// The trials at which the run's events happened, from its `info` file.
 pub fn event_trials(info: &str) -> Vec<f64> {
+    event_marks(info)
+        .into_iter()
+        .map(|(trial, _)| trial)
+        .collect()
+}
+
+/// The run's events from its `info` file: the trial each happened at and the event as
+/// written (`rotate:1500:90`), the label of its mark.
+pub fn event_marks(info: &str) -> Vec<(f64, String)> {
     info.lines()
         .filter_map(|l| l.strip_prefix("event "))
-        .filter_map(|e| e.split(':').nth(1)?.parse().ok())
+        .filter_map(|e| Some((e.split(':').nth(1)?.parse().ok()?, e.trim().to_string())))
         .collect()
+}
+
+/// The unit a time used of at most `max_minutes` reads best in, and the factor from
+/// minutes to it: minutes from one minute on, else seconds from one second on, else ms.
+pub fn time_unit(max_minutes: f64) -> (&'static str, f64) {
+    if max_minutes >= 1.0 {
+        ("minutes", 1.0)
+    } else if max_minutes >= 1.0 / 60.0 {
+        ("s", 60.0)
+    } else {
+        ("ms", 60_000.0)
+    }
+}
+
+/// `points` (trial, minutes) in the unit [`time_unit`] picks for them, with its name.
+pub fn time_in_unit(points: &[(f64, f64)]) -> (&'static str, Vec<(f64, f64)>) {
+    let max = points.iter().map(|p| p.1).fold(0.0, f64::max);
+    let (unit, factor) = time_unit(max);
+    (unit, points.iter().map(|&(t, m)| (t, m * factor)).collect())
 }
 
 #[cfg(test)]
@@ -103,14 +134,29 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_moving_average_is_centred_and_shrinks_at_the_ends() {
+    fn the_moving_average_trails_and_shrinks_at_the_start() {
         let points: Vec<_> = (0..5).map(|i| (i as f64, i as f64 * 2.0)).collect();
         let smooth = moving_average(&points, 3);
         assert_eq!(
             smooth,
-            vec![(0.0, 1.0), (1.0, 2.0), (2.0, 4.0), (3.0, 6.0), (4.0, 7.0)]
+            vec![(0.0, 0.0), (1.0, 1.0), (2.0, 2.0), (3.0, 4.0), (4.0, 6.0)]
         );
         assert_eq!(moving_average(&points, 1), points);
+    }
+
+    #[test]
+    fn smoothing_never_moves_a_change_before_its_event() {
+        // A jump from 1 to 100 at trial 500 (the event's trial).
+        let points: Vec<_> = (1..=1000)
+            .map(|t| (f64::from(t), if t < 500 { 1.0 } else { 100.0 }))
+            .collect();
+        for window in [1, 2, 50, 61, 999] {
+            for (trial, value) in moving_average(&points, window) {
+                if trial < 500.0 {
+                    assert_eq!(value, 1.0, "window {window}, trial {trial}");
+                }
+            }
+        }
     }
 
     #[test]
@@ -155,5 +201,17 @@ mod tests {
     fn events_are_read_from_info() {
         let info = "host x\nevent rotate:1500:90\nevent elongate:20:2:-10\nseed 1\n";
         assert_eq!(event_trials(info), vec![1500.0, 20.0]);
+        let marks = event_marks(info);
+        assert_eq!(marks[1], (20.0, "elongate:20:2:-10".to_string()));
+    }
+
+    #[test]
+    fn time_reads_in_minutes_seconds_or_milliseconds() {
+        assert_eq!(time_unit(12.0), ("minutes", 1.0));
+        assert_eq!(time_unit(0.5), ("s", 60.0));
+        assert_eq!(time_unit(0.0025), ("ms", 60_000.0));
+        let (unit, points) = time_in_unit(&[(1.0, 0.001), (2.0, 0.0025)]);
+        assert_eq!(unit, "ms");
+        assert!((points[1].1 - 150.0).abs() < 1e-9);
     }
 }

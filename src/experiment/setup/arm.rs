@@ -42,13 +42,10 @@ pub struct LoadedArm {
 /// The arm of `urdf` (else the config's `urdf`; the shipped OSCAR-6 without either) as
 /// the config's arm entries pick it out of its robot description, `package://` meshes looked up in `package_paths`.
 pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<LoadedArm, DescriptionError> {
+    let description = load_description(config, urdf)?;
     let urdf = urdf.or(config.urdf.path());
     let options = DescriptionOptions {
         package_paths: config.package_paths.0.clone(),
-    };
-    let description = match urdf {
-        Some(path) => RobotDescription::load(path, &options)?,
-        None => RobotDescription::parse(DEFAULT_URDF, DEFAULT_URDF_NAME, Path::new("."), &options)?,
     };
     let model = ArmModel::from_description(&description, &arm_settings(config))?;
     let camera = match &config.camera_link {
@@ -79,6 +76,21 @@ pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<LoadedArm, Descr
         warnings,
         camera,
     })
+}
+
+/// The robot description of `urdf` (else the config's `urdf`; the shipped OSCAR-6 without
+/// either), `package://` meshes looked up in the config's `package_paths`.
+pub fn load_description(
+    config: &Config,
+    urdf: Option<&Path>,
+) -> Result<RobotDescription, DescriptionError> {
+    let options = DescriptionOptions {
+        package_paths: config.package_paths.0.clone(),
+    };
+    match urdf.or(config.urdf.path()) {
+        Some(path) => RobotDescription::load(path, &options),
+        None => RobotDescription::parse(DEFAULT_URDF, DEFAULT_URDF_NAME, Path::new("."), &options),
+    }
 }
 
 /// How many meshes a URDF's warnings are about, by what stands in for them: the head of

@@ -10,8 +10,8 @@ pub(super) mod run_setup;
 pub(super) mod start_check;
 
 pub use arm::{
-    arm_entry, arm_settings, fit_reach, fitted_boundaries, learned_ranges, load_arm, reach_space,
-    LoadedArm, BOUNDARY_MARGIN_DEG,
+    arm_entry, arm_settings, fit_reach, fitted_boundaries, learned_ranges, load_arm,
+    load_description, reach_space, LoadedArm, BOUNDARY_MARGIN_DEG,
 };
 pub use learners::{
     broyden_settings, correction_settings, ffn_settings, input_bounds, issgp_settings,

@@ -37,6 +37,18 @@ pub fn write_camera_image(
     scene: &dyn Scene,
     caption: &[String],
 ) -> Result<(), String> {
+    let png = camera_image_png(look, camera, resolution, scene, caption)?;
+    std::fs::write(path, png).map_err(|e| e.to_string())
+}
+
+/// The image [`write_camera_image`] writes, as the bytes of a PNG file.
+pub fn camera_image_png(
+    look: &Look,
+    camera: &CameraModel,
+    resolution: usize,
+    scene: &dyn Scene,
+    caption: &[String],
+) -> Result<Vec<u8>, String> {
     let (width, height) = (camera.width.round() as u32, camera.height.round() as u32);
     let rays = RaycastCamera::new(*camera, resolution);
     let n = rays.resolution();
@@ -58,7 +70,9 @@ pub fn write_camera_image(
         paint_blob(&mut image, n, &blob, (width, height));
     }
     register_font()?;
-    let root = BitMapBackend::new(path, (width, height + CAPTION_HEIGHT)).into_drawing_area();
+    let size = (width, height + CAPTION_HEIGHT);
+    let mut rgb = vec![0; (size.0 * size.1 * 3) as usize];
+    let root = BitMapBackend::with_buffer(&mut rgb, size).into_drawing_area();
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     root.fill(&RGBColor(BACKGROUND_GREY, BACKGROUND_GREY, BACKGROUND_GREY))
         .map_err(e)?;
@@ -108,7 +122,23 @@ pub fn write_camera_image(
         ))
         .map_err(e)?;
     }
-    root.present().map_err(e)
+    root.present().map_err(e)?;
+    drop(root);
+    encode_png(&rgb, size).map_err(|e| e.to_string())
+}
+
+/// An 8-bit RGB image of `size` (px) as the bytes of a PNG file.
+fn encode_png(rgb: &[u8], size: (u32, u32)) -> Result<Vec<u8>, png::EncodingError> {
+    let mut bytes = Vec::new();
+    let mut encoder = png::Encoder::new(&mut bytes, size.0, size.1);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.set_compression(png::Compression::Best);
+    encoder.set_adaptive_filter(png::AdaptiveFilterType::Adaptive);
+    let mut writer = encoder.write_header()?;
+    writer.write_image_data(rgb)?;
+    writer.finish()?;
+    Ok(bytes)
 }
 
 /// The grey level of every pixel of a `width`×`height` image in which the camera with a

@@ -8,6 +8,7 @@ mod camera_image;
 mod divergence;
 mod recorded_run;
 mod replay;
+mod replay_bar;
 mod tracer;
 mod trial_files;
 mod trial_range;
@@ -18,14 +19,13 @@ pub use arm_view::{
 #[cfg(feature = "rerun")]
 pub(crate) use camera_image::blob_mask;
 pub use camera_image::{
-    write_camera_image, BACKGROUND_GREY, CAPTION_HEIGHT, CENTRE_MARK, OBJECT_GREY,
+    camera_image_png, write_camera_image, BACKGROUND_GREY, CAPTION_HEIGHT, CENTRE_MARK, OBJECT_GREY,
 };
 pub use recorded_run::RecordedRun;
 pub use replay::{replay, TrialTrace};
 pub use tracer::Look;
-#[cfg(feature = "rerun")]
 pub(crate) use trial_files::{remove_scratch_patterns, show_folder};
-pub use trial_files::{show_trials, ShowReport};
+pub use trial_files::{show_trials, CameraPictures, ShowReport};
 pub use trial_range::TrialRange;
 
 use std::path::PathBuf;

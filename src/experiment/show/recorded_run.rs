@@ -16,6 +16,8 @@ pub struct RecordedRun {
     /// The run put together again from its `info`: every config value it used, the robot
     /// as loaded at its start, its reach space and the events it applied, in order.
     pub setup: RunSetup,
+    /// The URDF the run was given (`None`: the shipped OSCAR-6).
+    pub urdf: Option<PathBuf>,
     /// Trials the run finished.
     pub trials: usize,
 }
@@ -68,6 +70,7 @@ impl RecordedRun {
         Ok(RecordedRun {
             folder: folder.to_path_buf(),
             setup,
+            urdf,
             trials: nodes.lines().count(),
         })
     }

@@ -3,6 +3,7 @@
 //! them (runs are deterministic), with the trials of interest watched.
 
 use super::divergence::StepOneLog;
+use super::replay_bar::ReplayBar;
 use super::tracer::{Look, SharedLog, WatchLog, WatchedCamera, WatchedSim};
 use super::{RecordedRun, ShowError};
 use crate::control::{Failure, TrialLoop, TrialOutcome};
@@ -34,7 +35,8 @@ pub struct TrialTrace {
 /// Replays trials 1..=`last` of `run`, handing every trial for which `watched` is true to
 /// `on_trial`. `ticks` keeps the dynamic simulator's physics ticks. A learner that stores
 /// its patterns in a file puts it in `scratch`. Every trial's distance after step 1 must be
-/// the run's (its `1step` file), else the replay stops with [`ShowError::Diverged`].
+/// the run's (its `1step` file), else the replay stops with [`ShowError::Diverged`]. A
+/// replay that takes more than a second shows a bar on stderr when it is a terminal.
 pub fn replay(
     run: &RecordedRun,
     last: usize,
@@ -54,6 +56,7 @@ pub fn replay(
         .map_err(crate::experiment::RunError::from)?;
     let mut trials = setup.trial_loop_around(Box::new(sim), Box::new(camera));
     let mut model_events: Vec<ModelEvent> = Vec::new();
+    let mut bar = ReplayBar::new(last);
     learner.start_trial(0);
     trials
         .prelearn(learner.as_mut())
@@ -71,6 +74,7 @@ pub fn replay(
         step_one.check(run, trial, outcome.distances_mm.first().copied())?;
         learner.drain_events(&mut model_events);
         model_events.clear();
+        bar.done(trial);
         if watched(trial) {
             on_trial(trace_of(trial, outcome, &log, &trials, &setup.events))?;
         }

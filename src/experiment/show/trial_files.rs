@@ -3,7 +3,7 @@
 //! numbers: joints, camera centre, reading, distance to the goal, simulated time).
 
 use super::arm_view::write_arm_image;
-use super::camera_image::write_camera_image;
+use super::camera_image::camera_image_png;
 use super::replay::{replay, TrialTrace};
 use super::tracer::Look;
 use super::{RecordedRun, ShowError, TrialRange};
@@ -32,11 +32,7 @@ pub fn show_trials(run_dir: &Path, range: TrialRange) -> Result<ShowReport, Show
     run.check_trials(range.first, range.last)?;
     let scratch = show_folder(run_dir)?;
     let mut report = ShowReport::default();
-    let camera = CameraModel::default();
-    let resolution = match run.setup.config.camera {
-        CameraKind::Raycast => run.setup.config.raycast_resolution,
-        CameraKind::Projection => camera.width.round() as usize,
-    };
+    let pictures = CameraPictures::of(&run);
     replay(
         &run,
         range.last,
@@ -46,20 +42,56 @@ pub fn show_trials(run_dir: &Path, range: TrialRange) -> Result<ShowReport, Show
         |trace| {
             let folder = scratch.join(trace.trial.to_string());
             create(&folder)?;
-            let scene = KinematicSim::new(trace.model.clone(), move_settings(&run.setup.config))
-                .with_obstacles(obstacles(&run.setup.config));
-            let view = View {
-                camera: &camera,
-                resolution,
-                scene: &scene,
-            };
-            report.camera_images += write_trial(&folder, &trace, &view, run_dir)?;
+            report.camera_images += write_trial(&folder, &trace, &pictures, run_dir)?;
             report.folders.push(folder);
             Ok(())
         },
     )?;
     remove_scratch_patterns(&scratch);
     Ok(report)
+}
+
+/// How a run's camera images are drawn: the camera, its rays per image side, and the world
+/// of each trial (the arm as it was, the run's floor and obstacles), placed at each look.
+#[derive(Debug)]
+pub struct CameraPictures<'a> {
+    run: &'a RecordedRun,
+    camera: CameraModel,
+    resolution: usize,
+}
+
+impl<'a> CameraPictures<'a> {
+    /// The pictures of `run`: its ray-cast camera's resolution, or one ray per pixel.
+    pub fn of(run: &'a RecordedRun) -> CameraPictures<'a> {
+        let camera = CameraModel::default();
+        let resolution = match run.setup.config.camera {
+            CameraKind::Raycast => run.setup.config.raycast_resolution,
+            CameraKind::Projection => camera.width.round() as usize,
+        };
+        CameraPictures {
+            run,
+            camera,
+            resolution,
+        }
+    }
+
+    /// The camera image at every look of `trace` with its caption, as PNG bytes.
+    pub fn pngs(&self, trace: &TrialTrace) -> Result<Vec<Vec<u8>>, String> {
+        let config = &self.run.setup.config;
+        let scene = KinematicSim::new(trace.model.clone(), move_settings(config))
+            .with_obstacles(obstacles(config));
+        let camera = &self.camera;
+        trace
+            .looks
+            .iter()
+            .enumerate()
+            .map(|(k, look)| {
+                let caption = caption(trace.trial, k, look, camera);
+                let world = scene.world_at(&look.joints);
+                camera_image_png(look, camera, self.resolution, &world, &caption)
+            })
+            .collect()
+    }
 }
 
 /// `run_dir/show`, created; a learner that keeps a pattern file keeps it here.
@@ -81,37 +113,27 @@ fn create(folder: &Path) -> Result<(), ShowError> {
     })
 }
 
-/// How a trial's camera images are drawn: the camera, its rays per image side, and the
-/// world of the trial (the arm as it was, the floor and the obstacles), placed at each look.
-struct View<'a> {
-    camera: &'a CameraModel,
-    resolution: usize,
-    scene: &'a KinematicSim,
-}
-
 /// Writes one trial's files; returns the camera images written.
 fn write_trial(
     folder: &Path,
     trace: &TrialTrace,
-    view: &View,
+    pictures: &CameraPictures,
     run_dir: &Path,
 ) -> Result<usize, ShowError> {
     let failed = |path: PathBuf| move |reason: String| ShowError::Write { path, reason };
-    let camera = view.camera;
-    for (k, look) in trace.looks.iter().enumerate() {
+    let images = pictures.pngs(trace).map_err(failed(folder.to_path_buf()))?;
+    for (k, png) in images.iter().enumerate() {
         let path = folder.join(format!("camera_{k}.png"));
-        let caption = caption(trace.trial, k, look, camera);
-        let world = view.scene.world_at(&look.joints);
-        write_camera_image(&path, look, camera, view.resolution, &world, &caption)
-            .map_err(failed(path))?;
+        std::fs::write(&path, png).map_err(|e| failed(path)(e.to_string()))?;
     }
     let path = folder.join("arm.png");
     write_arm_image(&path, trace, &arm_title(run_dir, trace)).map_err(failed(path))?;
     let path = folder.join("trial.json");
-    let text = serde_json::to_string_pretty(&trial_json(trace, camera)).map_err(|e| e.to_string());
+    let text = serde_json::to_string_pretty(&trial_json(trace, &pictures.camera))
+        .map_err(|e| e.to_string());
     text.and_then(|t| std::fs::write(&path, t + "\n").map_err(|e| e.to_string()))
         .map_err(failed(path))?;
-    Ok(trace.looks.len())
+    Ok(images.len())
 }
 
 fn goal_of(look: &Look, camera: &CameraModel) -> Point3<f64> {

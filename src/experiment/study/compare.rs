@@ -22,6 +22,8 @@ pub struct CompareRequest {
     pub seeds: Vec<u64>,
     /// Events of every run.
     pub events: Vec<Event>,
+    /// Config entries every run sets (`--set NAME=VALUE`, after its method's config).
+    pub sets: Vec<(String, String)>,
     /// Folder of per-method configs (`<method>.conf`; a method without one runs the default
     /// config). `None`: `configs/` if it exists, else the default config for every method.
     pub configs: Option<PathBuf>,
@@ -57,6 +59,7 @@ pub fn compare_plan(request: &CompareRequest) -> Result<StudyPlan, StudyError> {
         for &seed in &request.seeds {
             let request = RunRequest {
                 config: config.clone(),
+                sets: request.sets.clone(),
                 method: Some(method),
                 trials: Some(request.trials),
                 seed: Some(seed),

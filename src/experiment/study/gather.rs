@@ -4,10 +4,11 @@
 
 use super::plan::{StudyFolder, StudyPlan};
 use super::slurm::resubmit_line;
-use super::table::{four_step_curves, study_table, CellResult};
+use super::table::CURVE_SMOOTHING;
+use super::table::{step_curves, study_table, CellResult};
 use super::StudyError;
-use crate::experiment::plot::plot_curves;
-use crate::experiment::{Event, FourStepTrace};
+use crate::experiment::plot::{plot_curves, PlotError};
+use crate::experiment::FourStepTrace;
 use crate::files::{read_bytes, read_text, MAX_RUN_FILE_BYTES};
 use std::path::PathBuf;
 
@@ -166,22 +167,29 @@ fn draw_curves(
     plan: &StudyPlan,
     finished: &[CellResult],
 ) -> Result<(), StudyError> {
-    let curves = four_step_curves(finished)?;
+    let panels = (1..=5)
+        .map(|step| {
+            let title = format!("distance after step {step}");
+            Ok((title, step_curves(finished, step)?))
+        })
+        .collect::<Result<Vec<_>, PlotError>>()?;
     let mut seeds: Vec<u64> = plan.cells.iter().map(|c| c.seed).collect();
     seeds.sort_unstable();
     seeds.dedup();
-    let events: Vec<f64> = plan
+    let events: Vec<(f64, String)> = plan
         .cells
         .first()
         .map(|c| {
             c.request
                 .events
                 .iter()
-                .map(|e| Event::trial(e) as f64)
+                .map(|e| (e.trial() as f64, e.to_string()))
                 .collect()
         })
         .unwrap_or_default();
-    let title = format!("distance after step 4, mean over seeds {seeds:?}");
-    plot_curves(&folder.0.join("curves.png"), &title, "mm", &curves, &events)?;
+    let title = format!(
+        "distance after each step, mean of the last {CURVE_SMOOTHING} trials over seeds {seeds:?}"
+    );
+    plot_curves(&folder.0.join("curves.png"), &title, "mm", &panels, &events)?;
     Ok(())
 }

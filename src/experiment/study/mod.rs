@@ -23,6 +23,6 @@ pub use slurm::{
 };
 pub use sweep::{combinations, parse_seeds, sweep_plan, Setting};
 pub use table::{
-    compare_table, four_step_curves, study_table, sweep_table, CellResult, TRIALS_TO_LEVELS_MM,
+    compare_table, step_curves, study_table, sweep_table, CellResult, TRIALS_TO_LEVELS_MM,
     TRIALS_TO_WINDOW,
 };

@@ -6,6 +6,7 @@
 mod arm_view;
 mod camera_image;
 mod divergence;
+mod frame;
 mod recorded_run;
 mod replay;
 mod trial_files;
@@ -18,8 +19,9 @@ pub use arm_view::{
 #[cfg(feature = "rerun")]
 pub(crate) use camera_image::blob_mask;
 pub use camera_image::{
-    write_camera_image, BACKGROUND_GREY, CAPTION_HEIGHT, CENTRE_MARK, OBJECT_GREY,
+    camera_greys, write_camera_image, BACKGROUND_GREY, CAPTION_HEIGHT, CENTRE_MARK, OBJECT_GREY,
 };
+pub use frame::{draw_frame, frame_size, FrameView, RgbFrame};
 pub use recorded_run::RecordedRun;
 pub use replay::{replay, TrialTrace};
 #[cfg(feature = "rerun")]

@@ -1,0 +1,92 @@
+"""Trains stable-baselines3's SAC (or sb3-contrib's TQC) with Hindsight Experience Replay on
+``eyehand/ReachGoal-v0`` and prints its learning curve: after every ``EVERY`` environment
+steps, the share of ``EPISODES`` seeded evaluation episodes of the deterministic policy
+that end within 5 cm, 1 cm and 1 mm of the goal (the distance after the episode's last
+step).
+
+    pip install stable-baselines3 sb3-contrib       # brings torch: large, so not in the tests
+    python examples/python/her_reach.py [STEPS] [EVERY] [SEED] [ALGO]
+                                        # default 20000 5000 1 tqc; ALGO sac or tqc
+
+Training uses the sparse reward at 5 cm (FetchReach's), HER's ``future`` goals (4 a
+transition) and the networks and learning rate of the rl-baselines3-zoo's FetchReach
+setting (3 layers of 512 units, 1e-3; buffer 1,000,000, batch 2,048, γ 0.95, τ 0.05).
+Training steps are the environment's steps (feedback moves), not episodes.
+"""
+
+import sys
+
+import gymnasium as gym
+import numpy as np
+from stable_baselines3 import SAC, HerReplayBuffer
+
+import eyehand  # noqa: F401  (registers the environments)
+
+#: Evaluation episodes at each point of the curve, and their first seed.
+EPISODES = 100
+EVAL_SEED = 10_000
+#: The success distances reported (mm).
+DISTANCES_MM = (50.0, 10.0, 1.0)
+
+
+def evaluate(model, env):
+    """The share of the ``EPISODES`` seeded episodes of the deterministic policy that end
+    within each of ``DISTANCES_MM``."""
+    finals = []
+    for episode in range(EPISODES):
+        obs, info = env.reset(seed=EVAL_SEED + episode)
+        done = False
+        while not done:
+            action, _ = model.predict(obs, deterministic=True)
+            obs, _, terminated, truncated, info = env.step(action)
+            done = terminated or truncated
+        finals.append(info["distance_mm"])
+    finals = np.array(finals)
+    return [float(np.mean(finals <= d)) for d in DISTANCES_MM], float(np.median(finals))
+
+
+def make_model(algo, env, seed):
+    """SAC or TQC with HER, at the zoo's FetchReach settings."""
+    settings = dict(
+        replay_buffer_class=HerReplayBuffer,
+        replay_buffer_kwargs=dict(n_sampled_goal=4, goal_selection_strategy="future"),
+        buffer_size=1_000_000,
+        batch_size=2048,
+        gamma=0.95,
+        tau=0.05,
+        learning_rate=1e-3,
+        learning_starts=1000,
+        policy_kwargs=dict(net_arch=[512, 512, 512]),
+        seed=seed,
+        verbose=0,
+    )
+    if algo == "tqc":
+        from sb3_contrib import TQC
+
+        return TQC("MultiInputPolicy", env, **settings)
+    if algo == "sac":
+        return SAC("MultiInputPolicy", env, **settings)
+    raise SystemExit(f"ALGO must be sac or tqc, not {algo}")
+
+
+def main():
+    steps = int(sys.argv[1]) if len(sys.argv) > 1 else 20_000
+    every = int(sys.argv[2]) if len(sys.argv) > 2 else 5_000
+    seed = int(sys.argv[3]) if len(sys.argv) > 3 else 1
+    algo = sys.argv[4] if len(sys.argv) > 4 else "tqc"
+    train = gym.make("eyehand/ReachGoal-v0", seed=seed)
+    evaluation = gym.make("eyehand/ReachGoal-v0", seed=seed + 1000)
+    model = make_model(algo, train, seed)
+    print(f"{algo} + HER, seed {seed}")
+    print("| steps | within 5 cm | within 1 cm | within 1 mm | median final distance (mm) |")
+    print("|---|---|---|---|---|")
+    for done in range(0, steps + 1, every):
+        if done:
+            model.learn(total_timesteps=every, reset_num_timesteps=False)
+        shares, median = evaluate(model, evaluation)
+        cells = " | ".join(f"{share:.0%}" for share in shares)
+        print(f"| {done:,} | {cells} | {median:.1f} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()

@@ -15,6 +15,11 @@ than any whole episode that keeps the object in view, so losing it never pays).
 observation then repeats the last one seen). ``info``: ``distance_mm``, ``joints_deg`` (θ1,
 θ2, θ3), ``seen`` and ``end`` (None, "reached", "steps_used" or "lost").
 
+``render_mode="rgb_array"`` makes ``render()`` draw the episode as ``eyehand show`` draws a
+trial (the arm's views beside the camera image); ``"human"`` shows it in a Matplotlib window
+where a display exists. ``image_resolution=N`` adds the ray-cast camera's N×N grey image:
+the observation is then a Dict of ``reading`` (the Box above) and ``image``.
+
 ``reset(seed=…)`` restarts the draws of targets and starts from the seed; ``reset(options=
 {"sim": …, "camera": …, "events": […]})`` builds a fresh testbed with that simulator, camera
 and events (``rotate:EPISODE:DEG`` / ``elongate:EPISODE:LINK:CM``, applied before that

@@ -140,6 +140,10 @@ class ReachVectorEnv(VectorEnv):
             infos[key], infos[f"_{key}"] = value, mask.copy()
         return infos
 
+    def close_extras(self, **kwargs):
+        """Stops the worker threads."""
+        self._arms = None
+
     def action_for(self, move_deg):
         """The actions (N, 3) of the moves ``move_deg`` (N, 3, degrees), each scaled down
         as a whole where it passes the move bound, as ``ReachEnv.action_for`` does."""

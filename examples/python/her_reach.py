@@ -6,7 +6,9 @@ step).
 
     pip install stable-baselines3 sb3-contrib       # brings torch: large, so not in the tests
     python examples/python/her_reach.py [STEPS] [EVERY] [SEED] [ALGO]
-                                        # default 20000 5000 1 tqc; ALGO sac or tqc
+                                        # default 20000 5000 1 tqc; ALGO tqc, sac or lin5
+
+``lin5`` runs the built-in learner on the testbed of the same seed instead, for comparison.
 
 Training uses the sparse reward at 5 cm (FetchReach's), HER's ``future`` goals (4 a
 transition) and the rl-baselines3-zoo's TQC setting for FetchReach (two layers of 64 units,
@@ -72,23 +74,61 @@ def make_model(algo, env, seed):
     raise SystemExit(f"ALGO must be sac or tqc, not {algo}")
 
 
-def main():
-    steps = int(sys.argv[1]) if len(sys.argv) > 1 else 20_000
-    every = int(sys.argv[2]) if len(sys.argv) > 2 else 5_000
-    seed = int(sys.argv[3]) if len(sys.argv) > 3 else 1
-    algo = sys.argv[4] if len(sys.argv) > 4 else "tqc"
+def rl_curve(algo, steps, every, seed):
+    """(steps, shares, median) after every ``every`` training steps of SAC or TQC + HER."""
     torch.set_num_threads(1)
     single = DummyVecEnv([lambda: gym.make("eyehand/ReachGoal-v0", seed=seed)])
     train = VecNormalize(single, norm_obs=True, norm_reward=False)
     evaluation = gym.make("eyehand/ReachGoal-v0", seed=seed + 1000)
     model = make_model(algo, train, seed)
-    print(f"{algo} + HER, seed {seed}")
-    print("| steps | within 5 cm | within 1 cm | within 1 mm | median final distance (mm) |")
-    print("|---|---|---|---|---|")
     for done in range(0, steps + 1, every):
         if done:
             model.learn(total_timesteps=every, reset_num_timesteps=False)
-        shares, median = evaluate(model, train, evaluation)
+        yield (done, *evaluate(model, train, evaluation))
+
+
+def lin5_curve(steps, every, seed):
+    """The same for lin5 on the testbed of the same seed, learning after every episode as a
+    run does (its 8 pre-learning moves counted as steps; its moves unbounded), evaluated on
+    the same episodes without learning."""
+    lin5 = eyehand.Learner("lin5")
+    train = eyehand.Testbed(seed=seed)
+    evaluation = eyehand.Testbed(seed=seed + 1000)
+    train.prelearn(lin5)
+    taken = 8
+    for done in range(0, steps + 1, every):
+        while taken < done:
+            obs = train.reset()
+            while not train.done:
+                train.step(lin5.propose(obs))
+                obs = train.observation
+            taken += train.steps
+            train.learn(lin5)
+        finals = []
+        for episode in range(EPISODES):
+            obs = evaluation.reset(seed=EVAL_SEED + episode)
+            while not evaluation.done:
+                evaluation.step(lin5.propose(obs))
+                obs = evaluation.observation
+            finals.append(evaluation.distance_mm)
+        finals = np.array(finals)
+        yield done, [float(np.mean(finals <= d)) for d in DISTANCES_MM], float(np.median(finals))
+
+
+def main():
+    steps = int(sys.argv[1]) if len(sys.argv) > 1 else 20_000
+    every = int(sys.argv[2]) if len(sys.argv) > 2 else 5_000
+    seed = int(sys.argv[3]) if len(sys.argv) > 3 else 1
+    algo = sys.argv[4] if len(sys.argv) > 4 else "tqc"
+    if algo == "lin5":
+        print(f"lin5, seed {seed}")
+        curve = lin5_curve(steps, every, seed)
+    else:
+        print(f"{algo} + HER, seed {seed}")
+        curve = rl_curve(algo, steps, every, seed)
+    print("| steps | within 5 cm | within 1 cm | within 1 mm | median final distance (mm) |")
+    print("|---|---|---|---|---|")
+    for done, shares, median in curve:
         cells = " | ".join(f"{share:.0%}" for share in shares)
         print(f"| {done:,} | {cells} | {median:.1f} |", flush=True)
 

@@ -82,25 +82,12 @@ fn config_defaults_prints_a_complete_config_that_parses_to_the_defaults() {
     assert!(printed.contains("# obstacle"), "{printed}");
 }
 
-/// The study's appendix A.2 config as the study prints it: its listing's code blocks,
-/// comments and all, read from the study itself (shared/thesis beside the project).
+/// The entries of the study's appendix A.2 config listing, as the study prints them (its
+/// comments left out), committed under tests/data.
 fn study_listing() -> String {
-    let thesis = Path::new(ROOT).join("../shared/thesis/000_f62d6585187fedbf.txt");
-    let study = std::fs::read_to_string(&thesis)
-        .unwrap_or_else(|e| panic!("the study at {}: {e}", thesis.display()));
-    let start = study.find("## A.2 The configuration file").expect("A.2");
-    let end = study.find("### A.3").expect("A.3");
-    let mut listing = String::new();
-    let mut inside = false;
-    for line in study[start..end].lines() {
-        if line.starts_with("```") {
-            inside = !inside;
-        } else if inside {
-            listing += line;
-            listing.push('\n');
-        }
-    }
-    listing
+    let listing = Path::new(ROOT).join("tests/data/study_a2_entries.conf");
+    std::fs::read_to_string(&listing)
+        .unwrap_or_else(|e| panic!("the study's listing at {}: {e}", listing.display()))
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! `reach`, `simulate` and `show`.
 //! Flags are parsed here (validation only); each command hands resolved values to the
 //! library and turns the outcome into an exit code: 2 for bad input, 1 for a failed run,
-//! 130/143 for a run stopped by SIGINT/SIGTERM. Output goes through [`say`], so a closed
+//! 130/143 for a run stopped by SIGINT/SIGTERM. Output goes through `say`, so a closed
 //! pipe or a full disk behind stdout ends the program with a code, never a panic.
 
 mod reach;

@@ -1,91 +1,28 @@
 //! The learners: everything that maps a camera reading and two joint angles to a joint move.
 //!
-//! Every learner implements [`Learner`]; the trial loop only talks to that trait. Each
-//! learner takes its own settings; `experiment::setup` builds the one a run's config names.
+//! Every learner implements [`Learner`] (`contract/`); the trial loop only talks to that
+//! trait. What they learn from is in `inputs/`; the study's nested learners in `nested/`,
+//! the online peers in `online/`, the study's baselines and the model-based reference in
+//! `baselines/`, change detection in `change/`. Each learner takes its own settings;
+//! `experiment::setup` builds the one a run's config names.
 
+mod baselines;
 pub mod change;
-mod error;
-mod ffn;
-mod ik;
-mod issgp;
-mod kohonen;
-mod lin5;
-mod lin8;
-mod lwpr;
-mod merge_strategy;
+mod contract;
+mod inputs;
 mod method;
-mod mlp;
-mod model_event;
-pub mod net;
-mod nnw;
-mod observation;
-mod patterns;
-mod perceptron;
-mod stats;
-#[cfg(test)]
-mod synthetic;
-mod tree;
+mod nested;
+mod online;
 
-pub use error::LearnError;
-pub use ffn::{FfnLearner, FfnSettings};
-pub use ik::IkLearner;
-pub use issgp::{Issgp, IssgpSettings};
-pub use kohonen::{KohonenLearner, KohonenSettings, Lattice, Neighbourhood};
-pub use lin5::{Lin5, Lin5Settings};
-pub use lin8::{Lin8, Lin8Settings};
-pub use lwpr::{Lwpr, LwprSettings};
-pub use merge_strategy::MergeStrategy;
-pub use method::Method;
-pub use mlp::{Mlp, MlpSettings};
-pub use model_event::{MergeKind, ModelEvent};
-pub use nnw::{Nnw, NnwSettings};
-pub use observation::{Observation, Query};
-pub use patterns::{
-    adjusted_pattern, centred, pose_pairs, unadjusted_pattern, Pattern, Pattern5, Pattern8,
-    PatternSettings,
+pub use baselines::net;
+pub use baselines::{FfnLearner, FfnSettings, IkLearner, KohonenLearner, KohonenSettings};
+pub use baselines::{Lattice, Neighbourhood};
+pub use contract::{LearnError, Learner, LearnerStats, LevelStats, MergeKind, ModelEvent};
+pub use inputs::{
+    adjusted_pattern, centred, pose_pairs, unadjusted_pattern, Observation, Pattern, Pattern5,
+    Pattern8, PatternSettings, Query,
 };
-pub use perceptron::PerceptronSettings;
-pub use stats::{LearnerStats, LevelStats};
-pub use tree::{NestedLearner, NestedSettings, TreeSettings};
-
-use nalgebra::Vector3;
-
-/// A learner of the eye-hand mapping `Δθ = N(c, θ2, θ3)`.
-///
-/// Angles are in degrees, camera readings in the camera's units (pixels for cx, cy; the
-/// area measure for cz).
-pub trait Learner: std::fmt::Debug {
-    /// The learner's name: runs of it are filed under `data/<name>/` and reported under it
-    /// (summary.json's `method`). A built-in learner answers its [`Method`]'s name.
-    fn name(&self) -> &str;
-
-    /// The joint move (Δθ1, Δθ2, Δθ3 in degrees) this learner proposes for `query`.
-    /// Must always be finite.
-    fn propose(&mut self, query: &Query) -> Vector3<f64>;
-
-    /// Learns from the observations of one finished trial (or pre-learning move), in the
-    /// order they were made: every pair of poses gives a learning pattern. Fails only when
-    /// the learner's storage (a pattern file) fails; the run then stops with what it wrote.
-    fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError>;
-
-    /// Figures for the run's data files (`nodes`, `bins`, `patterns`, `abs_err`); all zero
-    /// by default.
-    fn stats(&self) -> LearnerStats {
-        LearnerStats::default()
-    }
-
-    /// True once after the learner threw away everything it knew (a root merge), or after a
-    /// detected change left it nothing valid to answer from: the trial loop then repeats
-    /// pre-learning before the next trial.
-    fn take_relearn_request(&mut self) -> bool {
-        false
-    }
-
-    /// Tells the learner which trial comes next (1-based; 0 is pre-learning), so it can
-    /// date what it learns. A learner watching for changes of the mapping weighs the trial
-    /// before here, and may forget or cut before this trial's first move.
-    fn start_trial(&mut self, _trial: usize) {}
-
-    /// Moves the merges and detected changes since the last call into `sink`.
-    fn drain_events(&mut self, _sink: &mut Vec<ModelEvent>) {}
-}
+pub use method::Method;
+pub use nested::{Lin5, Lin5Settings, Lin8, Lin8Settings, MergeStrategy, Nnw, NnwSettings};
+pub use nested::{NestedLearner, NestedSettings, PerceptronSettings, TreeSettings};
+pub use online::{Issgp, IssgpSettings, Lwpr, LwprSettings, Mlp, MlpSettings};

@@ -130,8 +130,8 @@ config_entries! {
     /// settled (the study's). Needs sim dynamic when above 0, but for learn_during_moves
     /// on the kinematic simulator (frames along each move's profile).
     camera_fps: f64 = 0.0, "frames/s", All, Within(0.0, 1000.0);
-    /// 1: the frames the camera takes during each move (at camera_fps, which must be above
-    /// 0) are poses of the trial's path too, and the learning patterns come from all of
+    /// 1: the frames the camera takes during each move (at camera_fps, or 30 frames/s when
+    /// camera_fps is 0) are poses of the trial's path too, and the learning patterns come from all of
     /// them; 0: only the poses at which moves ended (the study's).
     learn_during_moves: usize = 0, "", All, Within(0.0, 1.0);
     /// With learn_during_moves: at most this many of each move's frames are learned,
@@ -274,8 +274,9 @@ config_entries! {
     /// issgp: D, the random Fourier features (the Cholesky factor is D×D).
     issgp_features: usize = 500, "", ISSGP, Within(1.0, 4000.0);
     /// issgp: the kernel's length scale of each input θ2,θ3,cx*,cy*,cz*, as a fraction of
-    /// the input's boundary range (each above 0, at most 100).
-    issgp_length_scales: [f64; 5] = [0.5; 5], "", ISSGP, Rule::Any;
+    /// the input's boundary range (each above 0, at most 100); by default wider over the
+    /// joint angles than over the offsets (the best of the sweep in docs/PEERS.md).
+    issgp_length_scales: [f64; 5] = [1.0, 1.0, 0.5, 0.5, 0.5], "", ISSGP, Rule::Any;
     /// issgp: σn, the noise of a target (in norm_out units).
     issgp_noise: f64 = 0.01, "", ISSGP, PositiveUpTo(1e3);
     /// issgp: σf, the kernel's amplitude (in norm_out units).
@@ -284,21 +285,22 @@ config_entries! {
     /// no forgetting; keep 1/(1 − λ) well above issgp_features).
     issgp_forgetting: f64 = 1.0, "", ISSGP, Within(0.9, 1.0);
     /// issgp: 1: the answer is anchored at the centred target (no move when cx*, cy*, cz*
-    /// are 0); 0: the paper's plain regression.
-    issgp_anchored: usize = 0, "", ISSGP, Within(0.0, 1.0);
+    /// are 0; the default, the best of the sweep in docs/PEERS.md); 0: the paper's plain
+    /// regression.
+    issgp_anchored: usize = 1, "", ISSGP, Within(0.0, 1.0);
     /// mlp: tanh units in each of the net's two hidden layers.
     mlp_hidden: usize = 32, "", MLP, Within(1.0, 1000.0);
     /// mlp: Adam's step size.
     mlp_rate: f64 = 0.001, "", MLP, PositiveUpTo(1.0);
     /// mlp: patterns drawn from the replay buffer for each step.
     mlp_batch: usize = 32, "", MLP, Within(1.0, 100000.0);
-    /// mlp: Adam steps after each trial.
-    mlp_steps_per_trial: usize = 4, "", MLP, Within(1.0, 10000.0);
+    /// mlp: Adam steps after each trial (16, the best of the sweep in docs/PEERS.md).
+    mlp_steps_per_trial: usize = 16, "", MLP, Within(1.0, 10000.0);
     /// mlp: the replay buffer keeps this many most recent patterns.
     mlp_buffer: usize = 10000, "", MLP, Within(1.0, 1e6);
     /// mlp: 1: the answer is anchored at the centred target (no move when cx*, cy*, cz* are
-    /// 0); 0: a plain net.
-    mlp_anchored: usize = 0, "", MLP, Within(0.0, 1.0);
+    /// 0; the default, the best of the sweep in docs/PEERS.md); 0: a plain net.
+    mlp_anchored: usize = 1, "", MLP, Within(0.0, 1.0);
     /// 0: store learning patterns in the run's pat_file; anything else: in memory.
     use_pat_file: i64 = 1, "", NESTED, Rule::Any;
     /// Memory and the per-level tree error are recorded every this many trials.

@@ -11,7 +11,7 @@ mod declaration;
 mod defaults_text;
 mod entries;
 mod error;
-mod memory;
+mod memory_estimate;
 mod package_paths;
 mod rule;
 mod scope;
@@ -68,7 +68,7 @@ impl Config {
         Config::read_file(path).map(|(config, _)| config)
     }
 
-    /// Reads and checks a config file (at most [`MAX_CONFIG_BYTES`]), with where each value
+    /// Reads and checks a config file (at most `MAX_CONFIG_BYTES`), with where each value
     /// came from.
     pub fn read_file(path: &Path) -> Result<(Config, Sources), ConfigError> {
         let name = path.display().to_string();
@@ -215,7 +215,21 @@ impl Config {
         ];
         all[i]
     }
+
+    /// The camera's frame rate a run uses: `camera_fps`, or, when that is 0 and
+    /// `learn_during_moves` asks for frames during moves, 30 frames/s.
+    pub fn camera_frame_rate(&self) -> f64 {
+        if self.camera_fps == 0.0 && self.learn_during_moves == 1 {
+            MOVE_FRAMES_FPS
+        } else {
+            self.camera_fps
+        }
+    }
 }
+
+/// The frame rate (frames/s) of the frames taken during moves when `learn_during_moves` is 1
+/// and `camera_fps` gives none: a common camera's 30.
+const MOVE_FRAMES_FPS: f64 = 30.0;
 
 /// The source of a value no file, `--set` or flag gave: its default, or the program.
 fn unrecorded(is_default: bool) -> Source {

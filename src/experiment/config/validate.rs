@@ -6,7 +6,7 @@ mod issgp;
 mod lwpr;
 mod sensing;
 
-use super::memory::machine_memory;
+use super::memory_estimate::machine_memory;
 use super::values::{ConfigValue, ReachSetting};
 use super::{Config, ConfigErrorKind};
 use crate::robot::LearnedJoints;

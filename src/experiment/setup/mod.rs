@@ -2,7 +2,12 @@
 //! the learner and the trial loop's settings.
 
 mod arm;
+pub(super) mod events;
 mod learners;
+pub(super) mod preflight;
+pub(super) mod run_request;
+pub(super) mod run_setup;
+pub(super) mod start_check;
 
 pub use arm::{
     arm_entry, arm_settings, fit_reach, fitted_boundaries, learned_ranges, load_arm, reach_space,
@@ -71,12 +76,12 @@ pub fn trial_settings(config: &Config) -> TrialSettings {
             joint_deg: config.joint_noise_deg,
         },
         timing: CameraTiming {
-            fps: config.camera_fps,
+            fps: config.camera_frame_rate(),
             latency: config.camera_latency_ms / 1000.0,
             servo: config.servo_mode,
         },
         move_frames: (config.learn_during_moves == 1).then_some(MoveFrames {
-            fps: config.camera_fps,
+            fps: config.camera_frame_rate(),
             per_move: config.move_frames_learned,
         }),
     }

@@ -5,7 +5,7 @@
 //! goal point above it, the base plane and the events in effect are drawn too.
 
 use super::replay::TrialTrace;
-use super::watch::Look;
+use super::tracer::Look;
 use crate::experiment::plot::{register_font, FAMILY};
 use nalgebra::{Point3, Vector3};
 use plotters::coord::Shift;

@@ -9,7 +9,7 @@
 //! object (its reading fails), the image shows the scene alone.
 
 use super::arm_view::Area;
-use super::watch::Look;
+use super::tracer::Look;
 use crate::camera::{CameraModel, PixelCoverage, RaycastCamera, Scene};
 use crate::experiment::plot::{register_font, FAMILY};
 use plotters::prelude::*;

@@ -9,9 +9,9 @@ mod divergence;
 mod frame;
 mod recorded_run;
 mod replay;
+mod tracer;
 mod trial_files;
 mod trial_range;
-mod watch;
 
 pub use arm_view::{
     write_arm_image, ArmView, ARM_IMAGE_SIZE, LAST_CAMERA_CENTRE, PIXELS_PER_METRE,
@@ -24,11 +24,11 @@ pub use camera_image::{
 pub use frame::{draw_frame, frame_size, FrameView, RgbFrame};
 pub use recorded_run::RecordedRun;
 pub use replay::{replay, TrialTrace};
+pub use tracer::Look;
 #[cfg(feature = "rerun")]
 pub(crate) use trial_files::{remove_scratch_patterns, show_folder};
 pub use trial_files::{show_trials, ShowReport};
 pub use trial_range::TrialRange;
-pub use watch::Look;
 
 use std::path::PathBuf;
 

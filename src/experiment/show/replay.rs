@@ -3,10 +3,10 @@
 //! them (runs are deterministic), with the trials of interest watched.
 
 use super::divergence::StepOneLog;
-use super::watch::{Look, SharedLog, WatchLog, WatchedCamera, WatchedSim};
+use super::tracer::{Look, SharedLog, WatchLog, WatchedCamera, WatchedSim};
 use super::{RecordedRun, ShowError};
 use crate::control::{Failure, TrialLoop, TrialOutcome};
-use crate::experiment::run::next_trial;
+use crate::experiment::run::drive::next_trial;
 use crate::experiment::Event;
 use crate::learn::ModelEvent;
 use crate::robot::{ArmModel, Joints};

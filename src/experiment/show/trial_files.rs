@@ -5,7 +5,7 @@
 use super::arm_view::write_arm_image;
 use super::camera_image::write_camera_image;
 use super::replay::{replay, TrialTrace};
-use super::watch::Look;
+use super::tracer::Look;
 use super::{RecordedRun, ShowError, TrialRange};
 use crate::camera::CameraModel;
 use crate::experiment::setup::{move_settings, obstacles};

@@ -2,8 +2,8 @@
 //! path a Slurm task takes), started by a [`CellLauncher`] that names only the binary and the
 //! subcommand that runs one cell; several side by side; signals passed on to them.
 
+use super::cell_progress::StudyProgress;
 use super::plan::StudyFolder;
-use super::progress::StudyProgress;
 use super::signals::{forward, Interrupts};
 use super::StudyError;
 use crate::experiment::{run, RunError, RunResult, StopRequest};

@@ -1,12 +1,12 @@
 //! Comparisons and sweeps: a plan of cells (one typed run each) in a study folder, run
 //! side by side as separate processes or as a Slurm job array, and gathered into a table.
 
+mod cell_progress;
 mod cells;
 mod compare;
 mod error;
 mod gather;
 mod plan;
-mod progress;
 mod signals;
 mod slurm;
 mod sweep;

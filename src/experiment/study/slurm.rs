@@ -167,7 +167,7 @@ fn script_path(folder: &StudyFolder, plan: &StudyPlan) -> String {
 
 /// Refuses a data folder (absolute) whose studies' paths the job script's `#SBATCH --chdir`
 /// and `--output` lines cannot carry: a line break, or `%` (which Slurm reads as a file
-/// name pattern there). Anything else is quoted ([`sbatch_quote`]).
+/// name pattern there). Anything else is quoted (`sbatch_quote`).
 pub fn check_slurm_folder(data: &Path) -> Result<(), StudyError> {
     let text = data.display().to_string();
     match text.chars().find(|c| "\n\r%".contains(*c)) {

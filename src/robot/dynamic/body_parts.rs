@@ -3,7 +3,7 @@
 //! a uniform rod (see [`Inertial::stretched`]), a massless body given a small mass.
 
 use super::inertia::Inertial;
-use crate::robot::collision::{body_elements, stretch_of, Elements};
+use crate::robot::contact::collision::{body_elements, stretch_of, Elements};
 use crate::robot::ArmModel;
 use nalgebra::Isometry3;
 

@@ -5,8 +5,8 @@
 //! move, as a joint limit does.
 
 use super::builder::Arm;
-use crate::robot::clearance::contact_pairs;
-use crate::robot::collision::body_elements;
+use crate::robot::contact::clearance::contact_pairs;
+use crate::robot::contact::collision::body_elements;
 use crate::robot::{ArmModel, Obstacle, MAX_JOINTS};
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::parry::bounding_volume::{Aabb, BoundingVolume};

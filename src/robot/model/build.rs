@@ -6,9 +6,9 @@ use crate::robot::description::{
     auto_camera_link, Chain, ChainBody, DescriptionError, DescriptionErrorKind as Kind,
     GeometryElement, Inertial, JointKind, RobotDescription,
 };
-use crate::robot::joint::{LinkBody, RevoluteJoint};
 use crate::robot::Shape;
 use crate::robot::MAX_JOINTS;
+use crate::robot::{LinkBody, RevoluteJoint};
 use nalgebra::{Isometry3, Translation3, Vector3};
 
 /// Which part of a robot description is the arm, and where its camera sits.

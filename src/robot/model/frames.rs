@@ -1,6 +1,6 @@
 //! The world poses of a chain's joint frames, one per moving joint, in a fixed-size array.
 
-use super::super::joint_vector::MAX_JOINTS;
+use super::joint_vector::MAX_JOINTS;
 use nalgebra::Isometry3;
 use std::ops::Index;
 

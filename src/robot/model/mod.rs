@@ -4,17 +4,21 @@
 
 mod build;
 mod frames;
+pub(crate) mod ik;
+mod ik_seeds;
+mod joint;
+mod joint_vector;
 mod wrist;
 
 pub use build::{ArmSettings, CameraLink, LearnedJoints};
 pub use frames::Frames;
 pub use wrist::Wrist;
 
-use super::ik::GuessGeometry;
-use super::ik_seeds::IkSeeds;
-use super::joint::{LinkBody, RevoluteJoint};
-use super::joint_vector::{Joints, MAX_JOINTS};
 use super::RobotError;
+use ik::GuessGeometry;
+use ik_seeds::IkSeeds;
+pub use joint::{LinkBody, RevoluteJoint};
+pub use joint_vector::{Joints, MAX_JOINTS};
 use nalgebra::{Isometry3, Point3, Unit, UnitQuaternion, Vector3};
 
 /// The three learned joint angles (rad): the study's θ1 (base yaw), θ2 (shoulder), θ3
@@ -130,12 +134,12 @@ impl ArmModel {
     }
 
     /// Starting poses of the inverse kinematics.
-    pub(super) fn ik_seeds(&self) -> &IkSeeds {
+    fn ik_seeds(&self) -> &IkSeeds {
         &self.seeds
     }
 
     /// The link lengths the inverse kinematics starts from.
-    pub(super) fn guess_geometry(&self) -> &GuessGeometry {
+    fn guess_geometry(&self) -> &GuessGeometry {
         &self.guess
     }
 

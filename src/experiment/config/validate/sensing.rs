@@ -28,12 +28,6 @@ impl Config {
             "must be 0 or at least 1 frame per second (the arm waits for frames)",
         )?;
         rule(
-            !learning || self.camera_fps > 0.0,
-            "learn_during_moves",
-            &self.learn_during_moves,
-            "1 needs camera_fps above 0: the rate of the frames taken during a move",
-        )?;
-        rule(
             self.camera_fps <= ticks_per_second * (1.0 + 1e-9),
             "camera_fps",
             &self.camera_fps,

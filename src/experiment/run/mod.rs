@@ -1,0 +1,6 @@
+//! Running a run: the trial driver, the stop request that signals make, and the progress
+//! bar with its long-trial line.
+
+pub(super) mod drive;
+pub(super) mod interrupt;
+pub(super) mod progress_bar;

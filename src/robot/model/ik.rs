@@ -1,0 +1,273 @@
+//! Inverse kinematics of the camera centre: the elbow-up pose (θ1, θ2, θ3) that puts the
+//! camera at a point with its optical axis vertical. A closed-form guess from the model's
+//! link vectors is polished by Newton steps on the full forward kinematics, so the answer
+//! is exact for whatever the model is now (stretched links included). The link lengths the
+//! guess needs are worked out once per change of the model ([`GuessGeometry`]), and each
+//! Newton step walks the chain once per pose it evaluates.
+
+use super::{ArmModel, ArmPose, Controlled, Frames, Wrist};
+use crate::robot::RobotError;
+use nalgebra::{Matrix3, Point3, Vector3};
+use std::f64::consts::TAU;
+
+/// Position error (m) at which a solution is accepted.
+const TOLERANCE_M: f64 = 1e-11;
+const MAX_NEWTON_STEPS: usize = 30;
+const JACOBIAN_STEP: f64 = 1e-7;
+/// Where in each learned joint's range the starting poses of a general arm lie.
+const SEED_FRACTIONS: [f64; 3] = [0.5, 0.25, 0.75];
+
+/// What the closed-form guess needs of the arm, from its zero pose: the shoulder's
+/// position, the upper arm's and forearm's lengths and the camera's offset from the wrist
+/// with the arm level (m).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(super) struct GuessGeometry {
+    shoulder: Vector3<f64>,
+    upper: f64,
+    fore: f64,
+    camera_offset: Vector3<f64>,
+    /// The bearing of the wrist centre with the base yaw at 0, the shoulder and elbow at
+    /// the middle of their limits (rad): where the arm reaches at yaw 0.
+    heading: f64,
+}
+
+impl GuessGeometry {
+    /// The guess's geometry of `model` as it is now.
+    pub(super) fn of(model: &ArmModel) -> GuessGeometry {
+        let [_, s, e] = model.learned();
+        let w = wrist_joint(model);
+        let frames = model.link_frames(&model.rest());
+        let shoulder = frames[s].translation.vector;
+        let upper = (frames[e].translation.vector - shoulder).norm();
+        let fore = (frames[w].translation.vector - frames[e].translation.vector).norm();
+        let posed = model.full_pose(&model.controlled_of(&model.rest()));
+        let camera_offset =
+            model.camera_position(&posed).coords - model.link_frames(&posed)[w].translation.vector;
+        let middle = |j: usize| model.joints()[j].middle();
+        let reference = model.with_learned(&Controlled::new(0.0, middle(s), middle(e)));
+        let reached = model.link_frames(&reference)[w].translation.vector;
+        GuessGeometry {
+            shoulder,
+            upper,
+            fore,
+            camera_offset,
+            heading: reached.y.atan2(reached.x),
+        }
+    }
+}
+
+impl ArmModel {
+    /// The elbow-up pose that puts the camera centre at `target` (world, m), inside the
+    /// joint limits, or why there is none.
+    pub fn solve_camera_position(&self, target: &Point3<f64>) -> Result<Controlled, RobotError> {
+        let unreachable = |why: &str| RobotError::Unreachable {
+            x_cm: target.x * 100.0,
+            y_cm: target.y * 100.0,
+            z_cm: target.z * 100.0,
+            why: why.to_string(),
+        };
+        if !target.coords.iter().all(|v| v.is_finite()) {
+            return Err(unreachable("the target is not a finite point"));
+        }
+        let mut failure: Option<String> = None;
+        let tabled = (!self.is_oscar6_form())
+            .then(|| self.ik_seeds().nearest(self, target))
+            .flatten();
+        let starts = tabled
+            .into_iter()
+            .chain(self.closed_form_guess(target))
+            .chain(
+                (!self.is_oscar6_form())
+                    .then(|| self.seeds(target))
+                    .into_iter()
+                    .flatten(),
+            );
+        for start in starts {
+            match self.newton_from(start, target) {
+                Ok(theta) => return Ok(theta),
+                Err(why) => {
+                    if failure
+                        .as_ref()
+                        .is_none_or(|f| failure_rank(&why) > failure_rank(f))
+                    {
+                        failure = Some(why);
+                    }
+                }
+            }
+        }
+        Err(unreachable(
+            failure.as_deref().unwrap_or("out of the arm's reach"),
+        ))
+    }
+
+    /// Newton steps on the camera centre from `theta`: the pose that reaches `target`
+    /// elbow up inside the limits, or why there is none from this start.
+    fn newton_from(
+        &self,
+        mut theta: Controlled,
+        target: &Point3<f64>,
+    ) -> Result<Controlled, String> {
+        for _ in 0..MAX_NEWTON_STEPS {
+            // The wrist solved from rest, as `place` solves it: the same pose for the
+            // same angles whatever came before.
+            let pose = self.pose_of(&theta);
+            if !pose.wrist_found {
+                return Err("no wrist pose keeps the camera looking down on the way".into());
+            }
+            let near = pose.joints;
+            let here = camera_centre(&pose);
+            let residual = here - target;
+            if residual.norm() < TOLERANCE_M {
+                if !self.elbow_up_in(&pose.level_frames, theta.x) {
+                    return Err("only an elbow-down pose reaches it".into());
+                }
+                self.check_joint_limits(&pose.joints)
+                    .map_err(|e| e.to_string())?;
+                return Ok(theta);
+            }
+            let jacobian = self
+                .followed_jacobian(&pose.joints)
+                .unwrap_or_else(|| self.position_jacobian(&theta, &here.coords, &near));
+            let step = jacobian
+                .lu()
+                .solve(&residual)
+                .ok_or("the arm is singular there")?;
+            theta -= step;
+            if !theta.iter().all(|v| v.is_finite()) {
+                return Err("inverse kinematics did not converge".into());
+            }
+        }
+        Err("inverse kinematics did not converge".into())
+    }
+
+    /// Starting poses for an arm that is not of the OSCAR-6 form: the learned joints at a
+    /// grid of points inside their limits, the base turned towards the target.
+    fn seeds(&self, target: &Point3<f64>) -> impl Iterator<Item = Controlled> + '_ {
+        let [yaw_joint, s, e] = self.learned().map(|j| &self.joints()[j]);
+        let within = |joint: &super::RevoluteJoint, f: f64| {
+            let (lower, upper) = joint.one_turn();
+            lower + (upper - lower) * f
+        };
+        let bearing = target.y.atan2(target.x);
+        let yaw_limits = (yaw_joint.lower, yaw_joint.upper);
+        SEED_FRACTIONS.iter().flat_map(move |&fs| {
+            SEED_FRACTIONS.iter().filter_map(move |&fe| {
+                let theta = Controlled::new(0.0, within(s, fs), within(e, fe));
+                let pose = self.pose_of(&theta);
+                let p = camera_centre(&pose);
+                let mut yaw = bearing - p.y.atan2(p.x);
+                for turn in [0.0, TAU, -TAU] {
+                    if (yaw_limits.0..=yaw_limits.1).contains(&(yaw + turn)) {
+                        yaw += turn;
+                        break;
+                    }
+                }
+                pose.wrist_found
+                    .then_some(Controlled::new(yaw, theta.y, theta.z))
+            })
+        })
+    }
+
+    /// ∂(camera centre)/∂(θ1, θ2, θ3), the wrist following the vertical constraint, by
+    /// forward differences from `base`, the camera centre at `theta` (wrist at `near`).
+    fn position_jacobian(
+        &self,
+        theta: &Controlled,
+        base: &Vector3<f64>,
+        near: &super::Joints,
+    ) -> Matrix3<f64> {
+        let mut jacobian = Matrix3::zeros();
+        for i in 0..3 {
+            let mut shifted = *theta;
+            shifted[i] += JACOBIAN_STEP;
+            let moved = camera_centre(&self.pose_near(&shifted, near)).coords;
+            jacobian.set_column(i, &((moved - base) / JACOBIAN_STEP));
+        }
+        jacobian
+    }
+
+    /// True when the elbow lies above the shoulder–wrist line.
+    pub fn is_elbow_up(&self, theta: &Controlled) -> bool {
+        let frames = self.link_frames(&self.with_learned(theta));
+        self.elbow_up_in(&frames, theta.x)
+    }
+
+    /// True when the elbow lies above the shoulder–wrist line, from the joint frames with
+    /// the wrist at rest. For the OSCAR-6 form the arm's plane turns with the base yaw; for
+    /// any other arm the plane turns with it from the direction the arm reaches in at the
+    /// middle of its limits (whatever the base's zero direction), and the wrist must lie
+    /// in front of the base axis in that plane (an arm reaching back over its shoulder is a
+    /// second branch of the mapping).
+    fn elbow_up_in(&self, frames: &Frames, yaw: f64) -> bool {
+        let [_, s, e] = self.learned();
+        let (shoulder, elbow, wrist) = (
+            frames[s].translation.vector,
+            frames[e].translation.vector,
+            frames[wrist_joint(self)].translation.vector,
+        );
+        if self.is_oscar6_form() {
+            return elbow_up(shoulder, elbow, wrist, yaw);
+        }
+        let heading = yaw + self.guess_geometry().heading;
+        let in_front = wrist.x * heading.cos() + wrist.y * heading.sin() > 0.0;
+        in_front && elbow_up(shoulder, elbow, wrist, heading)
+    }
+
+    /// A closed-form guess for a Puma-like arm: yaw towards the target, then the
+    /// shoulder–elbow–wrist triangle in the vertical plane.
+    fn closed_form_guess(&self, target: &Point3<f64>) -> Option<Controlled> {
+        let GuessGeometry {
+            shoulder,
+            upper,
+            fore,
+            camera_offset,
+            ..
+        } = *self.guess_geometry();
+        let yaw = target.y.atan2(target.x);
+        let wrist = target.coords
+            - nalgebra::Rotation3::from_axis_angle(&Vector3::z_axis(), yaw) * camera_offset;
+        let reach = (wrist.x * wrist.x + wrist.y * wrist.y).sqrt() - shoulder.x;
+        let height = wrist.z - shoulder.z;
+        let distance = reach.hypot(height);
+        let cos_interior =
+            (upper * upper + fore * fore - distance * distance) / (2.0 * upper * fore);
+        let cos_shoulder =
+            (upper * upper + distance * distance - fore * fore) / (2.0 * upper * distance);
+        if !(-1.0..=1.0).contains(&cos_interior) || !(-1.0..=1.0).contains(&cos_shoulder) {
+            return None;
+        }
+        let elevation = height.atan2(reach) + cos_shoulder.acos();
+        let elbow = std::f64::consts::PI - cos_interior.acos();
+        Some(Controlled::new(yaw, elevation, elbow))
+    }
+}
+
+/// The camera centre of a worked-out pose.
+fn camera_centre(pose: &ArmPose) -> Point3<f64> {
+    pose.camera * Point3::origin()
+}
+
+/// The joint whose origin is the wrist centre: the one-joint wrist's joint, else the first
+/// solved wrist joint, else the last joint.
+fn wrist_joint(model: &ArmModel) -> usize {
+    match *model.wrist() {
+        Wrist::OneJoint(j) => j,
+        Wrist::Numerical { joints, .. } => joints[0],
+        Wrist::None => model.dof() - 1,
+    }
+}
+
+/// How telling a reason for failing is: a pose found but refused beats none found.
+fn failure_rank(why: &str) -> u8 {
+    u8::from(why.contains("elbow-down") || why.contains("limits"))
+}
+
+/// True when the elbow lies above the shoulder–wrist line (world points, the arm's plane
+/// turned by `yaw`).
+fn elbow_up(shoulder: Vector3<f64>, elbow: Vector3<f64>, wrist: Vector3<f64>, yaw: f64) -> bool {
+    let heading = Vector3::new(yaw.cos(), yaw.sin(), 0.0);
+    let planar = |v: Vector3<f64>| (v.dot(&heading), v.z);
+    let (wr, wz) = planar(wrist - shoulder);
+    let (er, ez) = planar(elbow - shoulder);
+    wr * ez - wz * er > 0.0
+}

@@ -1,0 +1,367 @@
+//! The reach space fitted to an arm: the study's half annulus, scaled as large as it fits
+//! inside the camera positions the arm reaches looking down — wrist solution inside its
+//! limits, elbow up, every link clear of the floor and of the arm's other links — with a
+//! margin.
+
+use crate::robot::contact::contact_free::{ContactRule, Touch};
+use crate::robot::{ArmModel, Controlled, ReachSpace};
+use std::f64::consts::TAU;
+
+/// Grid cell of the reached (r, z) set (m).
+const CELL: f64 = 0.01;
+/// Learned-joint steps per joint when sampling the shoulder and elbow.
+const STEPS: usize = 240;
+/// The longest diagonal (m) of a square of neighbouring samples that counts as reached
+/// between its corners: longer, the wrist changed its solution between them.
+const MAX_EDGE: f64 = 0.1;
+/// How far inside the reached set the fitted space stays (m).
+const MARGIN: f64 = 0.02;
+/// How far (degrees) the sampled shoulder and elbow angles stay inside limits that do not
+/// go all the way round: poses at a limit leave the learner no room to move past its aim.
+const LIMIT_MARGIN_DEG: f64 = 10.0;
+/// Scales tried, largest first, as fractions of the arm's furthest reach.
+const SCALE_STEPS: usize = 200;
+/// The smallest fraction tried: a space whose outer radius is under a quarter of the arm's
+/// reach is a sliver the study's experiments say nothing about.
+const MIN_SCALE_SHARE: f64 = 0.25;
+
+/// A reach space fitted to an arm, and how much of what it reaches it takes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ReachFit {
+    /// The fitted space.
+    pub space: ReachSpace,
+    /// The share of the reached (r, z) cells inside the fitted space's (r, z) box.
+    pub area_share: f64,
+    /// Shoulder–elbow poses that were sampled, and how many were usable.
+    pub sampled: usize,
+    /// Usable poses (wrist solved within limits, elbow up, clear of the floor and of the
+    /// arm's own links).
+    pub usable: usize,
+}
+
+/// Why no reach space fits an arm: how many of the sampled shoulder–elbow poses each
+/// condition turned away, and how many were left.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct ReachFitFailure {
+    /// Shoulder–elbow poses sampled.
+    pub sampled: usize,
+    /// Poses at which no wrist pose inside the limits keeps the camera looking down.
+    pub no_wrist: usize,
+    /// Poses with the elbow not up (or the wrist behind the base).
+    pub elbow_down: usize,
+    /// Poses with a link or the camera below the floor, or less than
+    /// [`CONTACT_MARGIN`](crate::robot::CONTACT_MARGIN) above it.
+    pub below_floor: usize,
+    /// Poses in which two links that may touch are less than [`CONTACT_MARGIN`](crate::robot::CONTACT_MARGIN) apart.
+    pub in_contact: usize,
+    /// Poses left, in which no half annulus of the study's shape fits.
+    pub usable: usize,
+}
+
+impl std::fmt::Display for ReachFitFailure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let share = |n: usize| 100.0 * n as f64 / self.sampled.max(1) as f64;
+        write!(
+            f,
+            "of {} shoulder-elbow poses sampled, the wrist could not look down at {:.0}%, \
+             the elbow was not up at {:.0}%, a link was at the floor at {:.0}% and the links \
+             touched each other at {:.0}% (closer than 1 cm counts; the shoulder and \
+             elbow were sampled 10° inside their limits); no half annulus of the study's shape reaching \
+             at least a quarter as far as the arm fits in the {} usable ones",
+            self.sampled,
+            share(self.no_wrist),
+            share(self.elbow_down),
+            share(self.below_floor),
+            share(self.in_contact),
+            self.usable
+        )
+    }
+}
+
+/// The reached (r, z) cells: `rows` of `cols`, row 0 at `z0`, column 0 at r = 0.
+struct Grid {
+    z0: f64,
+    rows: usize,
+    cols: usize,
+    /// Prefix sums of reached cells: `sums[(row) * (cols + 1) + col]` counts rows < row,
+    /// cols < col.
+    sums: Vec<u32>,
+    reached: usize,
+}
+
+impl Grid {
+    /// The cells the sampled poses reach: each cell holding a sample, and each cell whose
+    /// centre lies in a triangle of neighbouring samples (the reached set between them).
+    fn new(samples: &Samples) -> Option<Grid> {
+        let points = || samples.points.iter().flatten();
+        let z_low = points().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        let z_high = points().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+        let r_high = points().map(|p| p.0).fold(0.0, f64::max);
+        if !(z_low.is_finite() && z_high.is_finite()) {
+            return None;
+        }
+        let rows = ((z_high - z_low) / CELL) as usize + 1;
+        let cols = (r_high / CELL) as usize + 1;
+        let mut hit = vec![false; rows * cols];
+        let cell = |(r, z): (f64, f64)| ((z - z_low) / CELL) as usize * cols + (r / CELL) as usize;
+        for &point in points() {
+            hit[cell(point)] = true;
+        }
+        for triangle in samples.triangles() {
+            fill(&mut hit, (z_low, cols), &triangle);
+        }
+        let mut sums = vec![0u32; (rows + 1) * (cols + 1)];
+        for row in 0..rows {
+            for col in 0..cols {
+                let at = |r: usize, c: usize| sums[r * (cols + 1) + c];
+                sums[(row + 1) * (cols + 1) + col + 1] = at(row, col + 1) + at(row + 1, col)
+                    - at(row, col)
+                    + u32::from(hit[row * cols + col]);
+            }
+        }
+        let reached = hit.iter().filter(|h| **h).count();
+        Some(Grid {
+            z0: z_low,
+            rows,
+            cols,
+            sums,
+            reached,
+        })
+    }
+
+    /// Reached cells in rows `r0..r1`, columns `c0..c1`.
+    fn count(&self, (r0, r1): (usize, usize), (c0, c1): (usize, usize)) -> u32 {
+        let at = |r: usize, c: usize| self.sums[r * (self.cols + 1) + c];
+        at(r1, c1) + at(r0, c0) - at(r0, c1) - at(r1, c0)
+    }
+
+    /// True when every cell meeting the box r_min..r_max, z_min..z_max is reached.
+    fn covers(&self, r: (f64, f64), z: (f64, f64)) -> bool {
+        let col = |v: f64| (v / CELL).floor();
+        let row = |v: f64| ((v - self.z0) / CELL).floor();
+        let (c0, c1, r0, r1) = (col(r.0), col(r.1) + 1.0, row(z.0), row(z.1) + 1.0);
+        if c0 < 0.0 || r0 < 0.0 || c1 > self.cols as f64 || r1 > self.rows as f64 {
+            return false;
+        }
+        let (c0, c1, r0, r1) = (c0 as usize, c1 as usize, r0 as usize, r1 as usize);
+        self.count((r0, r1), (c0, c1)) as usize == (r1 - r0) * (c1 - c0)
+    }
+}
+
+impl ReachSpace {
+    /// The study's half annulus scaled as large as it fits inside what `model` reaches
+    /// with the camera looking down, its lowest target above `floor_z` (m; the object
+    /// hangs `below` m under the camera); when no such space exists, how many sampled
+    /// poses each of the conditions turned away.
+    pub fn fit(model: &ArmModel, floor_z: f64, below: f64) -> Result<ReachFit, ReachFitFailure> {
+        let (samples, tally) = reached_points(model, floor_z);
+        let grid = Grid::new(&samples).ok_or(tally)?;
+        let study = ReachSpace::OSCAR6;
+        let r_far = grid.cols as f64 * CELL;
+        let lowest = (floor_z + below).max(grid.z0);
+        let shares = (0..SCALE_STEPS).map(|step| 1.0 - step as f64 / SCALE_STEPS as f64);
+        for share in shares.take_while(|share| *share >= MIN_SCALE_SHARE) {
+            let scale = r_far / study.r_max * share;
+            let Some(space) = place(&grid, scale, lowest) else {
+                continue;
+            };
+            let r = (space.r_min - MARGIN, space.r_max + MARGIN);
+            let z = (space.z_min - MARGIN, space.z_max + MARGIN);
+            let inside = grid.count(
+                (
+                    ((z.0 - grid.z0) / CELL) as usize,
+                    ((z.1 - grid.z0) / CELL) as usize + 1,
+                ),
+                ((r.0 / CELL) as usize, (r.1 / CELL) as usize + 1),
+            );
+            return Ok(ReachFit {
+                space,
+                area_share: inside as f64 / grid.reached as f64,
+                sampled: tally.sampled,
+                usable: tally.usable,
+            });
+        }
+        Err(tally)
+    }
+}
+
+/// The study's half annulus at `scale` placed in `grid` with [`MARGIN`] to spare, its
+/// lowest camera height at least `lowest` (m): at the study's radii when it fits there,
+/// else moved out by as few cells as it takes; at the middle of the heights it fits at.
+fn place(grid: &Grid, scale: f64, lowest: f64) -> Option<ReachSpace> {
+    let study = ReachSpace::OSCAR6;
+    let height = (study.z_max - study.z_min) * scale;
+    let top = grid.z0 + grid.rows as f64 * CELL - height - MARGIN;
+    let r_far = grid.cols as f64 * CELL;
+    let radii = (0..)
+        .map(|k| {
+            (
+                study.r_min * scale + k as f64 * CELL,
+                study.r_max * scale + k as f64 * CELL,
+            )
+        })
+        .take_while(|r| r.1 + MARGIN <= r_far);
+    radii.into_iter().find_map(|(r_min, r_max)| {
+        let r = (r_min - MARGIN, r_max + MARGIN);
+        let fitting: Vec<f64> = (0..)
+            .map(|k| lowest + MARGIN + k as f64 * CELL)
+            .take_while(|z_min| *z_min <= top)
+            .filter(|z_min| grid.covers(r, (z_min - MARGIN, z_min + height + MARGIN)))
+            .collect();
+        fitting.get(fitting.len() / 2).map(|&z_min| ReachSpace {
+            r_min,
+            r_max,
+            z_min,
+            z_max: z_min + height,
+        })
+    })
+}
+
+/// The camera centres (r, z) of the shoulder–elbow poses on a `STEPS` × `STEPS` grid over
+/// the joints' limits (one turn each), `None` where a condition turned the pose away.
+struct Samples {
+    /// `points[i * STEPS + k]`: shoulder step i, elbow step k.
+    points: Vec<Option<(f64, f64)>>,
+    /// Whether the shoulder's and the elbow's steps go all the way round (the last step
+    /// neighbours the first).
+    full_turn: [bool; 2],
+}
+
+impl Samples {
+    /// The triangles of neighbouring reached samples: two per grid square whose four
+    /// corners are reached and lie within [`MAX_EDGE`] of each other.
+    fn triangles(&self) -> impl Iterator<Item = [(f64, f64); 3]> + '_ {
+        let next = |n: usize, turn: bool| match n + 1 {
+            STEPS if turn => Some(0),
+            STEPS => None,
+            m => Some(m),
+        };
+        let squares = (0..STEPS).flat_map(move |i| (0..STEPS).map(move |k| (i, k)));
+        squares.flat_map(move |(i, k)| {
+            let corners = next(i, self.full_turn[0])
+                .zip(next(k, self.full_turn[1]))
+                .and_then(|(i1, k1)| {
+                    let at = |i: usize, k: usize| self.points[i * STEPS + k];
+                    Some([at(i, k)?, at(i1, k)?, at(i1, k1)?, at(i, k1)?])
+                });
+            let near = |c: &[(f64, f64); 4]| {
+                let d = |a: (f64, f64), b: (f64, f64)| (a.0 - b.0).hypot(a.1 - b.1);
+                d(c[0], c[2]).max(d(c[1], c[3])) <= MAX_EDGE
+            };
+            corners
+                .filter(near)
+                .into_iter()
+                .flat_map(|[a, b, c, d]| [[a, b, c], [a, c, d]])
+        })
+    }
+}
+
+/// Marks in `hit` (rows of `cols` cells, row 0 at `z0`) each cell whose centre lies in
+/// `triangle` (r, z).
+fn fill(hit: &mut [bool], (z0, cols): (f64, usize), triangle: &[(f64, f64); 3]) {
+    let [a, b, c] = *triangle;
+    let cross = |p: (f64, f64), q: (f64, f64), x: (f64, f64)| {
+        (q.0 - p.0) * (x.1 - p.1) - (q.1 - p.1) * (x.0 - p.0)
+    };
+    let area = cross(a, b, c);
+    if area == 0.0 {
+        return;
+    }
+    let extreme = |f: fn(f64, f64) -> f64, pick: fn(&(f64, f64)) -> f64| {
+        triangle.iter().map(pick).fold(pick(&a), f)
+    };
+    let (r0, r1) = (extreme(f64::min, |p| p.0), extreme(f64::max, |p| p.0));
+    let (z_lo, z_hi) = (extreme(f64::min, |p| p.1), extreme(f64::max, |p| p.1));
+    let rows = hit.len() / cols;
+    let first = |v: f64| ((v / CELL - 0.5).ceil().max(0.0)) as usize;
+    let last = |v: f64, n: usize| ((v / CELL - 0.5).floor() as usize).min(n - 1);
+    for row in first(z_lo - z0)..=last(z_hi - z0, rows) {
+        for col in first(r0)..=last(r1, cols) {
+            let x = ((col as f64 + 0.5) * CELL, z0 + (row as f64 + 0.5) * CELL);
+            let signs = [cross(a, b, x), cross(b, c, x), cross(c, a, x)];
+            if signs.iter().all(|s| s * area >= 0.0) {
+                hit[row * cols + col] = true;
+            }
+        }
+    }
+}
+
+/// The camera centres (r, z) of shoulder–elbow poses on a grid inside the limits (the
+/// base yaw at rest: turning it moves the camera about the base's z axis only) whose
+/// wrist is solved inside its limits, elbow up, with every link [`CONTACT_MARGIN`](crate::robot::CONTACT_MARGIN) clear
+/// of `floor_z` and of the links it may touch; and how many poses each condition turned
+/// away.
+fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) {
+    let [yaw, s, e] = model.learned();
+    let full_turn = [s, e].map(|j| {
+        let (lower, upper) = model.joints()[j].one_turn();
+        upper - lower >= TAU - 1e-9
+    });
+    let span = |j: usize, full_turn: bool| {
+        let (lower, upper) = model.joints()[j].one_turn();
+        let margin = if full_turn {
+            0.0
+        } else {
+            LIMIT_MARGIN_DEG.to_radians()
+        };
+        (lower + margin, (upper - lower - 2.0 * margin).max(0.0))
+    };
+    let (shoulder, elbow) = (span(s, full_turn[0]), span(e, full_turn[1]));
+    let mut tally = ReachFitFailure {
+        sampled: STEPS * STEPS,
+        ..ReachFitFailure::default()
+    };
+    let contact = ContactRule::new(model, floor_z);
+    let base_yaw = model.rest()[yaw];
+    let mut samples = Samples {
+        points: vec![None; STEPS * STEPS],
+        full_turn,
+    };
+    let at = |(lower, width): (f64, f64), n: usize| lower + width * (n as f64 + 0.5) / STEPS as f64;
+    let step_of = |(lower, width): (f64, f64), angle: f64| {
+        ((angle - lower) / width * STEPS as f64).clamp(0.0, (STEPS - 1) as f64) as usize
+    };
+    let rest = model.rest();
+    let (i_rest, k_rest) = (step_of(shoulder, rest[s]), step_of(elbow, rest[e]));
+    // Each pose's wrist is solved from its neighbour's, outwards from the rest pose, so
+    // that the whole grid keeps the rest pose's wrist branch.
+    let mut centres = vec![rest; STEPS];
+    for (i, from_row) in outward(i_rest) {
+        let start = from_row.map_or(rest, |f| centres[f]);
+        let mut row = vec![start; STEPS];
+        for (k, from) in outward(k_rest) {
+            let near = from.map_or(start, |f| row[f]);
+            row[k] = near;
+            let theta = Controlled::new(base_yaw, at(shoulder, i), at(elbow, k));
+            let pose = model.pose_near(&theta, &near);
+            if !model.wrist_fits(&pose) {
+                tally.no_wrist += 1;
+                continue;
+            }
+            row[k] = pose.joints;
+            if !model.is_elbow_up(&theta) {
+                tally.elbow_down += 1;
+                continue;
+            }
+            match contact.touch(model, &pose) {
+                Some(Touch::Floor) => tally.below_floor += 1,
+                Some(Touch::Links) => tally.in_contact += 1,
+                None => {
+                    let p = pose.camera.translation.vector;
+                    samples.points[i * STEPS + k] = Some((p.x.hypot(p.y), p.z));
+                    tally.usable += 1;
+                }
+            }
+        }
+        centres[i] = row[k_rest];
+    }
+    (samples, tally)
+}
+
+/// The steps 0..STEPS from `centre` outwards, up then down, each with the step next to it
+/// that it continues from (none for `centre`).
+fn outward(centre: usize) -> impl Iterator<Item = (usize, Option<usize>)> {
+    let up = (centre + 1..STEPS).map(|n| (n, Some(n - 1)));
+    let down = (0..centre).rev().map(|n| (n, Some(n + 1)));
+    std::iter::once((centre, None)).chain(up).chain(down)
+}

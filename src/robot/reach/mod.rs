@@ -1,0 +1,8 @@
+//! The reach space targets are drawn from: the study's half annulus for the OSCAR-6, and
+//! the same shape fitted to any other arm.
+
+mod fit;
+mod space;
+
+pub use fit::{ReachFit, ReachFitFailure};
+pub use space::ReachSpace;

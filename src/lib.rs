@@ -9,9 +9,11 @@
 #![warn(missing_debug_implementations, unreachable_pub)]
 
 pub mod camera;
+pub mod cancel;
 pub mod cli;
 pub mod control;
 pub mod experiment;
+pub mod files;
 pub mod learn;
 pub mod prelude;
 pub mod robot;

@@ -7,10 +7,12 @@
 //! - `config: NAME VALUE` — the complete default config (`eyehand config defaults`) with entry NAME's line replaced
 //!   (repeatable; a repeated entry such as `obstacle` replaces its commented example line
 //!   `# NAME …`), written to `{config}`; `{line}` is the first replaced line's number;
-//!   `config_bom: yes` writes that config after a UTF-8 byte-order mark;
+//!   `config_bom: yes` writes that config after a UTF-8 byte-order mark; `\0` in NAME VALUE
+//!   is a NUL byte;
 //! - `urdf: FROM => TO` — the shipped URDF with FROM replaced by TO, written to `{urdf}`;
 //!   `urdf_bom: yes` writes it after a byte-order mark;
 //! - `file: PATH => TEXT` — TEXT (`\n` for a newline) written to `{dir}/PATH`;
+//! - `fifo: PATH` — a FIFO made at `{dir}/PATH`, which nothing writes to;
 //! - `args:` the command line (`{dir}` is the case's own folder, `{huge}` 100,000 sevens);
 //! - `stdout_to: full` (`/dev/full`) or `closed` (a pipe whose reader is gone);
 //! - `exit:` the expected code; `stdout:` / `stderr:` the expected first words;
@@ -48,6 +50,7 @@ struct Case {
     urdf: Option<(String, String)>,
     urdf_bom: bool,
     files: Vec<(String, String)>,
+    fifos: Vec<String>,
     args: String,
     stdout_to: Option<String>,
     exit: i32,
@@ -74,6 +77,7 @@ fn parse_case(text: &str) -> Case {
             "urdf" => case.urdf = Some(pair(&value)),
             "urdf_bom" => case.urdf_bom = value == "yes",
             "file" => case.files.push(pair(&value)),
+            "fifo" => case.fifos.push(value),
             "args" => case.args = value,
             "stdout_to" => case.stdout_to = Some(value),
             "exit" => case.exit = value.parse().expect("exit code"),
@@ -93,7 +97,7 @@ fn prepare(case: &Case, dir: &Path) -> Vec<(&'static str, String)> {
     let mut config = eyehand::experiment::defaults_text();
     let mut first_line = 0;
     for replacement in &case.configs {
-        let replacement = replacement.replace("{huge}", &huge);
+        let replacement = replacement.replace("{huge}", &huge).replace("\\0", "\0");
         let name = replacement.split_whitespace().next().unwrap();
         let lines: Vec<&str> = config.lines().collect();
         let first_word = |l: &str| l.split_whitespace().next() == Some(name);
@@ -127,6 +131,11 @@ fn prepare(case: &Case, dir: &Path) -> Vec<(&'static str, String)> {
         let path = dir.join(path);
         std::fs::create_dir_all(path.parent().unwrap()).unwrap();
         std::fs::write(path, text).unwrap();
+    }
+    for path in &case.fifos {
+        let path = std::ffi::CString::new(dir.join(path).to_str().unwrap()).unwrap();
+        // SAFETY: a valid NUL-terminated path and a plain mode.
+        assert_eq!(unsafe { libc::mkfifo(path.as_ptr(), 0o600) }, 0, "mkfifo");
     }
     vec![
         ("{config}", config_path.display().to_string()),

@@ -4,8 +4,10 @@
 //! that is not finite, and none may run longer than its bound.
 
 use eyehand::experiment::{
-    declarations, run, Config, Declaration, Rule, RunError, RunOptions, Scope, SimKind,
+    declarations, run, Config, Declaration, NotLearnedKind, Rule, RunError, RunOptions, Scope,
+    SimKind,
 };
+use eyehand::learn::Method;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::collections::BTreeMap;
@@ -192,5 +194,101 @@ fn configs_at_and_beyond_every_bound_are_refused_fail_with_a_reason_or_learn() {
             counts.get(&outcome).is_some_and(|&n| n > 0),
             "{outcome:?} occurs"
         );
+    }
+}
+
+/// The learners whose own entries are drawn in runs long enough for the verdict to judge
+/// their last trials against their first (a window of 10 trials).
+const JUDGED_METHODS: [Method; 4] = [Method::Issgp, Method::Mlp, Method::Ffn, Method::Lwpr];
+/// Cases drawn per learner, and the trials of each.
+const CASES_PER_LEARNER: usize = 10;
+const JUDGED_TRIALS: usize = 100;
+
+/// How a judged case ended: learned, or the kind of `not_learned` (or refused).
+fn judged_case(declaration: &Declaration, value: &str, method: Method, data: &Path) -> String {
+    let mut config = Config::default_config();
+    config.method = method;
+    config.trials = JUDGED_TRIALS;
+    if config.set(declaration.name, value).is_err() {
+        return "refused up front".into();
+    }
+    let changed = config
+        .entries()
+        .iter()
+        .any(|(name, v)| *name == declaration.name && Some(v) != declaration.default.as_ref());
+    let summary = match run(&RunOptions::new(config, data)) {
+        Ok(result) => result.summary,
+        Err(e) => return format!("failed: {e}"),
+    };
+    let case = format!("{method} {} {value}", declaration.name);
+    match summary.not_learned {
+        None => {
+            let first = summary.mean_distance_mm[0].expect("a window trial took a step");
+            let last = summary.mean_final_distance_mm.expect("and ended somewhere");
+            assert!(
+                last <= first,
+                "{case}: learned, yet its last trials ended farther ({last} mm) than after their first step ({first} mm)"
+            );
+            "learned".into()
+        }
+        Some(why) => {
+            println!("not learned: {case}: {}", why.reason);
+            let judged = matches!(
+                why.kind,
+                NotLearnedKind::NoCloser | NotLearnedKind::LostAsOften
+            );
+            if judged && changed {
+                assert!(
+                    why.reason.contains(declaration.name),
+                    "{case}: the reason names the entry: {}",
+                    why.reason
+                );
+            }
+            format!("{:?}", why.kind)
+        }
+    }
+}
+
+#[test]
+fn each_learner_at_its_own_entries_bounds_learns_or_names_the_entry() {
+    let mut rng = ChaCha8Rng::seed_from_u64(49);
+    let data = tempfile::tempdir().unwrap();
+    let mut counts: BTreeMap<(String, String), usize> = BTreeMap::new();
+    for method in JUDGED_METHODS {
+        let own: Vec<Declaration> = declarations()
+            .into_iter()
+            .filter(|d| matches!(d.scope, Scope::Methods(ms) if ms.contains(&method)))
+            .filter(|d| bounds(d.rule).is_some())
+            .collect();
+        for case in 0..CASES_PER_LEARNER {
+            let declaration = &own[rng.random_range(0..own.len())];
+            let Some(value) = draw_value(declaration, &mut rng) else {
+                continue;
+            };
+            let folder = data.path().join(format!("{method}{case}"));
+            let outcome = judged_case(declaration, &value, method, &folder);
+            *counts.entry((method.to_string(), outcome)).or_default() += 1;
+        }
+        // the learner at its defaults learns
+        let started = Instant::now();
+        let mut config = Config::default_config();
+        config.method = method;
+        config.trials = JUDGED_TRIALS;
+        let summary = run(&RunOptions::new(
+            config,
+            data.path().join(method.to_string()),
+        ))
+        .unwrap()
+        .summary;
+        assert!(
+            summary.learned,
+            "{method} at its defaults: {:?}",
+            summary.not_learned
+        );
+        println!("{method} at its defaults: {:?}", started.elapsed());
+    }
+    println!("| learner | outcome | cases |\n|---|---|---|");
+    for ((method, outcome), count) in &counts {
+        println!("| {method} | {outcome} | {count} |");
     }
 }

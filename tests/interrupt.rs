@@ -165,3 +165,55 @@ fn sigint_and_sigterm_finish_the_trial_and_write_an_interrupted_summary() {
         "{KILLS} SIGINT/SIGTERMs: exit 130/143, summaries interrupted after {trials_done:?} trials"
     );
 }
+
+/// A run whose one trial takes tens of seconds (the dynamic arm servoed continuously at one
+/// frame a second for up to 1,000 steps) stops within a couple of seconds of SIGTERM: the
+/// trial is cut short, the summary written.
+#[test]
+fn a_signal_cuts_a_long_trial_short() {
+    let data = tempfile::tempdir().unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .args([
+            "run",
+            "--trials",
+            "3",
+            "--quiet",
+            "--no-plot",
+            "--sim",
+            "dynamic",
+        ])
+        .args(["--set", "servo_mode=continuous", "--set", "camera_fps=1"])
+        .args([
+            "--set",
+            "feedback_steps=1000",
+            "--set",
+            "dt=0.0005",
+            "--data",
+        ])
+        .arg(data.path())
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(Duration::from_secs(4));
+    assert!(
+        child.try_wait().unwrap().is_none(),
+        "trial 1 is still going"
+    );
+    let sent = std::time::Instant::now();
+    signal(&child, "TERM");
+    let status = wait(&mut child);
+    let took = sent.elapsed();
+    assert_eq!(status.code(), Some(143));
+    assert!(
+        took < Duration::from_secs(3),
+        "stopped {took:?} after SIGTERM"
+    );
+    let summary = summary(&data.path().join("lin5").join("0")).expect("a summary");
+    assert!(summary.interrupted, "{summary:?}");
+    println!(
+        "stopped {took:?} after SIGTERM, after {} trials",
+        summary.trials
+    );
+}

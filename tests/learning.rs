@@ -11,7 +11,13 @@ fn run_method(method: Method, trials: usize, seed: u64) -> RunSummary {
     let mut config = Config::from_file(std::path::Path::new(&path)).unwrap();
     config.trials = trials;
     config.seed = seed;
-    run(&RunOptions::new(config, data.path())).unwrap().summary
+    let summary = run(&RunOptions::new(config, data.path())).unwrap().summary;
+    assert!(
+        summary.learned,
+        "{method} at its defaults learned: {:?}",
+        summary.not_learned
+    );
+    summary
 }
 
 fn step(summary: &RunSummary, n: usize) -> f64 {

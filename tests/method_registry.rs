@@ -21,7 +21,8 @@ fn next(method: Method) -> Option<Method> {
         Method::Ik => Some(Method::Lwpr),
         Method::Lwpr => Some(Method::Issgp),
         Method::Issgp => Some(Method::Mlp),
-        Method::Mlp => None,
+        Method::Mlp => Some(Method::Broyden),
+        Method::Broyden => None,
     }
 }
 

@@ -148,6 +148,15 @@ fn a_trial_the_run_does_not_have_is_a_clear_error() {
         .unwrap();
     assert_eq!(missing.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&missing.stderr).contains("is not a run folder"));
+    // A folder that lost its `nodes` file (a trial per line) says so, not "trials 1..0".
+    std::fs::remove_file(folder.join("nodes")).unwrap();
+    let err = show_trials(&folder, TrialRange::single(2)).unwrap_err();
+    assert!(matches!(err, ShowError::NoTrialList { .. }), "{err}");
+    assert!(
+        err.to_string()
+            .contains("cannot read the run's list of finished trials"),
+        "{err}"
+    );
 }
 
 /// `info` with its line starting `entry ` replaced by `line`.

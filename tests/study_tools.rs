@@ -569,6 +569,42 @@ fn an_interrupted_sweep_stops_its_cells_and_waits_for_them() {
 }
 
 #[test]
+fn a_killed_sweep_takes_its_cells_with_it() {
+    let data = tempfile::tempdir().unwrap();
+    let study = data.path().join("sweep/0");
+    let needle = study.display().to_string();
+    let ik = configs().join("ik.conf");
+    let mut sweep = Command::new(EYEHAND)
+        .args(["sweep", "--config", ik.to_str().unwrap()])
+        .args(["--set", "trials=10000000", "--seeds", "1,2", "--data"])
+        .arg(data.path())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let started = std::time::Instant::now();
+    while !study.join("cells/0/1step").exists() {
+        assert!(started.elapsed().as_secs() < 30, "the cells never started");
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    assert!(!processes_mentioning(&needle).is_empty(), "cells run");
+    sweep.kill().unwrap(); // SIGKILL: the study passes nothing on
+    sweep.wait().unwrap();
+    let killed = std::time::Instant::now();
+    while !processes_mentioning(&needle).is_empty() {
+        assert!(
+            killed.elapsed().as_secs() < 10,
+            "cells left running after their study was killed: {:?}",
+            processes_mentioning(&needle)
+        );
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    // Each cell got SIGTERM, finished its trial and wrote its summary, marked interrupted.
+    let summary = std::fs::read_to_string(study.join("cells/0/summary.json")).unwrap();
+    assert!(summary.contains("\"interrupted\": true"), "{summary}");
+}
+
+#[test]
 fn a_comparison_for_slurm_runs_by_hand_and_gathers_like_a_sweep() {
     let project = tempfile::tempdir().unwrap();
     let configs = configs().display().to_string();

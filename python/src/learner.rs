@@ -259,7 +259,8 @@ impl Learner for PyLearner {
     }
 }
 
-/// A built-in learner (`lin5`, `lin8`, `nnw`, `ffn`, `kohonen`, `ik`) with the settings of
+/// A built-in learner (`lin5`, `lin8`, `nnw`, `ffn`, `kohonen`, `ik`, `lwpr`, `issgp`,
+/// `mlp`, `broyden`) with the settings of
 /// a config: `Learner(method="lin5", config=None, urdf=None, **entries)`.
 #[pyclass(unsendable, module = "eyehand", name = "Learner")]
 #[derive(Debug)]

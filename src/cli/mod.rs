@@ -103,6 +103,44 @@ fn count_at_least_1(text: &str) -> Result<usize, String> {
     }
 }
 
+/// The largest joint angle a command takes (degrees): one turn either way holds every pose.
+const MAX_ANGLE_DEG: f64 = 360.0;
+
+/// Refuses the first of `flag`'s joint angles (degrees, named `name1`, `name2`, …) that is
+/// not a number within ±[`MAX_ANGLE_DEG`].
+fn angles_in_range(flag: &str, name: &str, angles: &[f64]) -> Result<(), Failure> {
+    match angles.iter().position(|a| a.is_nan() || a.abs() > MAX_ANGLE_DEG) {
+        None => Ok(()),
+        Some(i) => Err(bad_input(format!(
+            "{flag}: {name}{} is {}: a joint angle must be a finite number within ±{MAX_ANGLE_DEG}°",
+            i + 1,
+            crate::experiment::shown(&angles[i].to_string())
+        ))),
+    }
+}
+
+/// `message` with every word longer than 60 characters that is not a path (a number of 300
+/// digits, a value pasted in) cut short as config values are, wherever it came from.
+fn long_words_cut(message: &str) -> String {
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    while let Some(start) = rest.find(|c: char| !c.is_whitespace()) {
+        out.push_str(&rest[..start]);
+        rest = &rest[start..];
+        let end = rest.find(char::is_whitespace).unwrap_or(rest.len());
+        let word = &rest[..end];
+        let long = word.chars().count() > crate::experiment::SHOWN_CHARS;
+        if long && !word.contains(['/', '…']) {
+            out.push_str(&crate::experiment::shown(word));
+        } else {
+            out.push_str(word);
+        }
+        rest = &rest[end..];
+    }
+    out.push_str(rest);
+    out
+}
+
 /// Carries out a parsed command line.
 pub fn execute(cli: Cli) -> ExitCode {
     let result = match cli.command {
@@ -121,9 +159,30 @@ pub fn execute(cli: Cli) -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err((code, message)) => {
             if !message.is_empty() {
-                let _ = writeln!(io::stderr(), "eyehand: {message}");
+                let _ = writeln!(io::stderr(), "eyehand: {}", long_words_cut(&message));
             }
             ExitCode::from(code)
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn long_words_but_paths_are_cut_and_the_layout_kept() {
+        let digits = "9".repeat(302);
+        let message = format!("fk: x is {digits} cm\n  at /{}/a.urdf", "p".repeat(70));
+        let cut = long_words_cut(&message);
+        assert!(
+            cut.starts_with(&format!(
+                "fk: x is {}… (302 characters) cm\n  at /",
+                &digits[..60]
+            )),
+            "{cut}"
+        );
+        assert!(cut.ends_with("/a.urdf"));
+        assert_eq!(long_words_cut(" a  b "), " a  b ");
     }
 }

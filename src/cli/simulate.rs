@@ -2,8 +2,9 @@
 //! it to another — printing the joint angles and speeds every tick, to hold the simulator
 //! against another engine.
 
-use super::{bad_input, failed, warned, Failure};
+use super::{angles_in_range, bad_input, failed, warned, Failure};
 use crate::experiment::setup::{dynamic_settings, load_arm};
+use crate::experiment::shown;
 use crate::robot::{Drive, DynamicSettings, Energy, FreeArm, Joints};
 use clap::Args;
 use std::io::Write;
@@ -209,13 +210,14 @@ fn check(args: &SimulateArgs, joints: usize, dt: f64) -> Result<u64, Failure> {
     let poses =
         std::iter::once(("--from", &args.from)).chain(args.to.iter().map(|to| ("--to", to)));
     for (flag, pose) in poses {
-        if pose.len() != joints || pose.iter().any(|a| !a.is_finite()) {
+        if pose.len() != joints {
             return Err(bad_input(format!(
-                "{flag} takes {joints} finite joint angles in degrees (one per joint of this \
+                "{flag} takes {joints} joint angles in degrees (one per joint of this \
                  arm: q1,..,q{joints}), not {}",
                 pose.len()
             )));
         }
+        angles_in_range(flag, "q", pose)?;
     }
     if !(dt >= DT_RANGE.0 && dt <= DT_RANGE.1) {
         return Err(bad_input(format!(
@@ -227,7 +229,7 @@ fn check(args: &SimulateArgs, joints: usize, dt: f64) -> Result<u64, Failure> {
     if !(1.0..=MAX_TICKS).contains(&ticks) {
         return Err(bad_input(format!(
             "--duration {} s must be from one tick to {MAX_TICKS} ticks of {dt} s",
-            args.duration
+            shown(&args.duration.to_string())
         )));
     }
     Ok(ticks as u64)

@@ -1,6 +1,6 @@
 //! `eyehand plot`, `check-config`, `config defaults` and `fk`.
 
-use super::{bad_input, failed, print_warnings, say, warned, Failure};
+use super::{angles_in_range, bad_input, failed, print_warnings, say, warned, Failure};
 use crate::experiment::plot::plot_run;
 use crate::experiment::setup::load_arm;
 use crate::experiment::{defaults_text, unused_entries, Config, RunError, RunOptions, Sources};
@@ -120,9 +120,7 @@ pub(super) fn fk(args: FkArgs) -> Result<(), Failure> {
     let [t1, t2, t3] = args.joints[..] else {
         return Err(bad_input("--joints takes three angles: t1,t2,t3"));
     };
-    if let Some(bad) = args.joints.iter().find(|v| !v.is_finite()) {
-        return Err(bad_input(format!("--joints: {bad} is not a finite angle")));
-    }
+    angles_in_range("--joints", "t", &args.joints)?;
     let pose = model.pose_of(&Controlled::new(t1, t2, t3).map(f64::to_radians));
     let q = pose.joints;
     let camera = model.camera_position(&q).coords * 100.0;

@@ -76,6 +76,22 @@ pub(super) struct ActiveTrial {
     pub(super) end: Option<TrialEnd>,
 }
 
+/// What the caller of a trial hears as it goes: each feedback step, and the moment the
+/// learner starts learning from it (a caller's report on a long trial). A closure
+/// `FnMut(step, seconds)` hears the steps alone.
+pub trait TrialObserver {
+    /// Feedback step `step` is done, `seconds` simulated seconds into the trial.
+    fn step_done(&mut self, step: usize, seconds: f64);
+    /// The steps are over: the learner learns from the trial now.
+    fn learning(&mut self) {}
+}
+
+impl<F: FnMut(usize, f64)> TrialObserver for F {
+    fn step_done(&mut self, step: usize, seconds: f64) {
+        self(step, seconds)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

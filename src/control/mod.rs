@@ -11,7 +11,7 @@ mod timing;
 mod trial;
 mod world_scene;
 
-pub use feedback::{StepError, StepReport, TrialEnd};
+pub use feedback::{StepError, StepReport, TrialEnd, TrialObserver};
 pub use move_frames::MoveFrames;
 pub use prelearn::{prelearning_moves, PrelearnMove};
 pub use sensors::SensorNoise;

@@ -4,7 +4,7 @@
 //! learned.
 
 use super::clocked::FrameQueue;
-use super::feedback::{ActiveTrial, StepError, StepReport, TrialEnd};
+use super::feedback::{ActiveTrial, StepError, StepReport, TrialEnd, TrialObserver};
 use super::move_frames::MoveFrames;
 use super::sensors::{NoisySensors, SensorNoise};
 use super::timing::{CameraTiming, FrameClock};
@@ -71,6 +71,9 @@ pub struct TrialOutcome {
     pub moved_deg: f64,
     /// The largest joint move (degrees) the learner proposed in the trial.
     pub proposed_deg: f64,
+    /// Distance to the target (mm) at the trial's start, before any move (`None` when no
+    /// target or start was drawn).
+    pub start_distance_mm: Option<f64>,
 }
 
 /// What a frame shows: the pose and reading as the sensors report them, or why the object
@@ -171,6 +174,17 @@ impl TrialLoop {
         learner: &mut dyn Learner,
         after_step: &mut dyn FnMut(usize, f64),
     ) -> Result<TrialOutcome, LearnError> {
+        let mut after_step = after_step;
+        self.run_trial_observed(learner, &mut after_step)
+    }
+
+    /// [`run_trial`](Self::run_trial), telling `observer` of every feedback step and of
+    /// the learning that follows them.
+    pub fn run_trial_observed(
+        &mut self,
+        learner: &mut dyn Learner,
+        observer: &mut dyn TrialObserver,
+    ) -> Result<TrialOutcome, LearnError> {
         let mut outcome = TrialOutcome {
             distances_mm: Vec::with_capacity(self.settings.feedback_steps),
             failure: None,
@@ -178,6 +192,7 @@ impl TrialLoop {
             seconds: 0.0,
             moved_deg: 0.0,
             proposed_deg: 0.0,
+            start_distance_mm: None,
         };
         let mut here = match self.begin_trial() {
             Ok(start) => start,
@@ -187,6 +202,7 @@ impl TrialLoop {
             }
         };
         let start_deg = self.true_controlled_deg();
+        outcome.start_distance_mm = self.distance_mm();
         for _ in 0..self.settings.feedback_steps {
             let delta_deg = learner.propose(&here.query());
             outcome.proposed_deg = outcome.proposed_deg.max(delta_deg.amax());
@@ -198,7 +214,7 @@ impl TrialLoop {
                 }
             };
             outcome.seconds = report.seconds;
-            after_step(report.step, report.seconds);
+            observer.step_done(report.step, report.seconds);
             let moved = (self.true_controlled_deg() - start_deg).amax();
             outcome.moved_deg = outcome.moved_deg.max(moved);
             if report.reading.is_ok() {
@@ -210,7 +226,11 @@ impl TrialLoop {
                 outcome.reached = end == TrialEnd::Reached;
                 break;
             }
+            if crate::cancel::requested() {
+                break; // a signal: the run stops after this trial, cut short here
+            }
         }
+        observer.learning();
         self.finish_trial(learner)?;
         Ok(outcome)
     }

@@ -12,12 +12,12 @@ pub mod study;
 mod verdict;
 
 pub(crate) use config::entry_name;
-pub(crate) use config::shown;
 pub use config::{
     declarations, defaults_text, docs_table, unused_entries, CameraKind, Config, ConfigError,
     ConfigErrorKind, Declaration, ObstacleBox, PackagePaths, ReachSetting, Rule, Scope, SimKind,
     Source, Sources, UrdfFile, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES, REPEATED_ENTRY_NAMES,
 };
+pub(crate) use config::{shown, SHOWN_CHARS};
 pub use output::data_files::DataFiles;
 pub use output::process_memory::{peak_rss_kb, resident_kb};
 pub use output::run_folder::{allocate_run_folder, fresh_run_folder, RunFolderError, RUN_IDS};

@@ -24,11 +24,13 @@ pub enum Method {
     Issgp,
     /// A two-hidden-layer perceptron trained by Adam on a replay buffer.
     Mlp,
+    /// Uncalibrated visual servoing on an image Jacobian estimated online (Broyden).
+    Broyden,
 }
 
 impl Method {
     /// Every method, in the order they are listed to users.
-    pub const ALL: [Method; 9] = [
+    pub const ALL: [Method; 10] = [
         Method::Lin5,
         Method::Lin8,
         Method::Nnw,
@@ -38,6 +40,7 @@ impl Method {
         Method::Lwpr,
         Method::Issgp,
         Method::Mlp,
+        Method::Broyden,
     ];
 
     /// The method's name as written in configs and folder names.
@@ -52,6 +55,7 @@ impl Method {
             Method::Lwpr => "lwpr",
             Method::Issgp => "issgp",
             Method::Mlp => "mlp",
+            Method::Broyden => "broyden",
         }
     }
 }

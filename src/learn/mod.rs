@@ -15,6 +15,7 @@ mod nested;
 mod online;
 
 pub use baselines::net;
+pub use baselines::{Broyden, BroydenSettings, BroydenUpdate, ImageJacobian};
 pub use baselines::{FfnLearner, FfnSettings, IkLearner, KohonenLearner, KohonenSettings};
 pub use baselines::{Lattice, Neighbourhood};
 pub use contract::{LearnError, Learner, LearnerStats, LevelStats, MergeKind, ModelEvent};

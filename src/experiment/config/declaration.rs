@@ -2,7 +2,7 @@
 //! `eyehand config defaults`, docs/CONFIG.md and the check of each value on its own.
 
 use super::values::ConfigValue;
-use super::{ConfigErrorKind, Rule, Scope};
+use super::{ConfigErrorKind, Rule, Scope, ValueError};
 
 /// One config entry's declaration.
 #[derive(Debug, Clone, PartialEq)]
@@ -55,5 +55,24 @@ pub(super) fn meets_rule<T: ConfigValue>(
             rule: text,
         }),
         _ => Ok(()),
+    }
+}
+
+/// Entry `name`'s text that did not parse as its kind (`problem`): a whole number its type
+/// cannot hold (a negative count, too many digits) is said against the entry's own `rule`
+/// (in `unit`) where it has one.
+pub(super) fn bad_value(
+    name: &'static str,
+    problem: ValueError,
+    rule: Rule,
+    unit: &str,
+) -> ConfigErrorKind {
+    match (problem, rule.text(unit)) {
+        (ValueError::IntegerOutOfRange { text, .. }, Some(rule)) => ConfigErrorKind::OutOfRange {
+            name,
+            value: text,
+            rule,
+        },
+        (problem, _) => ConfigErrorKind::BadValue { name, problem },
     }
 }

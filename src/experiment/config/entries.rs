@@ -2,18 +2,18 @@
 //! applies to and the rule its value must meet on its own. The parser, the defaults,
 //! `info`, `config defaults`, the error messages and docs/CONFIG.md all come from here.
 
-use super::declaration::{meets_rule, one_line, Declaration};
+use super::declaration::{bad_value, meets_rule, one_line, Declaration};
 use super::package_paths::PackagePaths;
 use super::scope::{
-    Scope, BOUNDED, DYNAMIC, FFN, ISSGP, KOHONEN, LIN8, LWPR, MLP, NESTED, NETS, NNW, PERCEPTRONS,
-    RAYCAST, REGRESSORS, WATCHING,
+    Scope, BOUNDED, BROYDEN, DYNAMIC, FFN, ISSGP, KOHONEN, LIN8, LWPR, MLP, NESTED, NETS, NNW,
+    PERCEPTRONS, RAYCAST, REGRESSORS, WATCHING,
 };
 use super::urdf_file::UrdfFile;
 use super::values::{CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind};
 use super::{ConfigErrorKind, Rule};
 use crate::control::ServoMode;
 use crate::learn::change::ChangeRecovery;
-use crate::learn::{MergeStrategy, Method};
+use crate::learn::{BroydenUpdate, MergeStrategy, Method};
 use crate::robot::{CameraLink, LearnedJoints};
 
 use Rule::{AtLeast, NonNegative, OpenUnit, Positive, PositiveUpTo, UnitBelowOne, Within};
@@ -23,7 +23,8 @@ use Scope::{All, Unused};
 const BOUNDARY: Rule = Within(-1e6, 1e6);
 
 config_entries! {
-    /// The learning method: lin5, lin8, nnw, ffn, kohonen, ik, lwpr, issgp or mlp.
+    /// The learning method: lin5, lin8, nnw, ffn, kohonen, ik, lwpr, issgp, mlp or
+    /// broyden.
     method: Method = Method::Lin5, "", All, Rule::Any;
     /// The simulator: kinematic (forward kinematics) or dynamic (a Rapier multibody).
     sim: SimKind = SimKind::Kinematic, "", All, Rule::Any;
@@ -193,15 +194,16 @@ config_entries! {
     /// change_detection: trials after an alarm, and between later checks, before subtrees
     /// starved of new patterns are cut.
     change_grace: usize = 200, "", NESTED, AtLeast(1.0);
-    /// change_detection: what an alarm does to a nested learner: correct (keep the tree and
-    /// fit a correction of the camera readings from the patterns since the change) or
-    /// forget (drop what was learned before the change, cut what stays starved).
-    change_recovery: ChangeRecovery = ChangeRecovery::Correct, "", NESTED, Rule::Any;
+    /// change_detection: what an alarm does to a learner: correct (keep its model and fit a
+    /// correction of the camera readings from the patterns since the change) or forget (a
+    /// nested learner drops what was learned before the change and cuts what stays
+    /// starved; lwpr, issgp and mlp forget as their notes say; ffn and kohonen have none).
+    change_recovery: ChangeRecovery = ChangeRecovery::Correct, "", WATCHING, Rule::Any;
     /// change_recovery correct: patterns since a change its correction of the readings is
     /// fitted from before it is fixed, once a refit no longer moves it, and the tree learns
     /// again (at least 30, the patterns from which queries go through it; lin8's config sets
     /// 600).
-    change_fit_patterns: usize = 300, "", NESTED, AtLeast(30.0);
+    change_fit_patterns: usize = 300, "", WATCHING, AtLeast(30.0);
     /// change_recovery correct: stored patterns a sub-box needs before it is split off once
     /// a correction is fixed (the changed robot works where the tree is still coarse; never
     /// more than min_pats_for_split).
@@ -301,6 +303,19 @@ config_entries! {
     /// mlp: 1: the answer is anchored at the centred target (no move when cx*, cy*, cz* are
     /// 0; the default, the best of the sweep in docs/PEERS.md); 0: a plain net.
     mlp_anchored: usize = 1, "", MLP, Within(0.0, 1.0);
+    /// broyden: how the image Jacobian follows each move: broyden (Broyden's rank-one
+    /// secant update) or rls (recursive least squares with forgetting).
+    broyden_update: BroydenUpdate = BroydenUpdate::Broyden, "", BROYDEN, Rule::Any;
+    /// broyden: α, the gain of Broyden's update (1: each move's secant condition met).
+    broyden_rate: f64 = 1.0, "", BROYDEN, PositiveUpTo(1.0);
+    /// broyden: λ, the forgetting factor of the rls update.
+    broyden_forgetting: f64 = 0.9, "", BROYDEN, Within(0.5, 1.0);
+    /// broyden: μ² of the damped least-squares step, as a share of JᵀJ's mean diagonal.
+    broyden_damping: f64 = 0.001, "", BROYDEN, Within(0.0, 1000.0);
+    /// broyden: largest joint turn of one step (the move is scaled down to it).
+    broyden_max_step: f64 = 15.0, "°", BROYDEN, PositiveUpTo(180.0);
+    /// broyden: each exploratory move of the first trial turns one joint by this.
+    broyden_probe: f64 = 1.0, "°", BROYDEN, PositiveUpTo(10.0);
     /// 0: store learning patterns in the run's pat_file; anything else: in memory.
     use_pat_file: i64 = 1, "", NESTED, Rule::Any;
     /// Memory and the per-level tree error are recorded every this many trials.

@@ -43,7 +43,7 @@ macro_rules! config_entries {
                 match name {
                     $(stringify!($name) => {
                         self.$name = <$ty as ConfigValue>::parse_value(raw).map_err(|problem| {
-                            ConfigErrorKind::BadValue { name: stringify!($name), problem }
+                            bad_value(stringify!($name), problem, $rule, $unit)
                         })?;
                         Ok(())
                     })*

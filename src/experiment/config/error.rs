@@ -4,7 +4,7 @@
 use std::fmt;
 
 /// Characters of a value or a line shown in a message before it is cut short.
-const SHOWN_CHARS: usize = 60;
+pub(crate) const SHOWN_CHARS: usize = 60;
 
 /// A config error: the file, the line it is on (none for an unreadable file) and its kind.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -118,7 +118,10 @@ pub enum ValueError {
     #[error("`{}` is a real number, but this entry takes an integer", shown(.0))]
     RealForInteger(String),
     /// An integer the entry's type cannot hold (a negative count, too many digits).
-    #[error("`{}` is not an integer in this entry's range ({min} to {max})", shown(.text))]
+    #[error("`{}` {}", shown(.text), match (.text.starts_with('-'), .min) {
+        (true, 0) => "is negative: this entry takes a count (0 or more)".to_string(),
+        _ => format!("is not an integer in this entry's range ({min} to {max})"),
+    })]
     IntegerOutOfRange {
         /// The text given.
         text: String,
@@ -151,11 +154,20 @@ pub enum ValueError {
     },
 }
 
-/// `text`, cut to its first characters when it is long, saying how long it was.
+/// `text` with its control characters (a NUL byte, a tab) escaped as `\u{0}`, `\t`, cut to
+/// its first characters when it is long, saying how long it was.
 pub(crate) fn shown(text: &str) -> String {
-    match text.char_indices().nth(SHOWN_CHARS) {
-        None => text.to_string(),
-        Some((cut, _)) => format!("{}… ({} characters)", &text[..cut], text.chars().count()),
+    let mut visible = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c.is_control() {
+            visible.extend(c.escape_default());
+        } else {
+            visible.push(c);
+        }
+    }
+    match visible.char_indices().nth(SHOWN_CHARS) {
+        None => visible,
+        Some((cut, _)) => format!("{}… ({} characters)", &visible[..cut], text.chars().count()),
     }
 }
 
@@ -179,6 +191,7 @@ mod tests {
         let text = ValueError::NotInteger(long).to_string();
         assert!(text.len() < 120, "{text}");
         assert!(text.contains("(100000 characters)"), "{text}");
+        assert_eq!(shown("1\u{0}2\t"), "1\\u{0}2\\t");
         assert_eq!(shown("short"), "short");
     }
 

@@ -23,7 +23,7 @@ mod values;
 pub use declaration::{unused_entries, Declaration};
 pub use defaults_text::{defaults_text, docs_table};
 pub use entries::{declarations, Config, ENTRY_NAMES, REPEATED_ENTRY_NAMES};
-pub(crate) use error::shown;
+pub(crate) use error::{shown, SHOWN_CHARS};
 pub use error::{ConfigError, ConfigErrorKind, ValueError};
 pub use package_paths::PackagePaths;
 pub use rule::Rule;
@@ -68,7 +68,8 @@ impl Config {
         Config::read_file(path).map(|(config, _)| config)
     }
 
-    /// Reads and checks a config file (at most `MAX_CONFIG_BYTES`), with where each value
+    /// Reads and checks a config file (a regular file of at most
+    /// [`MAX_CONFIG_BYTES`](crate::files::MAX_CONFIG_BYTES)), with where each value
     /// came from.
     pub fn read_file(path: &Path) -> Result<(Config, Sources), ConfigError> {
         let name = path.display().to_string();
@@ -77,7 +78,8 @@ impl Config {
             line: None,
             kind: ConfigErrorKind::Unreadable { reason },
         };
-        let text = read_bounded(path).map_err(unreadable)?;
+        let text = crate::files::read_text(path, crate::files::MAX_CONFIG_BYTES)
+            .map_err(|e| unreadable(e.to_string()))?;
         Config::read(&text, &name)
     }
 
@@ -128,10 +130,13 @@ impl Config {
             config.package_paths.relative_to(folder);
             config.urdf.relative_to(folder);
         }
-        config.check().map_err(|kind| ConfigError {
-            file: file.to_string(),
-            line: kind.entry().and_then(|entry| sources.line_of(entry)),
-            kind,
+        config.check().map_err(|kind| {
+            let (line, kind) = located(kind, &sources);
+            ConfigError {
+                file: file.to_string(),
+                line,
+                kind,
+            }
         })?;
         Ok((config, sources))
     }
@@ -240,28 +245,31 @@ fn unrecorded(is_default: bool) -> Source {
     }
 }
 
+/// The line of the file to blame for `kind`: its entry's; for an entry the file does not
+/// hold, broken against another entry the file holds, that entry's line, the value said to
+/// be the default.
+fn located(kind: ConfigErrorKind, sources: &Sources) -> (Option<usize>, ConfigErrorKind) {
+    let Some(entry) = kind.entry() else {
+        return (None, kind);
+    };
+    if let Some(line) = sources.line_of(entry) {
+        return (Some(line), kind);
+    }
+    match kind {
+        ConfigErrorKind::OutOfRange { name, value, rule } => {
+            let line = rule
+                .split(|c: char| !(c.is_alphanumeric() || c == '_'))
+                .filter(|word| *word != name && ENTRY_NAMES.contains(word))
+                .find_map(|other| sources.line_of(other));
+            let value = format!("{value}, its default");
+            (line, ConfigErrorKind::OutOfRange { name, value, rule })
+        }
+        kind => (None, kind),
+    }
+}
+
 impl fmt::Display for Config {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.to_text())
     }
-}
-
-/// The longest config file read (bytes): the complete default config is about 20 kB, and a
-/// file without end (`/dev/zero`) must not be read for ever.
-const MAX_CONFIG_BYTES: u64 = 1 << 20;
-
-/// The text of `path`, refused past [`MAX_CONFIG_BYTES`] or when not UTF-8.
-fn read_bounded(path: &Path) -> Result<String, String> {
-    use std::io::Read;
-    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
-    let mut bytes = Vec::new();
-    file.take(MAX_CONFIG_BYTES + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| e.to_string())?;
-    if bytes.len() as u64 > MAX_CONFIG_BYTES {
-        return Err(format!(
-            "longer than {MAX_CONFIG_BYTES} bytes: not a config file"
-        ));
-    }
-    String::from_utf8(bytes).map_err(|_| "stream did not contain valid UTF-8".to_string())
 }

@@ -35,11 +35,14 @@ pub(super) const BOUNDED: Scope = Scope::Methods(&[
     Method::Issgp,
     Method::Mlp,
 ]);
-/// The learners that watch for a change (`merge_strategy change_detection`).
+/// The learners that watch for a change (`merge_strategy change_detection`): every one
+/// with a model.
 pub(super) const WATCHING: Scope = Scope::Methods(&[
     Method::Lin5,
     Method::Lin8,
     Method::Nnw,
+    Method::Ffn,
+    Method::Kohonen,
     Method::Lwpr,
     Method::Issgp,
     Method::Mlp,
@@ -62,6 +65,8 @@ pub(super) const ISSGP: Scope = Scope::Methods(&[Method::Issgp]);
 pub(super) const MLP: Scope = Scope::Methods(&[Method::Mlp]);
 /// The single-model regressors of Δθ in `norm_out` units (`lwpr`, `issgp`, `mlp`).
 pub(super) const REGRESSORS: Scope = Scope::Methods(&[Method::Lwpr, Method::Issgp, Method::Mlp]);
+/// `broyden` alone.
+pub(super) const BROYDEN: Scope = Scope::Methods(&[Method::Broyden]);
 /// The dynamic simulator.
 pub(super) const DYNAMIC: Scope = Scope::Sim(SimKind::Dynamic);
 /// The ray-cast camera.

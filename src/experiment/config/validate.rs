@@ -2,6 +2,7 @@
 //! is judged against the others' final values; each entry's own range is declared beside
 //! it (`entries.rs`) and checked first.
 
+mod cost;
 mod issgp;
 mod lwpr;
 mod sensing;
@@ -9,6 +10,8 @@ mod sensing;
 use super::memory_estimate::machine_memory;
 use super::values::{ConfigValue, ReachSetting};
 use super::{Config, ConfigErrorKind};
+use crate::learn::change::ChangeRecovery;
+use crate::learn::{MergeStrategy, Method};
 use crate::robot::LearnedJoints;
 
 /// Most physics steps one settling may take.
@@ -43,7 +46,8 @@ impl Config {
         self.check_timing()?;
         self.check_arm()?;
         self.check_lwpr()?;
-        self.check_issgp()
+        self.check_issgp()?;
+        self.check_cost()
     }
 
     /// The arm entries on their own; whether the URDF has such a link and joints is
@@ -160,6 +164,18 @@ impl Config {
             "change_warmup",
             &self.change_warmup,
             &format!("must be above change_lag ({})", self.change_lag),
+        )?;
+        let forgets = [Method::Ffn, Method::Kohonen].contains(&self.method)
+            && self.merge_strategy == MergeStrategy::ChangeDetection;
+        rule(
+            !forgets || self.change_recovery == ChangeRecovery::Correct,
+            "change_recovery",
+            &self.change_recovery,
+            &format!(
+                "must be correct for {} under merge_strategy change_detection (it has no \
+                 forget)",
+                self.method
+            ),
         )
     }
 

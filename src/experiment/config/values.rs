@@ -3,7 +3,7 @@
 use super::ValueError;
 use crate::control::ServoMode;
 use crate::learn::change::ChangeRecovery;
-use crate::learn::{MergeStrategy, Method};
+use crate::learn::{BroydenUpdate, MergeStrategy, Method};
 use crate::robot::{CameraLink, LearnedJoints};
 use std::fmt;
 use std::str::FromStr;
@@ -92,7 +92,8 @@ named_value!(
     CameraKind,
     MergeStrategy,
     ChangeRecovery,
-    ServoMode
+    ServoMode,
+    BroydenUpdate
 );
 
 /// `parts` comma-separated items of `raw`, each parsed by `item`; `expected` names the form.
@@ -244,6 +245,11 @@ pub struct ObstacleBox {
     pub size_cm: [f64; 3],
 }
 
+/// The farthest an obstacle's centre may lie from the world's origin on an axis (cm): 100 m.
+pub(super) const OBSTACLE_REACH_CM: f64 = 1e4;
+/// The thinnest and the longest side of an obstacle (cm): 0.1 mm and 100 m.
+pub(super) const OBSTACLE_SIDE_CM: (f64, f64) = (0.01, 1e4);
+
 impl ObstacleBox {
     /// `[x, y, z, sx, sy, sz]`: its centre and side lengths (cm), as the config line and
     /// `summary.json` give them.
@@ -281,6 +287,20 @@ impl ConfigValue for ObstacleBox {
         let (centre, size) = values.split_at(3);
         if size.iter().any(|&side| side <= 0.0) {
             return Err(bad("every side must be above 0"));
+        }
+        if centre.iter().any(|c| c.abs() > OBSTACLE_REACH_CM) {
+            return Err(bad(&format!(
+                "its centre must be within {OBSTACLE_REACH_CM} cm of the world's origin on each axis"
+            )));
+        }
+        if size
+            .iter()
+            .any(|side| !(OBSTACLE_SIDE_CM.0..=OBSTACLE_SIDE_CM.1).contains(side))
+        {
+            return Err(bad(&format!(
+                "every side must be from {} to {} cm",
+                OBSTACLE_SIDE_CM.0, OBSTACLE_SIDE_CM.1
+            )));
         }
         Ok(ObstacleBox {
             centre_cm: [centre[0], centre[1], centre[2]],
@@ -325,6 +345,7 @@ choice_names!(SimKind, "simulator", Kinematic => "kinematic", Dynamic => "dynami
 choice_names!(CameraKind, "camera", Projection => "projection", Raycast => "raycast");
 choice_names!(MergeStrategy, "merge strategy", Thesis => "thesis", ChangeDetection => "change_detection");
 choice_names!(ChangeRecovery, "change recovery", Correct => "correct", Forget => "forget");
+choice_names!(BroydenUpdate, "broyden update", Broyden => "broyden", Rls => "rls");
 choice_names!(ServoMode, "servo mode", Step => "step", Continuous => "continuous");
 
 #[cfg(test)]

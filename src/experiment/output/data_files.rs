@@ -242,6 +242,7 @@ mod tests {
             seconds: 4.0,
             moved_deg: 3.0,
             proposed_deg: 3.0,
+            start_distance_mm: Some(50.0),
         };
         files
             .record_trial(1, &outcome, &LearnerStats::default())

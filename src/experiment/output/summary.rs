@@ -183,6 +183,7 @@ impl RunSummary {
             "lwpr" => format!("{} receptive fields; ", self.nodes),
             "issgp" => format!("{} random features; ", self.nodes),
             "mlp" => format!("replay buffer: {} patterns; ", self.patterns),
+            "broyden" => "one 3×3 image Jacobian; ".to_string(),
             "ik" | "ffn" => String::new(),
             _ => format!("model: {} nodes, {} patterns; ", self.nodes, self.patterns),
         }

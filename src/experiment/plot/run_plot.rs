@@ -6,6 +6,7 @@
 use super::canvas::{draw_panel, register_font, Line, Panel, PALETTE};
 use super::series::{decimated, event_trials, Series};
 use super::PlotError;
+use crate::files::{read_text, MAX_RUN_FILE_BYTES};
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -35,7 +36,7 @@ pub fn plot_run(run_dir: &Path, smooth: usize) -> Result<PathBuf, PlotError> {
         let path = run_dir.join(name);
         Series::read(&path).map_err(|source| PlotError::Read { path, source })
     };
-    let info = std::fs::read_to_string(run_dir.join("info")).unwrap_or_default();
+    let info = read_text(&run_dir.join("info"), MAX_RUN_FILE_BYTES).unwrap_or_default();
     let events = event_trials(&info);
     let steps: Vec<Series> = (1..=5)
         .map(|s| read(&format!("{s}step")))

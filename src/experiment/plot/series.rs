@@ -1,6 +1,7 @@
 //! Reading a run's data files back as series, and smoothing them as the study's figures do
 //! (a moving average over a number of points).
 
+use crate::files::{read_text, MAX_RUN_FILE_BYTES};
 use std::io;
 use std::path::Path;
 
@@ -18,7 +19,7 @@ impl Series {
     /// without its newline (a run killed while writing) is left out; any other line that is
     /// not three finite numbers (a run writes no `nan` or `inf`) is an error naming it.
     pub fn read(path: &Path) -> io::Result<Series> {
-        let text = match std::fs::read_to_string(path) {
+        let text = match read_text(path, MAX_RUN_FILE_BYTES).map_err(io::Error::from) {
             Ok(text) => text,
             Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Series::default()),
             Err(e) => return Err(e),

@@ -1,13 +1,15 @@
 //! A run: the robot from its URDF, a simulator, a camera and a learner put together, the
 //! trial loop driven through every trial and event, and the run folder filled as it goes.
 
-use crate::control::{TrialLoop, TrialOutcome};
+use crate::control::{TrialLoop, TrialObserver, TrialOutcome};
 use crate::experiment::output::data_files::DataFiles;
 use crate::experiment::output::summary::{RunSummary, SensorSummary};
 use crate::experiment::plot::{plot_run, PlotError};
 use crate::experiment::run::interrupt::StopRequest;
-use crate::experiment::run::progress_bar::{LongTrialWatch, RunProgress};
+use crate::experiment::run::long_trial::LongTrialWatch;
+use crate::experiment::run::progress_bar::RunProgress;
 use crate::experiment::verdict::failures::FailureTally;
+use crate::experiment::verdict::learning_progress::learner_entries;
 use crate::experiment::verdict::learning_verdict::{LearningWatch, RunEnd};
 use crate::experiment::StepFigures;
 use crate::experiment::{
@@ -209,10 +211,10 @@ fn drive(
     let mut files = DataFiles::create(&folder)?;
     let mut figures = StepFigures::new(config.trials, config.feedback_steps);
     let mut failures = FailureTally::default();
-    let mut watch = LearningWatch::default();
+    let mut watch = LearningWatch::for_trials(config.trials);
     let mut finished = 0;
     let mut progress = RunProgress::new(config.trials, options.progress);
-    let mut long = LongTrialWatch::new();
+    let long = LongTrialWatch::start(progress.printer(), config.method);
     let started = Instant::now();
     let mut model_events = Vec::new();
     let mut root_merges = 0;
@@ -222,18 +224,15 @@ fn drive(
         if options.stop.signal().is_some() {
             break;
         }
-        let mut after_step = |step, simulated| {
-            if let Some(line) = long.step_done(trial, step, simulated, Instant::now()) {
-                progress.println(&line);
-            }
-        };
+        long.trial_begins(trial);
         let outcome = next_trial(
             &mut trials,
             learner.as_mut(),
             events,
             trial,
-            &mut after_step,
+            &mut long.observer(),
         )?;
+        long.trial_begins(0);
         learner.drain_events(&mut model_events);
         files.record_model_events(trial, &model_events)?;
         root_merges += model_events.iter().filter(|e| e.is_root_merge()).count();
@@ -268,8 +267,10 @@ fn drive(
         window: figures.window(),
         moves: work.moves,
         contact_stops: work.contact_stops,
+        settle_timeouts: work.settle_timeouts,
         patterns: stats.patterns,
         minimal_joint_move: config.minimal_joint_move,
+        learner_settings: &learner_entries(config, learner.name()),
     });
     let summary = RunSummary {
         method: learner.name().to_string(),
@@ -324,15 +325,15 @@ fn drive(
 }
 
 /// Trial `trial` of a run: the events due before it applied, the learner told, pre-learning
-/// repeated if the learner asks, then the trial run and learned (`after_step` called after
-/// every feedback step: see [`TrialLoop::run_trial_reporting`]). A replay of a run goes
+/// repeated if the learner asks, then the trial run and learned (`observer` told of every
+/// feedback step and of the learning: see [`TrialLoop::run_trial_observed`]). A replay of a run goes
 /// through the same steps, so it reproduces the run exactly.
 pub(crate) fn next_trial(
     trials: &mut TrialLoop,
     learner: &mut dyn Learner,
     events: &[Event],
     trial: usize,
-    after_step: &mut dyn FnMut(usize, f64),
+    observer: &mut dyn TrialObserver,
 ) -> Result<TrialOutcome, RunError> {
     for event in events.iter().filter(|e| e.trial() == trial) {
         event
@@ -346,7 +347,7 @@ pub(crate) fn next_trial(
     if learner.take_relearn_request() {
         trials.prelearn(learner)?;
     }
-    Ok(trials.run_trial_reporting(learner, after_step)?)
+    Ok(trials.run_trial_observed(learner, observer)?)
 }
 
 /// One line on how the tree is built up, for `verbose_output`.

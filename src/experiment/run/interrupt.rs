@@ -1,5 +1,6 @@
-//! Stopping a run cleanly: SIGINT or SIGTERM asks the run to stop after the trial it is in
-//! (it then writes its summary, marked interrupted); a second signal ends the process at
+//! Stopping a run cleanly: SIGINT or SIGTERM asks the run to stop after the trial it is in,
+//! which is cut short (its remaining feedback steps and learning; see [`crate::cancel`]);
+//! the run then writes its summary, marked interrupted. A second signal ends the process at
 //! once, with the shell's code for that signal.
 
 use signal_hook::consts::{SIGINT, SIGTERM};
@@ -32,6 +33,7 @@ impl StopRequest {
             )?;
             signal_hook::flag::register_usize(signal, Arc::clone(&stop.signal), signal as usize)?;
             signal_hook::flag::register(signal, Arc::clone(&stop.requested))?;
+            signal_hook::flag::register(signal, crate::cancel::flag())?;
         }
         Ok(stop)
     }

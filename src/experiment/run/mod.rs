@@ -3,4 +3,5 @@
 
 pub(super) mod drive;
 pub(super) mod interrupt;
+pub(super) mod long_trial;
 pub(super) mod progress_bar;

@@ -1,66 +1,22 @@
 //! The progress bar of a run (indicatif): trials done, trials per second, the current
 //! 4-step mean and the learner's size. It appears once a run has taken a second, only when
-//! stderr is a terminal, and never with `--quiet`. A trial that runs long (a slow dynamic
-//! arm) says where it stands every [`LONG_TRIAL`], bar or not.
+//! stderr is a terminal, and never with `--quiet`. Lines printed meanwhile (a long trial's,
+//! from another thread: [`LinePrinter`]) go above it.
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// Trials the "current" 4-step mean is taken over.
 const RECENT: usize = 100;
 const SHOW_AFTER: Duration = Duration::from_secs(1);
-/// Wall-clock time a trial runs before it says where it stands, and between two such lines.
-pub(in crate::experiment) const LONG_TRIAL: Duration = Duration::from_secs(10);
-
-/// The clock of the trial going on, for a line on where a long one stands.
-#[derive(Debug)]
-pub(in crate::experiment) struct LongTrialWatch {
-    trial: usize,
-    started: Instant,
-    last_said: Instant,
-}
-
-impl LongTrialWatch {
-    /// A watch on no trial yet.
-    pub(in crate::experiment) fn new() -> LongTrialWatch {
-        let now = Instant::now();
-        LongTrialWatch {
-            trial: 0,
-            started: now,
-            last_said: now,
-        }
-    }
-
-    /// Notes that `trial` took feedback step `step`, `simulated` seconds into it, at `now`;
-    /// the line to print when the trial has run [`LONG_TRIAL`] since it began or since the
-    /// last line.
-    pub(in crate::experiment) fn step_done(
-        &mut self,
-        trial: usize,
-        step: usize,
-        simulated: f64,
-        now: Instant,
-    ) -> Option<String> {
-        if trial != self.trial {
-            (self.trial, self.started, self.last_said) = (trial, now, now);
-        }
-        if now.duration_since(self.last_said) < LONG_TRIAL {
-            return None;
-        }
-        self.last_said = now;
-        Some(format!(
-            "eyehand: trial {trial} is long: {step} steps, {simulated:.1} simulated s in {:.0} s so far (feedback_steps, dt, robot_speed, settle_timeout, camera_fps)",
-            now.duration_since(self.started).as_secs_f64()
-        ))
-    }
-}
-
 /// A run's progress bar.
 #[derive(Debug)]
 pub(in crate::experiment) struct RunProgress {
     bar: ProgressBar,
     enabled: bool,
-    shown: bool,
+    shown: Arc<AtomicBool>,
     started: Instant,
     recent: [f64; RECENT],
     recent_count: usize,
@@ -78,7 +34,7 @@ impl RunProgress {
         RunProgress {
             bar,
             enabled,
-            shown: false,
+            shown: Arc::new(AtomicBool::new(false)),
             started: Instant::now(),
             recent: [0.0; RECENT],
             recent_count: 0,
@@ -99,9 +55,9 @@ impl RunProgress {
         if !self.enabled {
             return;
         }
-        if !self.shown && self.started.elapsed() >= SHOW_AFTER {
+        if !self.shown.load(Ordering::Relaxed) && self.started.elapsed() >= SHOW_AFTER {
             self.bar.set_draw_target(ProgressDrawTarget::stderr());
-            self.shown = true;
+            self.shown.store(true, Ordering::Relaxed);
         }
         self.bar.set_position(trial as u64);
         if trial % RECENT == 0 {
@@ -114,10 +70,14 @@ impl RunProgress {
 
     /// Prints a line to stderr above the bar (or plainly while it is hidden).
     pub(in crate::experiment) fn println(&self, line: &str) {
-        if self.shown {
-            self.bar.println(line);
-        } else {
-            eprintln!("{line}");
+        self.printer().println(line);
+    }
+
+    /// A printer of lines above the bar that another thread may use.
+    pub(in crate::experiment) fn printer(&self) -> LinePrinter {
+        LinePrinter {
+            bar: self.bar.clone(),
+            shown: Arc::clone(&self.shown),
         }
     }
 
@@ -127,33 +87,20 @@ impl RunProgress {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
+/// Prints lines to stderr above a run's bar, or plainly while it is hidden.
+#[derive(Debug, Clone)]
+pub(in crate::experiment) struct LinePrinter {
+    bar: ProgressBar,
+    shown: Arc<AtomicBool>,
+}
 
-    #[test]
-    fn a_trial_says_where_it_stands_once_per_long_interval() {
-        let mut watch = LongTrialWatch::new();
-        let start = Instant::now();
-        assert_eq!(watch.step_done(3, 1, 0.5, start), None);
-        assert_eq!(watch.step_done(3, 2, 1.0, start + LONG_TRIAL / 2), None);
-        let line = watch.step_done(3, 3, 900.0, start + LONG_TRIAL).unwrap();
-        assert!(
-            line.starts_with("eyehand: trial 3 is long: 3 steps, 900.0 simulated s in 10 s so far"),
-            "{line}"
-        );
-        assert_eq!(
-            watch.step_done(3, 4, 901.0, start + LONG_TRIAL * 3 / 2),
-            None
-        );
-        assert!(watch
-            .step_done(3, 5, 902.0, start + LONG_TRIAL * 2)
-            .is_some());
-        let next = start + LONG_TRIAL * 3;
-        assert_eq!(
-            watch.step_done(4, 1, 0.5, next),
-            None,
-            "a new trial starts its clock"
-        );
+impl LinePrinter {
+    /// Prints `line`.
+    pub(in crate::experiment) fn println(&self, line: &str) {
+        if self.shown.load(Ordering::Relaxed) {
+            self.bar.println(line);
+        } else {
+            eprintln!("{line}");
+        }
     }
 }

@@ -1,11 +1,11 @@
 //! Each learner's settings from the config entries of the same names.
 
 use crate::experiment::Config;
-use crate::learn::change::{ChangeSettings, DetectorSettings};
+use crate::learn::change::{ChangeRecovery, ChangeSettings, DetectorSettings};
 use crate::learn::{
-    FfnSettings, IssgpSettings, KohonenSettings, Lin5Settings, Lin8Settings, LwprSettings,
-    MergeStrategy, MlpSettings, NestedSettings, NnwSettings, PatternSettings, PerceptronSettings,
-    TreeSettings,
+    BroydenSettings, FfnSettings, IssgpSettings, KohonenSettings, Lin5Settings, Lin8Settings,
+    LwprSettings, MergeStrategy, MlpSettings, NestedSettings, NnwSettings, PatternSettings,
+    PerceptronSettings, TreeSettings,
 };
 
 /// `lin5`: `boundary_0` … `boundary_4`, the tree, perceptron, merge and change entries,
@@ -117,10 +117,35 @@ pub fn mlp_settings(config: &Config) -> MlpSettings {
     }
 }
 
+/// `broyden`: the `broyden_*` entries.
+pub fn broyden_settings(config: &Config) -> BroydenSettings {
+    BroydenSettings {
+        update: config.broyden_update,
+        rate: config.broyden_rate,
+        forgetting: config.broyden_forgetting,
+        damping: config.broyden_damping,
+        max_step_deg: config.broyden_max_step,
+        probe_deg: config.broyden_probe,
+    }
+}
+
 /// The change watch of a single-model learner: the `change_*` entries under
-/// `merge_strategy change_detection`, none otherwise.
+/// `merge_strategy change_detection` with `change_recovery forget`, none otherwise (under
+/// `correct` the learner's [`CorrectedLearner`](crate::learn::change::CorrectedLearner)
+/// watches it).
 fn watch_settings(config: &Config) -> Option<ChangeSettings> {
-    (config.merge_strategy == MergeStrategy::ChangeDetection).then(|| change_settings(config))
+    (config.merge_strategy == MergeStrategy::ChangeDetection
+        && config.change_recovery == ChangeRecovery::Forget)
+        .then(|| change_settings(config))
+}
+
+/// The watch and correction a learner without a tree gets under `merge_strategy
+/// change_detection` with `change_recovery correct`: the `change_*` entries; none
+/// otherwise.
+pub fn correction_settings(config: &Config) -> Option<ChangeSettings> {
+    (config.merge_strategy == MergeStrategy::ChangeDetection
+        && config.change_recovery == ChangeRecovery::Correct)
+        .then(|| change_settings(config))
 }
 
 /// Which pose pairs are learning patterns: `minimal_joint_move`.
@@ -207,6 +232,7 @@ mod tests {
         assert_eq!(lwpr_settings(&config), LwprSettings::default());
         assert_eq!(issgp_settings(&config), IssgpSettings::default());
         assert_eq!(mlp_settings(&config), MlpSettings::default());
+        assert_eq!(broyden_settings(&config), BroydenSettings::default());
         assert_eq!(dynamic_settings(&config), DynamicSettings::default());
     }
 }

@@ -14,16 +14,18 @@ pub use arm::{
     LoadedArm, BOUNDARY_MARGIN_DEG,
 };
 pub use learners::{
-    ffn_settings, input_bounds, issgp_settings, kohonen_settings, lin5_settings, lin8_settings,
-    lwpr_settings, mlp_settings, nnw_settings, pattern_settings,
+    broyden_settings, correction_settings, ffn_settings, input_bounds, issgp_settings,
+    kohonen_settings, lin5_settings, lin8_settings, lwpr_settings, mlp_settings, nnw_settings,
+    pattern_settings,
 };
 
 use super::{CameraKind, Config, ObstacleBox, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
 use crate::control::{CameraTiming, MoveFrames, SensorNoise, TrialSettings};
+use crate::learn::change::CorrectedLearner;
 use crate::learn::{
-    FfnLearner, IkLearner, Issgp, KohonenLearner, LearnError, Learner, Lin5, Lin8, Lwpr, Method,
-    Mlp, Nnw,
+    Broyden, FfnLearner, IkLearner, Issgp, KohonenLearner, LearnError, Learner, Lin5, Lin8, Lwpr,
+    Method, Mlp, Nnw,
 };
 use crate::robot::{
     ArmModel, DynamicSettings, DynamicSim, KinematicSim, MoveSettings, Obstacle, Simulator,
@@ -110,7 +112,9 @@ pub fn move_settings(config: &Config) -> MoveSettings {
 }
 
 /// The learner the config names. `model` is the nominal robot (for `ik`); a learner that
-/// stores patterns in a file (`use_pat_file` 0) puts it in `run_dir`.
+/// stores patterns in a file (`use_pat_file` 0) puts it in `run_dir`. Under
+/// `merge_strategy change_detection` with `change_recovery correct` a learner with a model
+/// but no tree is wrapped in a [`CorrectedLearner`].
 pub fn build_learner(
     config: &Config,
     model: &ArmModel,
@@ -119,7 +123,7 @@ pub fn build_learner(
     let pat_file = run_dir
         .filter(|_| config.use_pat_file == 0)
         .map(|dir| dir.join("pat_file"));
-    Ok(match config.method {
+    let learner: Box<dyn Learner> = match config.method {
         Method::Lin5 => Box::new(Lin5::new(&lin5_settings(config), pat_file)?),
         Method::Lin8 => Box::new(Lin8::new(&lin8_settings(config), pat_file)?),
         Method::Nnw => Box::new(Nnw::new(&nnw_settings(config), pat_file)?),
@@ -136,5 +140,19 @@ pub fn build_learner(
         Method::Lwpr => Box::new(Lwpr::new(lwpr_settings(config), input_bounds(config))),
         Method::Issgp => Box::new(Issgp::new(issgp_settings(config), input_bounds(config))),
         Method::Mlp => Box::new(Mlp::new(mlp_settings(config), input_bounds(config))),
+        Method::Broyden => Box::new(Broyden::new(broyden_settings(config))),
+    };
+    let single_model = matches!(
+        config.method,
+        Method::Ffn | Method::Kohonen | Method::Lwpr | Method::Issgp | Method::Mlp
+    );
+    Ok(match correction_settings(config) {
+        Some(change) if single_model => Box::new(CorrectedLearner::new(
+            learner,
+            &change,
+            pattern_settings(config),
+            input_bounds(config),
+        )),
+        _ => learner,
     })
 }

@@ -5,6 +5,7 @@
 use super::{RecordedRun, ShowError};
 use crate::experiment::plot::Series;
 use crate::experiment::RunSummary;
+use crate::files::{read_text, MAX_RUN_FILE_BYTES};
 use std::collections::VecDeque;
 use std::path::PathBuf;
 
@@ -78,7 +79,7 @@ impl StepOneLog {
 /// The entry of the folder's `info` that its `summary.json` contradicts, if one does: the
 /// seed, method, simulator, camera, events or obstacles.
 fn mismatched_entry(run: &RecordedRun) -> Option<&'static str> {
-    let text = std::fs::read_to_string(run.folder.join("summary.json")).ok()?;
+    let text = read_text(&run.folder.join("summary.json"), MAX_RUN_FILE_BYTES).ok()?;
     let summary: RunSummary = serde_json::from_str(&text).ok()?;
     let config = &run.setup.config;
     let events: Vec<String> = run.setup.events.iter().map(|e| e.to_string()).collect();

@@ -47,7 +47,15 @@ pub enum ShowError {
         /// The folder given.
         folder: PathBuf,
         /// Why `info` could not be read.
-        source: std::io::Error,
+        source: crate::files::ReadError,
+    },
+    /// The run's `nodes` file, one line per finished trial, cannot be read.
+    #[error("{path}: cannot read the run's list of finished trials ({source}): the run folder is incomplete")]
+    NoTrialList {
+        /// The `nodes` file.
+        path: PathBuf,
+        /// Why it could not be read.
+        source: crate::files::ReadError,
     },
     /// The `info` file lacks what a replay needs.
     #[error("{path}: {reason}")]
@@ -64,7 +72,10 @@ pub enum ShowError {
     #[error(transparent)]
     Urdf(#[from] crate::robot::DescriptionError),
     /// A trial the run does not have.
-    #[error("trial {trial} is not in the run: it has trials 1..{trials}")]
+    #[error("trial {trial} is not in the run: {}", match .trials {
+        0 => "it finished no trial".to_string(),
+        n => format!("it has trials 1..{n}"),
+    })]
     NoSuchTrial {
         /// The trial asked for.
         trial: usize,

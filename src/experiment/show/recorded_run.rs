@@ -4,6 +4,7 @@
 
 use super::ShowError;
 use crate::experiment::{Config, RunSetup, Sources};
+use crate::files::{read_text, MAX_RUN_FILE_BYTES};
 use crate::robot::DEFAULT_URDF_NAME;
 use std::path::{Path, PathBuf};
 
@@ -24,10 +25,11 @@ impl RecordedRun {
     /// that is gone is an error.
     pub fn read(folder: &Path) -> Result<RecordedRun, ShowError> {
         let info_path = folder.join("info");
-        let info = std::fs::read_to_string(&info_path).map_err(|source| ShowError::NotARun {
-            folder: folder.to_path_buf(),
-            source,
-        })?;
+        let info =
+            read_text(&info_path, MAX_RUN_FILE_BYTES).map_err(|source| ShowError::NotARun {
+                folder: folder.to_path_buf(),
+                source,
+            })?;
         let bad = |reason: String| ShowError::BadInfo {
             path: info_path.clone(),
             reason,
@@ -56,7 +58,13 @@ impl RecordedRun {
             Some(path) => Some(PathBuf::from(path)),
         };
         let setup = RunSetup::new(config, urdf.as_deref(), events, &Sources::default())?;
-        let nodes = std::fs::read_to_string(folder.join("nodes")).unwrap_or_default();
+        let nodes_path = folder.join("nodes");
+        let nodes = read_text(&nodes_path, MAX_RUN_FILE_BYTES).map_err(|source| {
+            ShowError::NoTrialList {
+                path: nodes_path.clone(),
+                source,
+            }
+        })?;
         Ok(RecordedRun {
             folder: folder.to_path_buf(),
             setup,

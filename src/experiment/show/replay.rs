@@ -66,7 +66,7 @@ pub fn replay(
             learner.as_mut(),
             &setup.events,
             trial,
-            &mut |_, _| {},
+            &mut |_: usize, _: f64| {},
         )?;
         step_one.check(run, trial, outcome.distances_mm.first().copied())?;
         learner.drain_events(&mut model_events);

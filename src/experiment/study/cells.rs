@@ -226,9 +226,24 @@ fn start(folder: &StudyFolder, launcher: &CellLauncher, index: usize) -> Result<
     let log = std::fs::File::create(&log_path).map_err(StudyError::io(&log_path))?;
     let err = log.try_clone().map_err(StudyError::io(&log_path))?;
     // Its own process group: a terminal's Ctrl-C reaches the study alone, which passes it on
-    // once to every cell.
-    launcher
-        .command(&folder.0, index)
+    // once to every cell. A study that dies without passing a signal on (SIGKILL) takes its
+    // cells with it: each gets SIGTERM when its parent dies.
+    let mut command = launcher.command(&folder.0, index);
+    let parent = std::process::id();
+    // SAFETY: between fork and exec the hook calls only prctl(2), getppid(2) and _exit(2),
+    // which are async-signal-safe, and allocates nothing.
+    unsafe {
+        command.pre_exec(move || {
+            if libc::prctl(libc::PR_SET_PDEATHSIG, libc::SIGTERM) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            if libc::getppid() as u32 != parent {
+                libc::_exit(128 + libc::SIGTERM); // the study died before the call
+            }
+            Ok(())
+        });
+    }
+    command
         .process_group(0)
         .stdin(Stdio::null())
         .stdout(log)

@@ -8,6 +8,7 @@ use super::table::{four_step_curves, study_table, CellResult};
 use super::StudyError;
 use crate::experiment::plot::plot_curves;
 use crate::experiment::{Event, FourStepTrace};
+use crate::files::{read_bytes, read_text, MAX_RUN_FILE_BYTES};
 use std::path::PathBuf;
 
 /// Log lines shown for a cell that did not finish.
@@ -101,7 +102,8 @@ pub(super) fn read_summary(
     run_folder: &std::path::Path,
 ) -> Result<crate::experiment::RunSummary, String> {
     let path = run_folder.join("summary.json");
-    let text = std::fs::read_to_string(&path).map_err(|e| {
+    let text = read_text(&path, MAX_RUN_FILE_BYTES).map_err(|e| {
+        let e = std::io::Error::from(e);
         if e.kind() == std::io::ErrorKind::NotFound {
             if run_folder.is_dir() {
                 "started, no summary.json (running, failed or cancelled)".to_string()
@@ -150,7 +152,7 @@ fn cell_of(
 
 /// The last lines of a log (empty if unreadable).
 fn last_lines(path: &std::path::Path) -> Vec<String> {
-    let text = std::fs::read(path).unwrap_or_default();
+    let text = read_bytes(path, MAX_RUN_FILE_BYTES).unwrap_or_default();
     let text = String::from_utf8_lossy(&text);
     let lines: Vec<&str> = text.lines().collect();
     lines[lines.len().saturating_sub(LOG_TAIL_LINES)..]

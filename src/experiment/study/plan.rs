@@ -4,6 +4,7 @@
 
 use super::StudyError;
 use crate::experiment::{allocate_run_folder, Config, RunRequest};
+use crate::files::{read_text, MAX_RUN_FILE_BYTES};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -112,7 +113,7 @@ impl StudyFolder {
             path: self.0.clone(),
             reason,
         };
-        let text = std::fs::read_to_string(&path)
+        let text = read_text(&path, MAX_RUN_FILE_BYTES)
             .map_err(|e| not_a_study(format!("{}: {e}", path.display())))?;
         let plan: StudyPlan =
             serde_json::from_str(&text).map_err(|e| not_a_study(format!("{PLAN_FILE}: {e}")))?;

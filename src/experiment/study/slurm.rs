@@ -82,9 +82,13 @@ pub fn memory_class_mb(config: &Config) -> u64 {
     let per_trial_kb = match config.method {
         Method::Lin5 => 2.1,
         Method::Lin8 | Method::Nnw => 2.6,
-        Method::Ffn | Method::Kohonen | Method::Ik | Method::Lwpr | Method::Issgp | Method::Mlp => {
-            0.0
-        }
+        Method::Ffn
+        | Method::Kohonen
+        | Method::Ik
+        | Method::Lwpr
+        | Method::Issgp
+        | Method::Mlp
+        | Method::Broyden => 0.0,
     };
     let dynamic_mb = if config.sim == SimKind::Dynamic {
         20.0

@@ -1,9 +1,12 @@
 //! Whether a run learned anything: a run whose every trial failed, whose trials gave its
-//! learner no pattern, or whose arm stayed at its start pose in every trial of its last
-//! window learned nothing, and says so with the likely cause it can see.
+//! learner no pattern, whose arm stayed at its start pose in every trial of its last
+//! window, or whose last trials end no closer to their targets or lose the object as often
+//! as its first (`learning_progress.rs`) learned nothing, and says so with the likely cause
+//! it can see.
 
 use crate::control::TrialOutcome;
 use crate::experiment::verdict::failures::FailureTally;
+use crate::experiment::verdict::learning_progress::{Progress, Stalled};
 use crate::learn::Observation;
 use serde::{Deserialize, Serialize};
 
@@ -26,6 +29,12 @@ pub enum NotLearnedKind {
     NoPattern,
     /// The arm stayed within [`STILL_DEG`] of its start pose in every trial of the window.
     ArmStayedAtStart,
+    /// The window's trials ended, on average, at two thirds of their start distance from
+    /// their targets or farther.
+    NoCloser,
+    /// The learner's moves lost the object in half of the window's trials or more, at three
+    /// quarters of the first trials' rate or more.
+    LostAsOften,
 }
 
 /// Why a run learned nothing, as `summary.json` gives it.
@@ -45,6 +54,7 @@ pub struct LearningWatch {
     last_succeeded: Option<usize>,
     last_moved: Option<usize>,
     last_proposed: Option<usize>,
+    progress: Progress,
 }
 
 /// What the run's end adds to the trials for the verdict.
@@ -58,13 +68,28 @@ pub struct RunEnd<'a> {
     pub moves: u64,
     /// Moves stopped by a contact.
     pub contact_stops: u64,
+    /// Moves, placings and link changes after which the arm had not settled in time.
+    pub settle_timeouts: u64,
     /// Patterns the learner reports it stores.
     pub patterns: usize,
     /// The config's `minimal_joint_move` (degrees).
     pub minimal_joint_move: f64,
+    /// The learner's entries set away from their defaults, in words (the likely cause of
+    /// its moves going astray).
+    pub learner_settings: &'a str,
 }
 
 impl LearningWatch {
+    /// A watch on a run of `trials` trials that also judges whether its last trials came
+    /// closer to their targets and lost the object less often than its first (a
+    /// [`Default`] watch judges neither).
+    pub fn for_trials(trials: usize) -> LearningWatch {
+        LearningWatch {
+            progress: Progress::new(trials),
+            ..LearningWatch::default()
+        }
+    }
+
     /// Takes in trial `trial`'s outcome and the path of poses it saw; a trial's poses make
     /// a pattern when a joint's reported angle spans `minimal_joint_move` (degrees) or more.
     pub fn trial_done(
@@ -75,6 +100,7 @@ impl LearningWatch {
         minimal_joint_move: f64,
     ) {
         self.finished = trial;
+        self.progress.trial_done(trial, outcome);
         if outcome.failure.is_none() {
             self.last_succeeded = Some(trial);
         }
@@ -94,7 +120,10 @@ impl LearningWatch {
         let (kind, what) = self.what_failed(end)?;
         let cause = match kind {
             NotLearnedKind::NoTrialFinished => None,
-            NotLearnedKind::EveryTrialFailed => failure_cause(end.failures),
+            NotLearnedKind::EveryTrialFailed => failure_cause(end),
+            NotLearnedKind::NoCloser | NotLearnedKind::LostAsOften => {
+                Some(end.learner_settings.to_string())
+            }
             _ => self.still_cause(end),
         };
         let reason = match cause {
@@ -150,7 +179,13 @@ impl LearningWatch {
                 ),
             ))
         } else {
-            None
+            self.progress.stalled(end.window).map(|(how, what)| {
+                let kind = match how {
+                    Stalled::NoCloser => NotLearnedKind::NoCloser,
+                    Stalled::LostAsOften => NotLearnedKind::LostAsOften,
+                };
+                (kind, what)
+            })
         }
     }
 
@@ -174,12 +209,16 @@ impl LearningWatch {
 }
 
 /// The likely cause of every trial failing, when one reason makes most of the failures.
-fn failure_cause(failures: &FailureTally) -> Option<String> {
+fn failure_cause(end: &RunEnd) -> Option<String> {
+    let (failures, learner_settings) = (end.failures, end.learner_settings);
     let most = |count: usize| 2 * count > failures.total();
-    if most(failures.no_start_seen) {
+    let unsettled = end.settle_timeouts as f64 > MOSTLY_STOPPED * end.moves.max(1) as f64;
+    if most(failures.no_start_seen) && unsettled {
+        Some(format!("the arm did not settle in time ({} settle timeouts, {} moves made): its motors may be too weak to hold it against gravity (the URDF's joint effort limits and link masses) or settle_timeout too short, so the camera does not see the object at the start", end.settle_timeouts, end.moves))
+    } else if most(failures.no_start_seen) {
         Some("the object is out of the camera's view at the start (camera_link, camera_offset, obstacles)".into())
     } else if most(failures.left_the_image + failures.too_close) {
-        Some("the learner's moves lose the object (out of the image or too close): its answers are far off (its settings, or the run's events)".into())
+        Some(format!("the learner's moves lose the object (out of the image or too close): its answers are far off ({learner_settings}; or the run's events)"))
     } else if most(failures.hidden) {
         Some("something hides the object from the camera (obstacles)".into())
     } else if most(failures.unreachable_target) {
@@ -216,6 +255,7 @@ mod tests {
             seconds: 1.0,
             moved_deg,
             proposed_deg,
+            start_distance_mm: Some(200.0),
         }
     }
 
@@ -232,8 +272,10 @@ mod tests {
             window,
             moves: 100,
             contact_stops: 0,
+            settle_timeouts: 0,
             patterns: 8,
             minimal_joint_move: 0.01,
+            learner_settings: "mlp_rate 1 (default 0.001)",
         }
     }
 

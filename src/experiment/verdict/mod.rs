@@ -2,6 +2,7 @@
 //! milestones (trials to a level, recovery after an event).
 
 pub(super) mod failures;
+pub(super) mod learning_progress;
 pub(super) mod learning_verdict;
 pub(super) mod milestones;
 pub(super) mod step_figures;

@@ -1,12 +1,15 @@
-//! The study's baselines and the reference: one feed-forward network for the whole space
-//! (ffn), the Kohonen map of local linear maps, the dense network they use, and the
-//! model-based controller (ik).
+//! The study's baselines and the references: one feed-forward network for the whole space
+//! (ffn), the Kohonen map of local linear maps, the dense network they use, the
+//! model-based controller (ik) and the model-free one (broyden, uncalibrated visual
+//! servoing).
 
+mod broyden;
 mod ffn;
 mod ik;
 mod kohonen;
 pub mod net;
 
+pub use broyden::{Broyden, BroydenSettings, BroydenUpdate, ImageJacobian};
 pub use ffn::{FfnLearner, FfnSettings};
 pub use ik::IkLearner;
 pub use kohonen::{KohonenLearner, KohonenSettings, Lattice, Neighbourhood};

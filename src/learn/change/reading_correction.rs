@@ -89,10 +89,10 @@ impl<const N: usize> ReadingCorrection<N> {
     pub(crate) fn fit(
         &mut self,
         patterns: &[Pattern<N>],
-        answer: impl Fn(&SVector<f64, N>) -> Vector3<f64>,
+        mut answer: impl FnMut(&SVector<f64, N>) -> Vector3<f64>,
     ) {
         for _ in 0..ITERATIONS {
-            let (normal, rhs) = self.normal_equations(patterns, &answer);
+            let (normal, rhs) = self.normal_equations(patterns, &mut answer);
             let Some(step) = solve_with_ridge(normal, &rhs) else {
                 break;
             };
@@ -123,7 +123,7 @@ impl<const N: usize> ReadingCorrection<N> {
     fn normal_equations(
         &self,
         patterns: &[Pattern<N>],
-        answer: &impl Fn(&SVector<f64, N>) -> Vector3<f64>,
+        answer: &mut impl FnMut(&SVector<f64, N>) -> Vector3<f64>,
     ) -> (
         SMatrix<f64, PARAMETERS, PARAMETERS>,
         SVector<f64, PARAMETERS>,
@@ -156,7 +156,7 @@ impl<const N: usize> ReadingCorrection<N> {
         pattern: &Pattern<N>,
         corrected: &SVector<f64, N>,
         answered: &Vector3<f64>,
-        answer: &impl Fn(&SVector<f64, N>) -> Vector3<f64>,
+        answer: &mut impl FnMut(&SVector<f64, N>) -> Vector3<f64>,
     ) -> SMatrix<f64, 3, PARAMETERS> {
         let mut jacobian = SMatrix::<f64, 3, PARAMETERS>::zeros();
         for start in reading_starts::<N>() {

@@ -2,6 +2,7 @@
 
 use super::inertia::Inertial;
 use super::joint::{Joint, JointDynamics, JointKind, JointLimits};
+use super::ranges::{within, MAX_LENGTH_M, MAX_MASS_KG};
 use super::DescriptionErrorKind as Kind;
 use nalgebra::{Isometry3, Matrix3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
 
@@ -21,6 +22,7 @@ pub(super) fn pose(origin: &urdf_rs::Pose, element: &str) -> Result<Isometry3<f6
     let [x, y, z] = origin.xyz.0;
     let [roll, pitch, yaw] = origin.rpy.0;
     finite(&[x, y, z, roll, pitch, yaw], element)?;
+    within(&[x, y, z], (0.0, MAX_LENGTH_M), element, "m")?;
     Ok(Isometry3::from_parts(
         Translation3::new(x, y, z),
         UnitQuaternion::from_euler_angles(roll, pitch, yaw),
@@ -43,6 +45,12 @@ pub(super) fn inertial(link: &urdf_rs::Link) -> Result<Inertial, Kind> {
             mass,
         });
     }
+    within(
+        &[mass],
+        (0.0, MAX_MASS_KG),
+        &format!("link `{name}` mass"),
+        "kg",
+    )?;
     if mass == 0.0 {
         return Ok(Inertial::MASSLESS);
     }

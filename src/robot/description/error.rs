@@ -89,6 +89,21 @@ pub enum DescriptionErrorKind {
         /// The number.
         value: f64,
     },
+    /// A number beyond the physical range of its kind (see `ranges.rs`).
+    #[error("{element}: {} is outside the physical range ({})",
+        super::ranges::with_unit(*.value, .unit), super::ranges::range_text(*.low, *.high, .unit))]
+    OutOfPhysicalRange {
+        /// The element (`joint `j` origin`, `link `l` inertial`, …).
+        element: String,
+        /// The number.
+        value: f64,
+        /// The least size it may have (0: none).
+        low: f64,
+        /// The largest size it may have.
+        high: f64,
+        /// Its unit ("" for none).
+        unit: &'static str,
+    },
     /// A moving joint's axis of length zero.
     #[error("joint `{joint}` has a zero axis")]
     ZeroAxis {

@@ -4,6 +4,7 @@
 
 use super::convert::pose;
 use super::mesh::{MeshFormat, TriangleMesh};
+use super::ranges::{within, MAX_LENGTH_M, MESH_SCALE, MIN_SIZE_M};
 use super::resolve::{resolve_mesh, MeshPathError};
 use super::{DescriptionErrorKind as Kind, DescriptionWarning};
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
@@ -198,6 +199,8 @@ impl<'a> GeometryReader<'a> {
                 filename: filename.to_string(),
             });
         }
+        let element = format!("link `{link}` mesh `{filename}` scale");
+        within(scale.as_slice(), MESH_SCALE, &element, "")?;
         let found =
             resolve_mesh(filename, self.urdf_folder, self.package_paths).map_err(|error| {
                 match error {
@@ -316,6 +319,8 @@ fn primitive_shape(geometry: &urdf_rs::Geometry, link: &str) -> Result<Shape, Ki
         urdf_rs::Geometry::Mesh { .. } => unreachable!("meshes are read by GeometryReader::mesh"),
     };
     if sizes.iter().all(|s| s.is_finite() && *s > 0.0) {
+        let element = format!("link `{link}` {name}");
+        within(&sizes, (MIN_SIZE_M, MAX_LENGTH_M), &element, "m")?;
         Ok(shape)
     } else {
         Err(Kind::BadShape {

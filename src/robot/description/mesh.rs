@@ -1,6 +1,7 @@
 //! Triangle meshes read from OBJ (tobj) and STL (stl_io) files, scaled as the URDF says,
 //! and their convex hulls (parry, through Rapier's re-export).
 
+use super::ranges::{number, MAX_LENGTH_M, MIN_SIZE_M};
 use nalgebra::{Point3, Vector3};
 use rapier3d_f64::parry::math::Vector as ParryVector;
 use rapier3d_f64::parry::transformation::try_convex_hull;
@@ -39,10 +40,14 @@ impl MeshFormat {
     }
 }
 
+/// A convex hull enclosing less than this share of the cube of the mesh's extent is flat.
+const FLAT: f64 = 1e-9;
+
 impl TriangleMesh {
     /// Reads a mesh file and scales it per axis; the error is the reason in words.
     pub fn read(path: &Path, format: MeshFormat, scale: &Vector3<f64>) -> Result<Self, String> {
-        let file = File::open(path).map_err(|e| e.to_string())?;
+        let file = crate::files::open_regular(path, crate::files::MAX_MESH_BYTES)
+            .map_err(|e| e.to_string())?;
         let mut reader = BufReader::new(file);
         let mut mesh = match format {
             MeshFormat::Obj => read_obj(&mut reader)?,
@@ -69,7 +74,18 @@ impl TriangleMesh {
             .collect();
         let (vertices, triangles) = try_convex_hull(&points)
             .map_err(|e| format!("its convex hull cannot be built ({e:?})"))?;
-        if triangles.len() < 4 {
+        let volume: f64 = triangles
+            .iter()
+            .map(|&[a, b, c]| {
+                let [a, b, c] = [a, b, c].map(|i| vertices[i as usize]);
+                a.dot(b.cross(c)) / 6.0
+            })
+            .sum();
+        let extent = points
+            .iter()
+            .map(|p| (*p - points[0]).length())
+            .fold(0.0, f64::max);
+        if triangles.len() < 4 || volume.abs() <= FLAT * extent.powi(3) {
             return Err("it is flat: its convex hull encloses no volume".into());
         }
         Ok(TriangleMesh {
@@ -91,6 +107,30 @@ impl TriangleMesh {
             .find(|p| !p.coords.iter().all(|c| c.is_finite()))
         {
             return Err(format!("vertex ({}, {}, {}) is not finite", p.x, p.y, p.z));
+        }
+        if let Some(p) = self
+            .vertices
+            .iter()
+            .find(|p| p.coords.amax() > MAX_LENGTH_M)
+        {
+            return Err(format!(
+                "a point of it lies {} m from its frame, beyond the {MAX_LENGTH_M} m a robot's part may reach",
+                number(p.coords.amax())
+            ));
+        }
+        let (low, high) = self.vertices.iter().fold(
+            (
+                Vector3::repeat(f64::INFINITY),
+                Vector3::repeat(f64::NEG_INFINITY),
+            ),
+            |(l, h), p| (l.inf(&p.coords), h.sup(&p.coords)),
+        );
+        let extent = (high - low).amax();
+        if extent < MIN_SIZE_M {
+            return Err(format!(
+                "it spans {} m, less than the {MIN_SIZE_M} m a part must span",
+                number(extent)
+            ));
         }
         let count = self.vertices.len();
         match self

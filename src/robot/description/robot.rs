@@ -38,7 +38,8 @@ impl RobotDescription {
     /// Reads a URDF file; meshes are looked up relative to its folder.
     pub fn load(path: &Path, options: &DescriptionOptions) -> Result<Self, DescriptionError> {
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| DescriptionError {
+        let limit = crate::files::MAX_URDF_BYTES;
+        let text = crate::files::read_text(path, limit).map_err(|e| DescriptionError {
             file: file.clone(),
             kind: Kind::Unreadable {
                 reason: e.to_string(),

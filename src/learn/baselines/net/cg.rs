@@ -176,6 +176,9 @@ pub fn minimize(objective: &mut impl Objective, x: &mut [f64], iterations: usize
     // The last accepted step and the slope it started from.
     let mut last: Option<(f64, f64)> = None;
     for _ in 0..iterations {
+        if crate::cancel::requested() {
+            break; // a signal: the run ends after this trial
+        }
         let mut slope = dot(&grad, &direction);
         if slope >= 0.0 {
             direction.iter_mut().zip(&grad).for_each(|(d, g)| *d = -g);

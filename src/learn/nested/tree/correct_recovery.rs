@@ -99,7 +99,7 @@ impl<const N: usize> Corrections<N> {
     }
 
     /// The input `x` through the fixed corrections.
-    fn through_fixed(&self, x: &SVector<f64, N>) -> SVector<f64, N> {
+    pub(crate) fn through_fixed(&self, x: &SVector<f64, N>) -> SVector<f64, N> {
         self.fixed.iter().fold(*x, |x, c| c.apply(&x))
     }
 
@@ -159,7 +159,7 @@ impl<const N: usize> Corrections<N> {
     /// alarm, through it, for the tree to learn (`None` while it is not fixed).
     pub(crate) fn refit(
         &mut self,
-        answer: impl Fn(&SVector<f64, N>) -> nalgebra::Vector3<f64>,
+        answer: impl FnMut(&SVector<f64, N>) -> nalgebra::Vector3<f64>,
     ) -> Option<Vec<Pattern<N>>> {
         let f = self.fitting.as_mut()?;
         let before = f.correction.clone();

@@ -93,6 +93,9 @@ impl Mlp {
         }
         self.gradient.fill(0.0);
         for _ in 0..self.settings.batch {
+            if crate::cancel::requested() {
+                return; // a signal: this step is not taken, the run ends after the trial
+            }
             let i = self.rng.random_range(0..held);
             let Some(s) = self.replay.get(i) else {
                 continue;
@@ -137,6 +140,9 @@ impl Learner for Mlp {
             watch.close_trial();
         }
         for _ in 0..self.settings.steps_per_trial {
+            if crate::cancel::requested() {
+                break; // a signal: the run ends after this trial
+            }
             self.step();
         }
         Ok(())

@@ -1,0 +1,44 @@
+//! Settings of the `broyden` controller.
+
+/// How the image Jacobian follows each move (the config's `broyden_update`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum BroydenUpdate {
+    /// Broyden's rank-one secant update (`broyden`, the default).
+    #[default]
+    Broyden,
+    /// Recursive least squares with exponential forgetting (`rls`).
+    Rls,
+}
+
+/// Settings of the `broyden` controller.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BroydenSettings {
+    /// The update after each move; Broyden's by default.
+    pub update: BroydenUpdate,
+    /// α, the gain of Broyden's update (1: each move's secant condition met exactly); 1 by
+    /// default.
+    pub rate: f64,
+    /// λ, the forgetting factor of the recursive least-squares update; 0.9 by default.
+    pub forgetting: f64,
+    /// μ² of the damped least-squares step as a share of JᵀJ's mean diagonal; 0.001 by
+    /// default.
+    pub damping: f64,
+    /// Largest joint turn of one step (degrees); 15 by default.
+    pub max_step_deg: f64,
+    /// Each exploratory move of the first trial turns one joint by this (degrees); 1 by
+    /// default.
+    pub probe_deg: f64,
+}
+
+impl Default for BroydenSettings {
+    fn default() -> Self {
+        BroydenSettings {
+            update: BroydenUpdate::Broyden,
+            rate: 1.0,
+            forgetting: 0.9,
+            damping: 0.001,
+            max_step_deg: 15.0,
+            probe_deg: 1.0,
+        }
+    }
+}

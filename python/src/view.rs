@@ -63,6 +63,7 @@ impl EpisodeView {
                 seconds: 0.0,
                 moved_deg: 0.0,
                 proposed_deg: 0.0,
+                start_distance_mm: None,
             },
             model: trials.sim().model().clone(),
             events: Vec::new(),

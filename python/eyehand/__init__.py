@@ -1,5 +1,6 @@
 """eyehand from Python: the OSCAR-6 testbed, its built-in learners and runs, and the
-Gymnasium environment ``eyehand/Reach-v0`` — all on the Rust engine the ``eyehand`` command
+Gymnasium environments ``eyehand/Reach-v0`` and ``eyehand/ReachGoal-v0`` (each with a vector
+form stepped in Rust, ``eyehand.vector``) — all on the Rust engine the ``eyehand`` command
 line uses.
 
 - ``Testbed``: a trial driven one feedback step at a time (``reset``, ``step``, ``learn``,
@@ -52,7 +53,12 @@ __all__ = [
     "patterns",
     "run",
     "RECORDED_STEPS",
+    "MAX_EPISODE_STEPS",
 ]
+
+#: The registered environments' episode length: the default ``feedback_steps`` (pass
+#: ``max_episode_steps`` to ``gym.make`` with another ``feedback_steps``).
+MAX_EPISODE_STEPS = 10
 
 #: Distances after feedback steps 1..RECORDED_STEPS are written to ``1step`` … ``5step``.
 RECORDED_STEPS = 5
@@ -157,8 +163,17 @@ def _read_step_file(path):
 def _register_environment():
     from gymnasium.envs.registration import register, registry
 
-    if "eyehand/Reach-v0" not in registry:
-        register(id="eyehand/Reach-v0", entry_point="eyehand.env:ReachEnv")
+    for name, env, vector in (
+        ("eyehand/Reach-v0", "ReachEnv", "ReachVectorEnv"),
+        ("eyehand/ReachGoal-v0", "ReachGoalEnv", "ReachGoalVectorEnv"),
+    ):
+        if name not in registry:
+            register(
+                id=name,
+                entry_point=f"eyehand.env:{env}" if env == "ReachEnv" else f"eyehand.goal:{env}",
+                vector_entry_point=f"eyehand.vector:{vector}",
+                max_episode_steps=MAX_EPISODE_STEPS,
+            )
 
 
 _register_environment()

@@ -15,11 +15,20 @@ than any whole episode that keeps the object in view, so losing it never pays).
 observation then repeats the last one seen). ``info``: ``distance_mm``, ``joints_deg`` (θ1,
 θ2, θ3), ``seen`` and ``end`` (None, "reached", "steps_used" or "lost").
 
+``render_mode="rgb_array"`` makes ``render()`` draw the episode as ``eyehand show`` draws a
+trial (the arm's views beside the camera image); ``"human"`` shows it in a Matplotlib window
+where a display exists. ``image_resolution=N`` adds the ray-cast camera's N×N grey image:
+the observation is then a Dict of ``reading`` (the Box above) and ``image``.
+
 ``reset(seed=…)`` restarts the draws of targets and starts from the seed; ``reset(options=
 {"sim": …, "camera": …, "events": […]})`` builds a fresh testbed with that simulator, camera
 and events (``rotate:EPISODE:DEG`` / ``elongate:EPISODE:LINK:CM``, applied before that
 episode, counted from this reset).
 """
+
+import importlib.util
+import os
+import sys
 
 import gymnasium as gym
 import numpy as np
@@ -36,10 +45,45 @@ CZ_HIGH = 1900.0
 WORST_DISTANCE_MM = 4200.0
 
 
+def _display_exists():
+    """Whether a window can be shown: Matplotlib is installed and, on Linux, a display
+    is set."""
+    if importlib.util.find_spec("matplotlib") is None:
+        return False
+    return not sys.platform.startswith("linux") or any(
+        os.environ.get(name) for name in ("DISPLAY", "WAYLAND_DISPLAY")
+    )
+
+
+#: The render modes: an RGB array, and a window where a display exists (and Matplotlib).
+RENDER_MODES = ("rgb_array", "human") if _display_exists() else ("rgb_array",)
+#: Frames per second of ``human`` rendering.
+RENDER_FPS = 4
+#: The smallest and largest camera image observation (pixels a side).
+MIN_IMAGE = 2
+MAX_IMAGE = 4096
+
+
+def show_in_window(window, frame, fps):
+    """Shows ``frame`` in ``window`` (a Matplotlib image; a new window when None) and
+    returns the window."""
+    import matplotlib.pyplot as plt
+
+    if window is None:
+        plt.ion()
+        figure, axes = plt.subplots(figsize=(frame.shape[1] / 100, frame.shape[0] / 100))
+        axes.set_axis_off()
+        window = axes.imshow(frame)
+    else:
+        window.set_data(frame)
+    plt.pause(1.0 / fps)
+    return window
+
+
 class ReachEnv(gym.Env):
     """Reach a target under the camera: the trial loop of ``eyehand run`` as an ``Env``."""
 
-    metadata = {"render_modes": []}
+    metadata = {"render_modes": list(RENDER_MODES), "render_fps": RENDER_FPS}
 
     def __init__(
         self,
@@ -50,8 +94,17 @@ class ReachEnv(gym.Env):
         events=(),
         max_move_deg=MAX_MOVE_DEG,
         seed=1,
+        render_mode=None,
+        image_resolution=None,
         **entries,
     ):
+        if render_mode is not None and render_mode not in RENDER_MODES:
+            raise ValueError(
+                f"render_mode must be one of {RENDER_MODES} or None, not {render_mode!r} "
+                "('human' needs Matplotlib and a display)"
+            )
+        self.render_mode = render_mode
+        self._window = None
         self._build = dict(config=config, sim=sim, camera=camera, urdf=urdf, entries=entries)
         self._seed = seed
         self._events = []
@@ -68,9 +121,18 @@ class ReachEnv(gym.Env):
         low = np.concatenate([reading[:, 0], limits[1:, 0]])
         high = np.concatenate([reading[:, 1], limits[1:, 1]])
         high[2] = min(high[2], CZ_HIGH)
-        self.observation_space = spaces.Box(
-            low.astype(np.float32), high.astype(np.float32), dtype=np.float32
-        )
+        self._box = spaces.Box(low.astype(np.float32), high.astype(np.float32), dtype=np.float32)
+        self.observation_space = self._box
+        self.image_resolution = None
+        if image_resolution is not None:
+            n = int(image_resolution)
+            if not MIN_IMAGE <= n <= MAX_IMAGE:
+                raise ValueError(
+                    f"image_resolution must be from {MIN_IMAGE} to {MAX_IMAGE}, not {image_resolution}"
+                )
+            self.image_resolution = n
+            image = spaces.Box(0, 255, shape=(n, n, 1), dtype=np.uint8)
+            self.observation_space = spaces.Dict({"reading": self._box, "image": image})
 
     def _rebuild(self, sim, camera, events):
         build = self._build
@@ -99,6 +161,8 @@ class ReachEnv(gym.Env):
                 else:
                     self.testbed.stretch_link(link, amount)
         obs = self.testbed.reset(seed=seed)
+        if self.render_mode == "human":
+            self.render()
         return self._observation(obs), self._info(seen=True)
 
     def action_for(self, move_deg):
@@ -119,12 +183,41 @@ class ReachEnv(gym.Env):
         terminated = end == "reached"
         truncated = end in ("steps_used", "lost")
         reward = -self.testbed.feedback_steps * WORST_DISTANCE_MM if end == "lost" else -distance
+        if self.render_mode == "human":
+            self.render()
         return self._observation(self.testbed.observation), float(reward), terminated, truncated, info
 
     def _observation(self, obs):
-        """``obs`` as the observation space holds it: float32, cz clipped at ``CZ_HIGH``."""
-        space = self.observation_space
-        return np.clip(np.asarray(obs, dtype=np.float64), space.low, space.high).astype(np.float32)
+        """``obs`` as the observation space holds it: float32, cz clipped at ``CZ_HIGH``;
+        with the camera's image when ``image_resolution`` is set."""
+        space = self._box
+        reading = np.clip(np.asarray(obs, dtype=np.float64), space.low, space.high).astype(np.float32)
+        if self.image_resolution is None:
+            return reading
+        image = self.testbed.camera_image(self.image_resolution)
+        return {"reading": reading, "image": image[:, :, np.newaxis]}
+
+    def render(self):
+        """The episode as ``eyehand show`` draws a trial: the arm's side and top views of
+        every pose so far beside the camera's image at the last one. ``rgb_array``: an
+        (H, W, 3) uint8 array; ``human``: shown in a Matplotlib window (None returned)."""
+        if self.render_mode is None:
+            gym.logger.warn("render() without a render_mode: pass render_mode to gym.make")
+            return None
+        frame = self.testbed.render()
+        if frame is None:
+            raise gym.error.ResetNeeded("render() before the first reset()")
+        if self.render_mode == "rgb_array":
+            return frame
+        self._window = show_in_window(self._window, frame, RENDER_FPS)
+        return None
+
+    def close(self):
+        if self._window is not None:
+            import matplotlib.pyplot as plt
+
+            plt.close(self._window.figure)
+            self._window = None
 
     def _info(self, seen):
         path = self.testbed.path

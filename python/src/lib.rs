@@ -1,13 +1,17 @@
 //! The Python extension `eyehand._eyehand`: the testbed, the built-in learners and runs,
 //! on the same engine as the `eyehand` command line.
 
+mod arm;
 mod config_dict;
 mod convert;
 mod learner;
 mod named;
 mod patterns;
+mod pool;
 mod run;
 mod testbed;
+mod vec_testbed;
+mod view;
 
 use pyo3::prelude::*;
 
@@ -15,6 +19,7 @@ use pyo3::prelude::*;
 #[pymodule]
 fn _eyehand(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<testbed::Testbed>()?;
+    m.add_class::<vec_testbed::VecTestbed>()?;
     m.add_class::<learner::BuiltinLearner>()?;
     m.add_class::<named::NamedQuery>()?;
     m.add_class::<named::Patterns>()?;

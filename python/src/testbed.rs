@@ -3,16 +3,21 @@
 
 use crate::convert::{load_config, path_array, query_array, set_entry, value_error, vector3};
 use crate::learner::{BuiltinLearner, ErrorSlot, PyLearner};
+use crate::view::EpisodeView;
 use eyehand::control::{Failure, StepError, TrialEnd, TrialLoop};
-use eyehand::experiment::{Event, RunSetup, Sources};
+use eyehand::experiment::{CameraKind, Event, RunSetup, Sources};
 use eyehand::learn::{LearnError, Learner};
 use eyehand::robot::Controlled;
 use eyehand::units::{MM_PER_M, M_PER_CM};
-use numpy::{PyArray1, PyArray2, PyArrayMethods};
+use numpy::{PyArray1, PyArray2, PyArray3, PyArrayMethods};
 use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::path::PathBuf;
+
+/// The smallest and largest camera image (pixels a side).
+const MIN_IMAGE: usize = 2;
+const MAX_IMAGE: usize = 4096;
 
 /// What a step returns: the reading (None when not seen), θ1..θ3, the distance (mm) and
 /// whether the object is seen.
@@ -29,6 +34,7 @@ type StepTuple<'py> = (
 #[derive(Debug)]
 pub struct Testbed {
     trials: TrialLoop,
+    view: EpisodeView,
 }
 
 #[pymethods]
@@ -43,15 +49,15 @@ impl Testbed {
         urdf: Option<PathBuf>,
         entries: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Testbed> {
-        let (mut config, _) = load_config(config.as_deref(), entries)?;
-        set_entry(&mut config, "sim", sim)?;
-        set_entry(&mut config, "camera", camera)?;
-        config.seed = seed;
-        let events = Event::of_run(&config, &[]);
-        let setup = RunSetup::new(config, urdf.as_deref(), events, &Sources::default())
-            .map_err(value_error)?;
+        let setup = run_setup(config, sim, camera, seed, urdf, entries)?;
+        let trials = setup.trial_loop();
+        let resolution = match setup.config.camera {
+            CameraKind::Raycast => setup.config.raycast_resolution,
+            CameraKind::Projection => trials.camera().model().width.round() as usize,
+        };
         Ok(Testbed {
-            trials: setup.trial_loop(),
+            trials,
+            view: EpisodeView::new(resolution),
         })
     }
 
@@ -67,7 +73,10 @@ impl Testbed {
             self.trials.reseed(seed);
         }
         match self.trials.begin_trial() {
-            Ok(start) => Ok(query_array(py, &start.query())),
+            Ok(start) => {
+                self.view.begin(&self.trials, start.c);
+                Ok(query_array(py, &start.query()))
+            }
             Err(failure) => Err(PyRuntimeError::new_err(failure_message(failure))),
         }
     }
@@ -84,6 +93,7 @@ impl Testbed {
             StepError::NoTrial => PyRuntimeError::new_err(e.to_string()),
             _ => PyValueError::new_err(e.to_string()),
         })?;
+        self.view.keep(&self.trials, report.reading);
         let reading = report
             .reading
             .ok()
@@ -106,6 +116,54 @@ impl Testbed {
     #[getter]
     fn distance_mm(&self) -> Option<f64> {
         self.trials.distance_mm()
+    }
+
+    /// The episode drawn as `eyehand show` draws a trial: the arm's side and top views of
+    /// every pose so far beside the camera's image at the last one, an (H, W, 3) uint8
+    /// array; None before the first reset.
+    fn render<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyArray3<u8>>>> {
+        let Some(frame) = self.view.frame(&self.trials) else {
+            return Ok(None);
+        };
+        let frame = frame.map_err(PyRuntimeError::new_err)?;
+        let shape = [frame.height as usize, frame.width as usize, 3];
+        PyArray1::from_vec(py, frame.rgb).reshape(shape).map(Some)
+    }
+
+    /// The grey image (`resolution` × `resolution`, uint8) the ray-cast camera sees at the
+    /// pose now: the floor, obstacles and arm, and the object where it is seen; None
+    /// before the first reset.
+    fn camera_image<'py>(
+        &self,
+        py: Python<'py>,
+        resolution: usize,
+    ) -> PyResult<Option<Bound<'py, PyArray2<u8>>>> {
+        if !(MIN_IMAGE..=MAX_IMAGE).contains(&resolution) {
+            return Err(PyValueError::new_err(format!(
+                "an image resolution from {MIN_IMAGE} to {MAX_IMAGE} pixels, not {resolution}"
+            )));
+        }
+        let Some(image) = self.view.camera_image(&self.trials, resolution) else {
+            return Ok(None);
+        };
+        PyArray1::from_vec(py, image)
+            .reshape([resolution, resolution])
+            .map(Some)
+    }
+
+    /// The camera's position (world, mm) as it is now.
+    #[getter]
+    fn camera_mm<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        let camera = self.trials.sim().camera_pose().translation.vector * MM_PER_M;
+        PyArray1::from_slice(py, camera.as_slice())
+    }
+
+    /// The goal point of the trial (world, mm): where the camera is to be, a standoff above
+    /// the object; None when no trial was begun.
+    #[getter]
+    fn goal_mm<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray1<f64>>> {
+        let goal = self.trials.goal()?.coords * MM_PER_M;
+        Some(PyArray1::from_slice(py, goal.as_slice()))
     }
 
     /// The reading's bounds: (low, high) of cx, cy (pixels, the image's half size) and cz
@@ -229,6 +287,24 @@ impl Testbed {
     fn epsilon_mm(&self) -> f64 {
         self.trials.settings().epsilon * MM_PER_M
     }
+}
+
+/// The testbed's setup: the config file (or the default) with `entries`, `sim`, `camera`
+/// and `seed` set, and the arm of `urdf`, checked as a run checks them.
+pub fn run_setup(
+    config: Option<PathBuf>,
+    sim: &str,
+    camera: &str,
+    seed: u64,
+    urdf: Option<PathBuf>,
+    entries: Option<&Bound<'_, PyDict>>,
+) -> PyResult<RunSetup> {
+    let (mut config, _) = load_config(config.as_deref(), entries)?;
+    set_entry(&mut config, "sim", sim)?;
+    set_entry(&mut config, "camera", camera)?;
+    config.seed = seed;
+    let events = Event::of_run(&config, &[]);
+    RunSetup::new(config, urdf.as_deref(), events, &Sources::default()).map_err(value_error)
 }
 
 /// Runs `body` with `learner` as a Rust learner: a built-in `eyehand.Learner` directly,

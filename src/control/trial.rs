@@ -368,6 +368,18 @@ impl TrialLoop {
         Some((self.sim.camera_pose().translation.vector - goal.coords).norm() * MM_PER_M)
     }
 
+    /// The goal point of the trial going on (world, m): where the camera is to be, a
+    /// standoff above the object; `None` when no trial was begun.
+    pub fn goal(&self) -> Option<Point3<f64>> {
+        self.active.map(|t| t.goal)
+    }
+
+    /// The object's centre of the trial going on (world, m); `None` when no trial was
+    /// begun.
+    pub fn object(&self) -> Option<Point3<f64>> {
+        self.active.map(|t| t.object)
+    }
+
     /// The control loop's settings.
     pub fn settings(&self) -> &TrialSettings {
         &self.settings

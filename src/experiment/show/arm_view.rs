@@ -66,12 +66,24 @@ impl ArmView {
     }
 }
 
-type Area<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
+/// A drawing area of a bitmap, in a file or in memory.
+pub(super) type Area<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
 
 /// Draws the trial's poses into `path` under `title`.
 pub fn write_arm_image(path: &Path, trace: &TrialTrace, title: &str) -> Result<(), String> {
     register_font()?;
     let root = BitMapBackend::new(path, ARM_IMAGE_SIZE).into_drawing_area();
+    draw_arm_image(&root, trace, title)?;
+    root.present().map_err(|e| e.to_string())
+}
+
+/// Draws the trial's poses under `title` on `root` (of [`ARM_IMAGE_SIZE`]).
+pub(super) fn draw_arm_image(
+    root: &Area<'_>,
+    trace: &TrialTrace,
+    title: &str,
+) -> Result<(), String> {
+    let root = root.clone();
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     text(&root, title, (20, 18), 18)?;
     for view in [ArmView::Side, ArmView::Top] {
@@ -96,8 +108,7 @@ pub fn write_arm_image(path: &Path, trace: &TrialTrace, title: &str) -> Result<(
     let bottom = ARM_IMAGE_SIZE.1 as i32;
     text(&root, &events, (20, bottom - 78), 15)?;
     text(&root, &changes, (20, bottom - 54), 15)?;
-    text(&root, legend, (20, bottom - 30), 15)?;
-    root.present().map_err(|e| e.to_string())
+    text(&root, legend, (20, bottom - 30), 15)
 }
 
 fn text(root: &Area<'_>, line: &str, at: (i32, i32), size: u32) -> Result<(), String> {

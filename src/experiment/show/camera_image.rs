@@ -8,6 +8,7 @@
 //! so the blob's pixels stay exactly what the camera saw. Where the camera does not see the
 //! object (its reading fails), the image shows the scene alone.
 
+use super::arm_view::Area;
 use super::tracer::Look;
 use crate::camera::{CameraModel, PixelCoverage, RaycastCamera, Scene};
 use crate::experiment::plot::{register_font, FAMILY};
@@ -49,7 +50,46 @@ pub fn camera_image_png(
     scene: &dyn Scene,
     caption: &[String],
 ) -> Result<Vec<u8>, String> {
+    register_font()?;
+    let size = camera_image_size(camera);
+    let mut rgb = vec![0; (size.0 * size.1 * 3) as usize];
+    let root = BitMapBackend::with_buffer(&mut rgb, size).into_drawing_area();
+    draw_camera_image(&root, look, camera, resolution, scene, caption)?;
+    root.present().map_err(|e| e.to_string())?;
+    drop(root);
+    encode_png(&rgb, size).map_err(|e| e.to_string())
+}
+
+/// An 8-bit RGB image of `size` (px) as the bytes of a PNG file.
+fn encode_png(rgb: &[u8], size: (u32, u32)) -> Result<Vec<u8>, png::EncodingError> {
+    let mut bytes = Vec::new();
+    let mut encoder = png::Encoder::new(&mut bytes, size.0, size.1);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.set_compression(png::Compression::Best);
+    encoder.set_adaptive_filter(png::AdaptiveFilterType::Adaptive);
+    let mut writer = encoder.write_header()?;
+    writer.write_image_data(rgb)?;
+    writer.finish()?;
+    Ok(bytes)
+}
+
+/// The size (px) of a camera image with its caption strip.
+pub(super) fn camera_image_size(camera: &CameraModel) -> (u32, u32) {
     let (width, height) = (camera.width.round() as u32, camera.height.round() as u32);
+    (width, height + CAPTION_HEIGHT)
+}
+
+/// The grey levels (row by row) of a `size` image of what the camera with a `resolution`
+/// grid sees at `look` in `scene`: the scene alone, and the scene with the target sphere
+/// where it is seen.
+pub fn camera_greys(
+    look: &Look,
+    camera: &CameraModel,
+    resolution: usize,
+    scene: &dyn Scene,
+    (width, height): (u32, u32),
+) -> (Vec<u8>, Vec<u8>) {
     let rays = RaycastCamera::new(*camera, resolution);
     let n = rays.resolution();
     let mut background = vec![BACKGROUND_GREY; (width * height) as usize];
@@ -69,10 +109,21 @@ pub fn camera_image_png(
         let blob = rays.render_in(&look.camera_pose, &look.object, scene);
         paint_blob(&mut image, n, &blob, (width, height));
     }
-    register_font()?;
-    let size = (width, height + CAPTION_HEIGHT);
-    let mut rgb = vec![0; (size.0 * size.1 * 3) as usize];
-    let root = BitMapBackend::with_buffer(&mut rgb, size).into_drawing_area();
+    (background, image)
+}
+
+/// Draws the image seen at `look` with `caption` under it on `root` (of
+/// [`camera_image_size`]).
+pub(super) fn draw_camera_image(
+    root: &Area<'_>,
+    look: &Look,
+    camera: &CameraModel,
+    resolution: usize,
+    scene: &dyn Scene,
+    caption: &[String],
+) -> Result<(), String> {
+    let (width, height) = (camera.width.round() as u32, camera.height.round() as u32);
+    let (background, image) = camera_greys(look, camera, resolution, scene, (width, height));
     let e = |e: DrawingAreaErrorKind<_>| e.to_string();
     root.fill(&RGBColor(BACKGROUND_GREY, BACKGROUND_GREY, BACKGROUND_GREY))
         .map_err(e)?;
@@ -122,23 +173,7 @@ pub fn camera_image_png(
         ))
         .map_err(e)?;
     }
-    root.present().map_err(e)?;
-    drop(root);
-    encode_png(&rgb, size).map_err(|e| e.to_string())
-}
-
-/// An 8-bit RGB image of `size` (px) as the bytes of a PNG file.
-fn encode_png(rgb: &[u8], size: (u32, u32)) -> Result<Vec<u8>, png::EncodingError> {
-    let mut bytes = Vec::new();
-    let mut encoder = png::Encoder::new(&mut bytes, size.0, size.1);
-    encoder.set_color(png::ColorType::Rgb);
-    encoder.set_depth(png::BitDepth::Eight);
-    encoder.set_compression(png::Compression::Best);
-    encoder.set_adaptive_filter(png::AdaptiveFilterType::Adaptive);
-    let mut writer = encoder.write_header()?;
-    writer.write_image_data(rgb)?;
-    writer.finish()?;
-    Ok(bytes)
+    Ok(())
 }
 
 /// The grey level of every pixel of a `width`×`height` image in which the camera with a

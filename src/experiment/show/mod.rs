@@ -6,6 +6,7 @@
 mod arm_view;
 mod camera_image;
 mod divergence;
+mod frame;
 mod recorded_run;
 mod replay;
 mod replay_bar;
@@ -19,8 +20,10 @@ pub use arm_view::{
 #[cfg(feature = "rerun")]
 pub(crate) use camera_image::blob_mask;
 pub use camera_image::{
-    camera_image_png, write_camera_image, BACKGROUND_GREY, CAPTION_HEIGHT, CENTRE_MARK, OBJECT_GREY,
+    camera_greys, camera_image_png, write_camera_image, BACKGROUND_GREY, CAPTION_HEIGHT,
+    CENTRE_MARK, OBJECT_GREY,
 };
+pub use frame::{draw_frame, frame_size, FrameView, RgbFrame};
 pub use recorded_run::RecordedRun;
 pub use replay::{replay, TrialTrace};
 pub use tracer::Look;

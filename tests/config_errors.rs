@@ -197,7 +197,7 @@ fn bad_values_and_bad_lines_are_reported() {
             TooMuchMemory,
         ),
         ("issgp_features", "issgp_features 0", OutOfRange),
-        ("issgp_features", "issgp_features -5", BadValue),
+        ("issgp_features", "issgp_features -5", OutOfRange),
         ("issgp_noise", "issgp_noise -0.1", OutOfRange),
         ("issgp_noise", "issgp_noise 0", OutOfRange),
         ("issgp_signal", "issgp_signal 0", OutOfRange),

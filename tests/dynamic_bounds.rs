@@ -14,7 +14,7 @@ fn weak_arm() -> String {
 }
 
 fn heavy_arm() -> String {
-    DEFAULT_URDF.replacen(r#"<mass value="8.0"/>"#, r#"<mass value="1e9"/>"#, 1)
+    DEFAULT_URDF.replacen(r#"<mass value="8.0"/>"#, r#"<mass value="1e5"/>"#, 1)
 }
 
 #[test]

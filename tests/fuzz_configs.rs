@@ -19,6 +19,10 @@ const CASES: usize = 160;
 /// Trials of a kinematic run, and of a dynamic one.
 const TRIALS: usize = 20;
 const DYNAMIC_TRIALS: usize = 6;
+/// Trials of an `mlp` or `ffn` run: their entries may set a trial's learning up to the
+/// cost bound (about 10⁹ multiply-adds for mlp, a second or two here), which 20 trials of
+/// would take past [`RUN_BOUND`] without hanging.
+const COSTLY_TRIALS: usize = 8;
 /// The longest a short run may take.
 const RUN_BOUND: Duration = Duration::from_secs(30);
 
@@ -78,7 +82,12 @@ fn config_with(declaration: &Declaration, value: &str) -> Option<Config> {
     let mut config = Config::default_config();
     config.trials = TRIALS;
     match declaration.scope {
-        Scope::Methods(methods) => config.method = methods[0],
+        Scope::Methods(methods) => {
+            config.method = methods[0];
+            if matches!(config.method, Method::Mlp | Method::Ffn) {
+                config.trials = COSTLY_TRIALS;
+            }
+        }
         Scope::Sim(SimKind::Dynamic) => {
             config.sim = SimKind::Dynamic;
             config.trials = DYNAMIC_TRIALS;

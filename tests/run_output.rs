@@ -193,7 +193,7 @@ fn fk_prints_the_camera_centre_as_json() {
 }
 
 #[test]
-fn verbose_output_prints_the_tree_every_depth_info_trials() {
+fn verbose_output_writes_the_tree_every_depth_info_trials_to_a_file_off_a_terminal() {
     let data = tempfile::tempdir().unwrap();
     let run = |verbose: &str| {
         Command::new(env!("CARGO_BIN_EXE_eyehand"))
@@ -214,15 +214,31 @@ fn verbose_output_prints_the_tree_every_depth_info_trials() {
             .unwrap()
     };
     let out = run("1");
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    let lines: Vec<&str> = stderr.lines().filter(|l| l.starts_with("trial ")).collect();
-    assert_eq!(lines.len(), 4, "{stderr}");
+    assert!(
+        String::from_utf8_lossy(&out.stderr).is_empty(),
+        "not on a terminal: no lines"
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let folder = Path::new(stdout.lines().next().unwrap());
+    let written = std::fs::read_to_string(folder.join("tree_lines")).unwrap();
+    let lines: Vec<&str> = written
+        .lines()
+        .filter(|l| l.starts_with("trial "))
+        .collect();
+    assert_eq!(lines.len(), 4, "{written}");
     assert!(
         lines[3].starts_with("trial 40: ") && lines[3].contains(" d0: 1 nodes"),
         "{}",
         lines[3]
     );
-    assert!(String::from_utf8_lossy(&run("0").stderr).is_empty());
+    let quiet = run("0");
+    assert!(String::from_utf8_lossy(&quiet.stderr).is_empty());
+    let stdout = String::from_utf8_lossy(&quiet.stdout);
+    let folder = Path::new(stdout.lines().next().unwrap());
+    assert!(
+        !folder.join("tree_lines").exists(),
+        "without verbose_output"
+    );
 }
 
 #[test]
@@ -258,7 +274,7 @@ fn failures_are_counted_by_reason_and_a_learner_without_a_tree_prints_none() {
             "--method",
             "kohonen",
             "--trials",
-            "300",
+            "500",
             "--no-plot",
             "--data",
         ])

@@ -21,7 +21,7 @@ pub enum MeshPathError {
 ///
 /// `package://NAME/REST` is tried as `SEARCH/NAME/REST` for every search path, then as
 /// `SEARCH/REST` for a search path that is itself the package folder NAME, then in the
-/// package folder found in the URDF's folder tree ([`package_in_tree`]); the file must
+/// package folder found in the URDF's folder tree (`package_in_tree`); the file must
 /// stay inside that search folder (after resolving `..` and symbolic links). Any other name
 /// must lead inside the URDF's folder or one of the search paths. The first candidate at
 /// which something is must be a regular file.

@@ -208,13 +208,17 @@ fn compact(v: f64) -> String {
 }
 
 /// The palette lines are drawn in, one colour per series.
-pub(super) const PALETTE: [RGBColor; 6] = [
+pub(super) const PALETTE: [RGBColor; 10] = [
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
     RGBColor(148, 103, 189),
     RGBColor(140, 86, 75),
     RGBColor(23, 190, 207),
+    RGBColor(227, 119, 194),
+    RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
+    RGBColor(214, 39, 40),
 ];
 
 #[cfg(test)]

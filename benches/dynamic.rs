@@ -16,8 +16,7 @@ use eyehand::experiment::setup::{build_learner, dynamic_settings, trial_settings
 use eyehand::experiment::{Config, SimKind, StepFigures};
 use eyehand::learn::Method;
 use eyehand::robot::{
-    ArmModel, Controlled, Drive, DynamicSettings, DynamicSim, Engine, FreeArm, Joints,
-    KinematicSim, Simulator,
+    ArmModel, Controlled, DynamicSettings, DynamicSim, Engine, KinematicSim, Simulator,
 };
 use nalgebra::{Point3, Vector3};
 use std::time::Instant;
@@ -219,24 +218,8 @@ fn each(measure: impl Fn(Engine) -> String) -> [String; 2] {
 /// The relative energy drift of a 20 s undamped swing at 5 ms on `engine`, as a share of
 /// its peak kinetic energy.
 fn energy_drift(engine: Engine) -> f64 {
-    let start = Joints::from_slice(&[0.0, 30.0, 20.0, 0.0, 40.0, 0.0]).map(f64::to_radians);
-    let settings = mujoco::with_dt(5e-3, engine);
-    let mut arm = FreeArm::new(
-        ArmModel::oscar6(),
-        &start,
-        settings,
-        Drive::Passive,
-        false,
-        false,
-    )
-    .expect("a finite start");
-    let first = arm.energy().total();
-    let mut peak = 0.0f64;
-    while arm.time() < 20.0 - 1e-9 {
-        arm.step();
-        peak = peak.max(arm.energy().kinetic);
-    }
-    (arm.energy().total() - first) / peak
+    let (change, peak) = mujoco::undamped_swing_energy(engine);
+    change / peak
 }
 
 /// Each arm against MuJoCo 4.0 (RK4, 0.1 ms) on the same URDF, on both engines.

@@ -199,3 +199,26 @@ pub fn trace_gaps(
         settle_ticks: (settle(&ours), settle(&theirs)),
     }
 }
+
+/// A 20 s undamped swing of the OSCAR-6 at 5 ms on `engine` from a bent pose: its change of
+/// total energy from start to end (J) and its peak kinetic energy (J).
+pub fn undamped_swing_energy(engine: Engine) -> (f64, f64) {
+    let start = Joints::from_slice(&[0.0, 30.0, 20.0, 0.0, 40.0, 0.0]).map(f64::to_radians);
+    let settings = with_dt(5e-3, engine);
+    let mut arm = FreeArm::new(
+        ArmModel::oscar6(),
+        &start,
+        settings,
+        Drive::Passive,
+        false,
+        false,
+    )
+    .expect("a finite start");
+    let first = arm.energy().total();
+    let mut peak = 0.0f64;
+    while arm.time() < 20.0 - 1e-9 {
+        arm.step();
+        peak = peak.max(arm.energy().kinetic);
+    }
+    (arm.energy().total() - first, peak)
+}

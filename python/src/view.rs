@@ -56,15 +56,7 @@ impl EpisodeView {
             trial: self.episodes,
             looks: self.looks.clone(),
             ticks: Vec::new(),
-            outcome: TrialOutcome {
-                distances_mm: Vec::new(),
-                failure: None,
-                reached: false,
-                seconds: 0.0,
-                moved_deg: 0.0,
-                proposed_deg: 0.0,
-                start_distance_mm: None,
-            },
+            outcome: TrialOutcome::default(),
             model: trials.sim().model().clone(),
             events: Vec::new(),
         };

@@ -53,8 +53,8 @@ pub enum Failure {
     NonFiniteMove,
 }
 
-/// What a trial did.
-#[derive(Debug, Clone, PartialEq)]
+/// What a trial did (`Default`: nothing yet, no distance, no failure).
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct TrialOutcome {
     /// Distance to the target (mm) after each feedback step taken.
     pub distances_mm: Vec<f64>,
@@ -187,12 +187,7 @@ impl TrialLoop {
     ) -> Result<TrialOutcome, LearnError> {
         let mut outcome = TrialOutcome {
             distances_mm: Vec::with_capacity(self.settings.feedback_steps),
-            failure: None,
-            reached: false,
-            seconds: 0.0,
-            moved_deg: 0.0,
-            proposed_deg: 0.0,
-            start_distance_mm: None,
+            ..TrialOutcome::default()
         };
         let mut here = match self.begin_trial() {
             Ok(start) => start,

@@ -2,7 +2,8 @@
 //! rule the reach space is fitted by, and `reach` reports its target poses by.
 
 use super::clearance::ArmGeometry;
-use super::collision::{body_elements, lowest_point, Elements};
+use super::collision::{body_elements, Elements};
+use super::floor::lowest_point;
 use crate::robot::{ArmModel, ArmPose};
 
 /// How far (m) every link must stay from the floor and from the links it may touch for a

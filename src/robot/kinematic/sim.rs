@@ -3,7 +3,8 @@
 
 use super::motion::{last_holding, limit_stop_fraction, TrapezoidProfile};
 use crate::robot::contact::clearance::ArmGeometry;
-use crate::robot::contact::collision::{body_elements, FloorRule, MoveStart};
+use crate::robot::contact::collision::{body_elements, MoveStart};
+use crate::robot::contact::floor::FloorRule;
 use crate::robot::contact::world::{Obstacle, WorldView, SEEN_BODIES};
 use crate::robot::dynamic::compound;
 use crate::robot::Joints;

@@ -97,10 +97,10 @@ fn learning_table() {
     let data = tempfile::tempdir().expect("a scratch folder");
     for (name, arm) in LEARNING_ARMS {
         let (config, urdf) = arm_config(arm.as_ref(), TRIALS, "kinematic");
-        let model = load_arm(&config, urdf.as_deref())
+        let mut model = load_arm(&config, urdf.as_deref())
             .expect("the arm loads")
             .model;
-        let reach = reach_space(&config, &model).expect("a reach space");
+        let reach = reach_space(&config, &mut model).expect("a reach space");
         let covered = reachable_points(&model, &reach, REACH_SAMPLES) as f64 / REACH_SAMPLES as f64;
         let (warm, cold) = wrist_costs(&model);
         let wrist = match *model.wrist() {

@@ -65,17 +65,17 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
     }
     let loaded = load_arm(&config, args.urdf.as_deref()).map_err(bad_input)?;
     let camera = loaded.camera.clone();
-    let model = warned(loaded);
+    let mut model = warned(loaded);
     let mut report = arm_lines(&model);
     let _ = writeln!(report, "camera link          {camera}");
     // Fitted once, and only for `auto`.
     let fit = match config.reach_space {
-        ReachSetting::Auto => Some(fit_reach(&config, &model)),
+        ReachSetting::Auto => Some(fit_reach(&config, &mut model)),
         ReachSetting::Given(_) => None,
     };
-    let space = match fit {
-        Some(fit) => fit.map(|fit| fit.space),
-        None => reach_space(&config, &model),
+    let space = match &fit {
+        Some(fit) => fit.as_ref().map(|fit| fit.space).map_err(|why| *why),
+        None => reach_space(&config, &mut model),
     }
     .map_err(|why| {
         // What was chosen is printed before why no space fits it.

@@ -147,8 +147,8 @@ pub fn arm_entry(error: &DescriptionError) -> Option<&'static str> {
 }
 
 /// The reach space `reach_space` gives (cm), or the one fitted to `model` for `auto`
-/// (when nothing fits: why not).
-pub fn reach_space(config: &Config, model: &ArmModel) -> Result<ReachSpace, ReachFitFailure> {
+/// (when nothing fits: why not), `model` then keeping to the branch it was fitted on.
+pub fn reach_space(config: &Config, model: &mut ArmModel) -> Result<ReachSpace, ReachFitFailure> {
     match config.reach_space {
         ReachSetting::Given([r_min, r_max, z_min, z_max]) => Ok(ReachSpace {
             r_min: r_min / 100.0,
@@ -161,14 +161,17 @@ pub fn reach_space(config: &Config, model: &ArmModel) -> Result<ReachSpace, Reac
 }
 
 /// The reach space fitted to `model` above the config's floor, targets hanging the
-/// camera's standoff and the sphere's radius below the camera.
-pub fn fit_reach(config: &Config, model: &ArmModel) -> Result<ReachFit, ReachFitFailure> {
+/// camera's standoff and the sphere's radius below the camera; `model` keeps to the branch
+/// of its solutions the space was fitted on.
+pub fn fit_reach(config: &Config, model: &mut ArmModel) -> Result<ReachFit, ReachFitFailure> {
     let camera = CameraModel::default();
-    ReachSpace::fit(
+    let fit = ReachSpace::fit(
         model,
         config.floor_z * M_PER_CM,
         camera.object_bottom_below(),
-    )
+    )?;
+    model.keep_branch(fit.branch.clone());
+    Ok(fit)
 }
 
 /// How far the fitted boundaries of θ2 and θ3 reach beyond the angles met (degrees).

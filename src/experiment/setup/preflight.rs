@@ -172,10 +172,11 @@ pub fn target_poses_in_contact(
 }
 
 /// Checks `config`, `events` (sorted by trial) and the arm before a run starts, and
-/// returns the run's reach space (given, or fitted to the arm).
+/// returns the run's reach space (given, or fitted to the arm: `model` then keeps to the
+/// branch of its solutions the space was fitted on).
 pub fn preflight(
     config: &Config,
-    model: &ArmModel,
+    model: &mut ArmModel,
     events: &[Event],
 ) -> Result<ReachSpace, PreflightError> {
     config.check()?;
@@ -241,7 +242,7 @@ mod tests {
             link: 1,
             cm: 1e9,
         };
-        let err = preflight(&config, &ArmModel::oscar6(), &[far]).unwrap_err();
+        let err = preflight(&config, &mut ArmModel::oscar6(), &[far]).unwrap_err();
         assert_eq!(
             err,
             PreflightError::Unreachable {
@@ -256,7 +257,7 @@ mod tests {
             link: 2,
             cm: -60.0,
         };
-        let err = preflight(&config, &ArmModel::oscar6(), &[gone]).unwrap_err();
+        let err = preflight(&config, &mut ArmModel::oscar6(), &[gone]).unwrap_err();
         assert!(matches!(
             err,
             PreflightError::Event {
@@ -274,7 +275,7 @@ mod tests {
             trial: 5000,
             degrees: 30.0,
         };
-        let err = preflight(&config, &ArmModel::oscar6(), &[late]).unwrap_err();
+        let err = preflight(&config, &mut ArmModel::oscar6(), &[late]).unwrap_err();
         assert!(matches!(
             err,
             PreflightError::Config(ConfigErrorKind::EventAfterLastTrial {

@@ -57,6 +57,27 @@ fn fit_boundaries_to_arm(
     Ok(config.check()?)
 }
 
+/// The upper boundary of cz (the reading from the blob's area) sized to `reach` where the
+/// config left both of cz's boundaries at their defaults (the OSCAR-6's): cz follows the
+/// camera's height over the object, which varies over a reach space by its height, so the
+/// study's bound is scaled by this space's height over the study's; the config checked
+/// again.
+fn size_readings_to_arm(
+    config: &mut Config,
+    sources: &mut Sources,
+    reach: &ReachSpace,
+) -> Result<(), PreflightError> {
+    let at_default = |name: &&str| config.source_of(name, sources) == Source::Default;
+    if !["boundary_4_low", "boundary_4_high"].iter().all(at_default) {
+        return Ok(());
+    }
+    let study = ReachSpace::OSCAR6;
+    let share = (reach.z_max - reach.z_min) / (study.z_max - study.z_min);
+    config.boundary_4_high = (config.boundary_4_high * share).round();
+    sources.record("boundary_4_high", Source::Fitted);
+    Ok(config.check()?)
+}
+
 /// A run's parts, checked and fitted once: what every run-making command builds from.
 #[derive(Debug, Clone)]
 pub struct RunSetup {
@@ -82,7 +103,8 @@ impl RunSetup {
     /// arm entry the URDF contradicts is reported where its value came from (`file:line`,
     /// `--set`, …, by `sources`). On a URDF other than the shipped OSCAR-6, the entries
     /// left at their defaults that describe the OSCAR-6 are fitted to the arm instead:
-    /// `reach_space` (to `auto`) and the boundaries of θ2 and θ3 ([`fitted_boundaries`]).
+    /// `reach_space` (to `auto`), the boundaries of θ2 and θ3 ([`fitted_boundaries`]) and
+    /// the upper boundary of cz (scaled by the reach space's height).
     pub fn new(
         mut config: Config,
         urdf: Option<&Path>,
@@ -96,7 +118,7 @@ impl RunSetup {
         }
         let urdf = config.urdf.0.clone();
         let urdf = urdf.as_deref();
-        let arm = load_arm(&config, urdf).map_err(|source| match arm_entry(&source) {
+        let mut arm = load_arm(&config, urdf).map_err(|source| match arm_entry(&source) {
             Some(entry) => RunError::ArmEntry {
                 at: config.source_of(entry, &sources).to_string(),
                 entry,
@@ -107,9 +129,10 @@ impl RunSetup {
         if urdf.is_some() {
             fit_reach_space_to_arm(&mut config, &mut sources);
         }
-        let reach = preflight(&config, &arm.model, &events)?;
+        let reach = preflight(&config, &mut arm.model, &events)?;
         if urdf.is_some() {
             fit_boundaries_to_arm(&mut config, &mut sources, &arm.model, &reach)?;
+            size_readings_to_arm(&mut config, &mut sources, &reach)?;
         }
         Ok(RunSetup {
             config,

@@ -1,7 +1,9 @@
-//! Inverse kinematics of the camera centre: the elbow-up pose (θ1, θ2, θ3) that puts the
-//! camera at a point with its optical axis vertical. A closed-form guess from the model's
-//! link vectors is polished by Newton steps on the full forward kinematics, so the answer
-//! is exact for whatever the model is now (stretched links included). The link lengths the
+//! Inverse kinematics of the camera centre: the pose (θ1, θ2, θ3) that puts the camera at
+//! a point with its optical axis vertical — elbow up on the OSCAR-6 form, on the branch of
+//! its solutions the arm keeps to ([`Branch`](super::Branch)) on any other. A closed-form
+//! guess from the model's link vectors is polished by Newton steps on the full forward
+//! kinematics, so the answer is exact for whatever the model is now (stretched links
+//! included). The link lengths the
 //! guess needs are worked out once per change of the model ([`GuessGeometry`]), and each
 //! Newton step walks the chain once per pose it evaluates.
 
@@ -26,9 +28,6 @@ pub(super) struct GuessGeometry {
     upper: f64,
     fore: f64,
     camera_offset: Vector3<f64>,
-    /// The bearing of the wrist centre with the base yaw at 0, the shoulder and elbow at
-    /// the middle of their limits (rad): where the arm reaches at yaw 0.
-    heading: f64,
 }
 
 impl GuessGeometry {
@@ -43,22 +42,20 @@ impl GuessGeometry {
         let posed = model.full_pose(&model.controlled_of(&model.rest()));
         let camera_offset =
             model.camera_position(&posed).coords - model.link_frames(&posed)[w].translation.vector;
-        let middle = |j: usize| model.joints()[j].middle();
-        let reference = model.with_learned(&Controlled::new(0.0, middle(s), middle(e)));
-        let reached = model.link_frames(&reference)[w].translation.vector;
         GuessGeometry {
             shoulder,
             upper,
             fore,
             camera_offset,
-            heading: reached.y.atan2(reached.x),
         }
     }
 }
 
 impl ArmModel {
-    /// The elbow-up pose that puts the camera centre at `target` (world, m), inside the
-    /// joint limits, or why there is none.
+    /// The pose that puts the camera centre at `target` (world, m), inside the joint
+    /// limits, elbow up on the OSCAR-6 form and on the arm's branch on any other (a
+    /// shoulder or elbow that turns all the way round at its angle in the branch's turn),
+    /// or why there is none.
     pub fn solve_camera_position(&self, target: &Point3<f64>) -> Result<Controlled, RobotError> {
         let unreachable = |why: &str| RobotError::Unreachable {
             x_cm: target.x * 100.0,
@@ -118,12 +115,15 @@ impl ArmModel {
             let here = camera_centre(&pose);
             let residual = here - target;
             if residual.norm() < TOLERANCE_M {
-                if !self.elbow_up_in(&pose.level_frames, theta.x) {
-                    return Err("only an elbow-down pose reaches it".into());
+                if self.is_oscar6_form() {
+                    if !self.elbow_up_in(&pose.level_frames, theta.x) {
+                        return Err("only an elbow-down pose reaches it".into());
+                    }
+                    self.check_joint_limits(&pose.joints)
+                        .map_err(|e| e.to_string())?;
+                    return Ok(theta);
                 }
-                self.check_joint_limits(&pose.joints)
-                    .map_err(|e| e.to_string())?;
-                return Ok(theta);
+                return self.on_branch(theta, &pose);
             }
             let jacobian = self
                 .followed_jacobian(&pose.joints)
@@ -149,13 +149,14 @@ impl ArmModel {
             lower + (upper - lower) * f
         };
         let bearing = target.y.atan2(target.x);
+        let sense = super::ik_seeds::yaw_sense(self);
         let yaw_limits = (yaw_joint.lower, yaw_joint.upper);
         SEED_FRACTIONS.iter().flat_map(move |&fs| {
             SEED_FRACTIONS.iter().filter_map(move |&fe| {
                 let theta = Controlled::new(0.0, within(s, fs), within(e, fe));
                 let pose = self.pose_of(&theta);
                 let p = camera_centre(&pose);
-                let mut yaw = bearing - p.y.atan2(p.x);
+                let mut yaw = (bearing - p.y.atan2(p.x)) * sense;
                 for turn in [0.0, TAU, -TAU] {
                     if (yaw_limits.0..=yaw_limits.1).contains(&(yaw + turn)) {
                         yaw += turn;
@@ -186,18 +187,15 @@ impl ArmModel {
         jacobian
     }
 
-    /// True when the elbow lies above the shoulder–wrist line.
+    /// True when the elbow lies above the shoulder–wrist line (the OSCAR-6's rule; the arm's
+    /// plane turns with the base yaw).
     pub fn is_elbow_up(&self, theta: &Controlled) -> bool {
         let frames = self.link_frames(&self.with_learned(theta));
         self.elbow_up_in(&frames, theta.x)
     }
 
     /// True when the elbow lies above the shoulder–wrist line, from the joint frames with
-    /// the wrist at rest. For the OSCAR-6 form the arm's plane turns with the base yaw; for
-    /// any other arm the plane turns with it from the direction the arm reaches in at the
-    /// middle of its limits (whatever the base's zero direction), and the wrist must lie
-    /// in front of the base axis in that plane (an arm reaching back over its shoulder is a
-    /// second branch of the mapping).
+    /// the wrist at rest, the arm's plane turned with the base yaw: the OSCAR-6's rule.
     fn elbow_up_in(&self, frames: &Frames, yaw: f64) -> bool {
         let [_, s, e] = self.learned();
         let (shoulder, elbow, wrist) = (
@@ -205,12 +203,73 @@ impl ArmModel {
             frames[e].translation.vector,
             frames[wrist_joint(self)].translation.vector,
         );
+        elbow_up(shoulder, elbow, wrist, yaw)
+    }
+
+    /// True when `theta` is a pose the inverse kinematics answers with: elbow up on the
+    /// OSCAR-6 form; on any other, on the arm's branch of its solutions, with its wrist
+    /// found.
+    pub fn is_on_branch(&self, theta: &Controlled) -> bool {
         if self.is_oscar6_form() {
-            return elbow_up(shoulder, elbow, wrist, yaw);
+            return self.is_elbow_up(theta);
         }
-        let heading = yaw + self.guess_geometry().heading;
-        let in_front = wrist.x * heading.cos() + wrist.y * heading.sin() > 0.0;
-        in_front && elbow_up(shoulder, elbow, wrist, heading)
+        let pose = self.pose_of(theta);
+        pose.wrist_found && self.branch_holds(theta, &pose)
+    }
+
+    /// `theta`, which reaches its target at `pose`, as the answer on an arm not of the
+    /// OSCAR-6 form: its base yaw within half a turn of the one that faces the tabled poses
+    /// to the base's x axis where the limits allow, its
+    /// shoulder and elbow taken into the branch's turn, inside the limits and on the
+    /// branch; or why not.
+    fn on_branch(&self, mut theta: Controlled, pose: &ArmPose) -> Result<Controlled, String> {
+        let mut joints = pose.joints;
+        let yaw = self.learned()[0];
+        let low = self.ik_seeds().yaw_middle() - std::f64::consts::PI;
+        let turned = low + (theta.x - low).rem_euclid(TAU);
+        for shifted in [turned, turned - TAU, turned + TAU] {
+            if self.joints()[yaw].admits(shifted) {
+                theta.x = shifted;
+                joints[yaw] = shifted;
+                break;
+            }
+        }
+        if let Some(branch) = &self.branch {
+            let [_, s, e] = self.learned();
+            for (i, j) in [(1, s), (2, e)] {
+                let wrapped = branch.wrapped(i - 1, theta[i]);
+                if self.joints()[j].admits(wrapped) {
+                    theta[i] = wrapped;
+                    joints[j] = wrapped;
+                }
+            }
+        }
+        self.check_joint_limits(&joints)
+            .map_err(|e| e.to_string())?;
+        if !self.branch_holds(&theta, pose) {
+            return Err("only a pose on another branch of the arm's solutions reaches it".into());
+        }
+        Ok(theta)
+    }
+
+    /// True when `theta` (its pose `pose`) lies on the arm's branch: its shoulder and elbow
+    /// in the branch's cells, and ∂(r, z)/∂(θ2, θ3) of the sign it has there.
+    fn branch_holds(&self, theta: &Controlled, pose: &ArmPose) -> bool {
+        let Some(branch) = &self.branch else {
+            return false;
+        };
+        let here = camera_centre(pose).coords;
+        let jacobian = self
+            .followed_jacobian(&pose.joints)
+            .unwrap_or_else(|| self.position_jacobian(theta, &here, &pose.joints));
+        let radius = here.x.hypot(here.y);
+        if radius == 0.0 {
+            return false;
+        }
+        let out = Vector3::new(here.x / radius, here.y / radius, 0.0);
+        let (dr2, dr3) = (out.dot(&jacobian.column(1)), out.dot(&jacobian.column(2)));
+        let det = dr2 * jacobian[(2, 2)] - jacobian[(2, 1)] * dr3;
+        branch.holds_with(theta.y, theta.z, det)
     }
 
     /// A closed-form guess for a Puma-like arm: yaw towards the target, then the
@@ -259,7 +318,7 @@ fn wrist_joint(model: &ArmModel) -> usize {
 
 /// How telling a reason for failing is: a pose found but refused beats none found.
 fn failure_rank(why: &str) -> u8 {
-    u8::from(why.contains("elbow-down") || why.contains("limits"))
+    u8::from(why.contains("elbow-down") || why.contains("branch") || why.contains("limits"))
 }
 
 /// True when the elbow lies above the shoulder–wrist line (world points, the arm's plane

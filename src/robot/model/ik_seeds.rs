@@ -23,12 +23,18 @@ struct Seed {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub(super) struct IkSeeds {
     seeds: Vec<Seed>,
+    /// The base yaw (rad) that turns the tabled poses, on average, to face the base's x
+    /// axis, where reach spaces lie.
+    yaw_middle: f64,
 }
 
 impl IkSeeds {
-    /// The elbow-up poses of a grid over the shoulder and elbow limits (base yaw at rest)
-    /// whose wrist is solved inside its limits.
+    /// The poses of a grid over the shoulder and elbow limits (base yaw at rest) whose
+    /// wrist is solved inside its limits, on the branch the arm keeps to (none without one).
     pub(super) fn of(model: &ArmModel) -> IkSeeds {
+        let Some(branch) = model.branch() else {
+            return IkSeeds::default();
+        };
         let [yaw, s, e] = model.learned();
         let at = |j: usize, n: usize| {
             let (lower, upper) = model.joints()[j].one_turn();
@@ -39,7 +45,7 @@ impl IkSeeds {
             for k in 0..STEPS {
                 let theta = Controlled::new(model.rest()[yaw], at(s, i), at(e, k));
                 let pose = model.pose_of(&theta);
-                if model.wrist_fits(&pose) && model.is_elbow_up(&theta) {
+                if model.wrist_fits(&pose) && branch.holds(theta.y, theta.z) {
                     let p = pose.camera.translation.vector;
                     seeds.push(Seed {
                         radius: p.x.hypot(p.y),
@@ -50,7 +56,17 @@ impl IkSeeds {
                 }
             }
         }
-        IkSeeds { seeds }
+        let (sin, cos) = seeds.iter().fold((0.0, 0.0), |(sin, cos), seed| {
+            (sin + seed.bearing.sin(), cos + seed.bearing.cos())
+        });
+        let yaw_middle = model.rest()[yaw] - yaw_sense(model) * f64::atan2(sin, cos);
+        IkSeeds { seeds, yaw_middle }
+    }
+
+    /// The base yaw (rad) that turns the tabled poses, on average, to face the base's x
+    /// axis.
+    pub(super) fn yaw_middle(&self) -> f64 {
+        self.yaw_middle
     }
 
     /// The tabled pose nearest `target` in distance from the base axis and height, its
@@ -62,7 +78,8 @@ impl IkSeeds {
             gap(a).total_cmp(&gap(b))
         })?;
         let yaw_joint = &model.joints()[model.learned()[0]];
-        let mut yaw = seed.theta.x + target.y.atan2(target.x) - seed.bearing;
+        let turn = target.y.atan2(target.x) - seed.bearing;
+        let mut yaw = seed.theta.x + turn * yaw_sense(model);
         for turn in [0.0, TAU, -TAU] {
             if yaw_joint.admits(yaw + turn) {
                 yaw += turn;
@@ -71,4 +88,14 @@ impl IkSeeds {
         }
         Some(Controlled::new(yaw, seed.theta.y, seed.theta.z))
     }
+}
+
+/// +1 when the base yaw turns the arm anticlockwise seen from above (its axis points up at
+/// rest), −1 when its axis points down (a base frame upside down).
+pub(super) fn yaw_sense(model: &ArmModel) -> f64 {
+    let yaw = model.learned()[0];
+    let frame = model.link_frames(&model.rest())[yaw];
+    (frame.rotation * model.joints()[yaw].axis.into_inner())
+        .z
+        .signum()
 }

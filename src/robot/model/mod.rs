@@ -2,6 +2,7 @@
 //! the three learned joints, the wrist that keeps the optical axis vertical, link
 //! stretching and camera turning.
 
+mod branch;
 mod build;
 mod frames;
 pub(crate) mod ik;
@@ -10,6 +11,7 @@ mod joint;
 mod joint_vector;
 mod wrist;
 
+pub use branch::{Branch, PoseGrid};
 pub use build::{ArmSettings, CameraLink, LearnedJoints};
 pub use frames::Frames;
 pub use wrist::Wrist;
@@ -65,6 +67,9 @@ pub struct ArmModel {
     guess: GuessGeometry,
     /// Starting poses of the inverse kinematics of an arm not of the OSCAR-6 form.
     seeds: IkSeeds,
+    /// The branch of its solutions the inverse kinematics of an arm not of the OSCAR-6
+    /// form keeps to (`None` when no pose of the arm looks down).
+    branch: Option<Branch>,
 }
 
 impl ArmModel {
@@ -114,10 +119,15 @@ impl ArmModel {
             wrist: Wrist::None,
             guess: GuessGeometry::default(),
             seeds: IkSeeds::default(),
+            branch: None,
         };
         model.wrist = Wrist::choose(&model);
         model.rest = model.wrist.held_rest(&model);
         model.update_derived();
+        if !model.is_oscar6_form() {
+            model.branch = Branch::kinematic(&model);
+            model.seeds = IkSeeds::of(&model);
+        }
         Ok(model)
     }
 
@@ -131,6 +141,22 @@ impl ArmModel {
         if !self.is_oscar6_form() {
             self.seeds = IkSeeds::of(self);
         }
+    }
+
+    /// Keeps the inverse kinematics of an arm not of the OSCAR-6 form to `branch` (the one
+    /// its reach space was fitted on, [`ReachFit::branch`](crate::robot::ReachFit)); the
+    /// OSCAR-6 form keeps its elbow up.
+    pub fn keep_branch(&mut self, branch: Branch) {
+        self.branch = Some(branch);
+        if !self.is_oscar6_form() {
+            self.seeds = IkSeeds::of(self);
+        }
+    }
+
+    /// The branch of its solutions the inverse kinematics keeps to (see
+    /// [`keep_branch`](Self::keep_branch)).
+    pub fn branch(&self) -> Option<&Branch> {
+        self.branch.as_ref()
     }
 
     /// Starting poses of the inverse kinematics.

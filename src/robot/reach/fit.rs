@@ -1,11 +1,11 @@
 //! The reach space fitted to an arm: the study's half annulus, scaled as large as it fits
 //! inside the camera positions the arm reaches looking down — wrist solution inside its
-//! limits, elbow up, every link clear of the floor and of the arm's other links — with a
-//! margin.
+//! limits, every link clear of the floor and of the arm's other links, on one branch of
+//! the arm's solutions — with a margin.
 
 use crate::robot::contact::contact_free::{ContactRule, Touch};
-use crate::robot::{ArmModel, Controlled, ReachSpace};
-use std::f64::consts::TAU;
+use crate::robot::model::{Branch, PoseGrid};
+use crate::robot::{ArmModel, ReachSpace};
 
 /// Grid cell of the reached (r, z) set (m).
 const CELL: f64 = 0.01;
@@ -16,9 +16,8 @@ const STEPS: usize = 240;
 const MAX_EDGE: f64 = 0.1;
 /// How far inside the reached set the fitted space stays (m).
 const MARGIN: f64 = 0.02;
-/// How far (degrees) the sampled shoulder and elbow angles stay inside limits that do not
-/// go all the way round: poses at a limit leave the learner no room to move past its aim.
-const LIMIT_MARGIN_DEG: f64 = 10.0;
+/// The most branches tried, largest first.
+const MAX_BRANCHES: usize = 4;
 /// Scales tried, largest first, as fractions of the arm's furthest reach.
 const SCALE_STEPS: usize = 200;
 /// The smallest fraction tried: a space whose outer radius is under a quarter of the arm's
@@ -26,16 +25,19 @@ const SCALE_STEPS: usize = 200;
 const MIN_SCALE_SHARE: f64 = 0.25;
 
 /// A reach space fitted to an arm, and how much of what it reaches it takes.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct ReachFit {
     /// The fitted space.
     pub space: ReachSpace,
+    /// The branch of the arm's solutions the space was fitted on (hand it to the arm with
+    /// [`ArmModel::keep_branch`] so that its inverse kinematics keeps to it).
+    pub branch: Branch,
     /// The share of the reached (r, z) cells inside the fitted space's (r, z) box.
     pub area_share: f64,
     /// Shoulder–elbow poses that were sampled, and how many were usable.
     pub sampled: usize,
-    /// Usable poses (wrist solved within limits, elbow up, clear of the floor and of the
-    /// arm's own links).
+    /// Usable poses (wrist solved within limits, clear of the floor and of the arm's own
+    /// links, on the branch).
     pub usable: usize,
 }
 
@@ -47,8 +49,9 @@ pub struct ReachFitFailure {
     pub sampled: usize,
     /// Poses at which no wrist pose inside the limits keeps the camera looking down.
     pub no_wrist: usize,
-    /// Poses with the elbow not up (or the wrist behind the base).
-    pub elbow_down: usize,
+    /// Poses free of contact on other branches of the arm's solutions than the largest
+    /// (the elbow or the shoulder the other way round), or at an edge between two.
+    pub other_branch: usize,
     /// Poses with a link or the camera below the floor, or less than
     /// [`CONTACT_MARGIN`](crate::robot::CONTACT_MARGIN) above it.
     pub below_floor: usize,
@@ -64,15 +67,16 @@ impl std::fmt::Display for ReachFitFailure {
         write!(
             f,
             "of {} shoulder-elbow poses sampled, the wrist could not look down at {:.0}%, \
-             the elbow was not up at {:.0}%, a link was at the floor at {:.0}% and the links \
-             touched each other at {:.0}% (closer than 1 cm counts; the shoulder and \
-             elbow were sampled 10° inside their limits); no half annulus of the study's shape reaching \
-             at least a quarter as far as the arm fits in the {} usable ones",
+             a link was at the floor at {:.0}%, the links touched each other at {:.0}% \
+             (closer than 1 cm counts; the shoulder and elbow were sampled 10° inside their \
+             limits) and {:.0}% lay on other branches of the arm's solutions than the \
+             largest; no half annulus of the study's shape reaching at least a quarter as far \
+             as the arm fits in the {} usable ones",
             self.sampled,
             share(self.no_wrist),
-            share(self.elbow_down),
             share(self.below_floor),
             share(self.in_contact),
+            share(self.other_branch),
             self.usable
         )
     }
@@ -150,21 +154,66 @@ impl Grid {
 
 impl ReachSpace {
     /// The study's half annulus scaled as large as it fits inside what `model` reaches
-    /// with the camera looking down, its lowest target above `floor_z` (m; the object
-    /// hangs `below` m under the camera); when no such space exists, how many sampled
-    /// poses each of the conditions turned away.
+    /// with the camera looking down on one branch of its solutions (the one of the few
+    /// largest that holds the largest space), its lowest target above `floor_z` (m; the
+    /// object hangs `below` m under the camera); when no such space exists, how many
+    /// sampled poses each of the conditions turned away.
     pub fn fit(model: &ArmModel, floor_z: f64, below: f64) -> Result<ReachFit, ReachFitFailure> {
-        let (samples, tally) = reached_points(model, floor_z);
-        let grid = Grid::new(&samples).ok_or(tally)?;
-        let study = ReachSpace::OSCAR6;
-        let r_far = grid.cols as f64 * CELL;
-        let lowest = (floor_z + below).max(grid.z0);
-        let shares = (0..SCALE_STEPS).map(|step| 1.0 - step as f64 / SCALE_STEPS as f64);
-        for share in shares.take_while(|share| *share >= MIN_SCALE_SHARE) {
-            let scale = r_far / study.r_max * share;
-            let Some(space) = place(&grid, scale, lowest) else {
+        let (samples, mut tally) = reached_points(model, floor_z);
+        let signs = samples.grid.signs(&samples.points);
+        let free: Vec<i8> = (0..signs.len())
+            .map(|cell| if samples.free[cell] { signs[cell] } else { 0 })
+            .collect();
+        let branches = samples.grid.components(&free);
+        let free_poses = samples.free.iter().filter(|f| **f).count();
+        let on = |cells: &[usize]| {
+            let mut points = vec![None; samples.points.len()];
+            for &cell in cells {
+                points[cell] = samples.points[cell];
+            }
+            Samples {
+                grid: samples.grid.clone(),
+                points,
+                free: Vec::new(),
+            }
+        };
+        let largest = branches.first().map_or(0, Vec::len);
+        tally.usable = largest;
+        tally.other_branch = free_poses - largest;
+        let mut best: Option<((ReachSpace, f64), &Vec<usize>)> = None;
+        for cells in branches.iter().take(MAX_BRANCHES) {
+            let Some(fit) = Grid::new(&on(cells)).and_then(|grid| fit_in(&grid, floor_z, below))
+            else {
                 continue;
             };
+            if best.as_ref().is_none_or(|(b, _)| fit.0.r_max > b.0.r_max) {
+                best = Some((fit, cells));
+            }
+        }
+        let Some(((space, area_share), cells)) = best else {
+            return Err(tally);
+        };
+        Ok(ReachFit {
+            space,
+            area_share,
+            sampled: tally.sampled,
+            usable: cells.len(),
+            branch: Branch::new(samples.grid.clone(), cells, signs[cells[0]]),
+        })
+    }
+}
+
+/// The largest half annulus of the study's shape in `grid` (see [`ReachSpace::fit`]), and
+/// the share of the reached cells inside its box.
+fn fit_in(grid: &Grid, floor_z: f64, below: f64) -> Option<(ReachSpace, f64)> {
+    let study = ReachSpace::OSCAR6;
+    let r_far = grid.cols as f64 * CELL;
+    let lowest = (floor_z + below).max(grid.z0);
+    let shares = (0..SCALE_STEPS).map(|step| 1.0 - step as f64 / SCALE_STEPS as f64);
+    shares
+        .take_while(|share| *share >= MIN_SCALE_SHARE)
+        .find_map(|share| place(grid, r_far / study.r_max * share, lowest))
+        .map(|space| {
             let r = (space.r_min - MARGIN, space.r_max + MARGIN);
             let z = (space.z_min - MARGIN, space.z_max + MARGIN);
             let inside = grid.count(
@@ -174,15 +223,8 @@ impl ReachSpace {
                 ),
                 ((r.0 / CELL) as usize, (r.1 / CELL) as usize + 1),
             );
-            return Ok(ReachFit {
-                space,
-                area_share: inside as f64 / grid.reached as f64,
-                sampled: tally.sampled,
-                usable: tally.usable,
-            });
-        }
-        Err(tally)
-    }
+            (space, inside as f64 / grid.reached as f64)
+        })
 }
 
 /// The study's half annulus at `scale` placed in `grid` with [`MARGIN`] to spare, its
@@ -217,33 +259,27 @@ fn place(grid: &Grid, scale: f64, lowest: f64) -> Option<ReachSpace> {
     })
 }
 
-/// The camera centres (r, z) of the shoulder–elbow poses on a `STEPS` × `STEPS` grid over
-/// the joints' limits (one turn each), `None` where a condition turned the pose away.
+/// The camera centres (r, z) of the shoulder–elbow poses of a [`PoseGrid`] whose wrist
+/// looks down inside its limits (`None` elsewhere), and which of them are free of contact.
 struct Samples {
-    /// `points[i * STEPS + k]`: shoulder step i, elbow step k.
+    grid: PoseGrid,
+    /// `points[grid.index(i, k)]`: shoulder step i, elbow step k.
     points: Vec<Option<(f64, f64)>>,
-    /// Whether the shoulder's and the elbow's steps go all the way round (the last step
-    /// neighbours the first).
-    full_turn: [bool; 2],
+    /// Whether each pose is free of contact.
+    free: Vec<bool>,
 }
 
 impl Samples {
     /// The triangles of neighbouring reached samples: two per grid square whose four
     /// corners are reached and lie within [`MAX_EDGE`] of each other.
     fn triangles(&self) -> impl Iterator<Item = [(f64, f64); 3]> + '_ {
-        let next = |n: usize, turn: bool| match n + 1 {
-            STEPS if turn => Some(0),
-            STEPS => None,
-            m => Some(m),
-        };
-        let squares = (0..STEPS).flat_map(move |i| (0..STEPS).map(move |k| (i, k)));
+        let grid = &self.grid;
+        let squares = (0..grid.steps).flat_map(move |i| (0..grid.steps).map(move |k| (i, k)));
         squares.flat_map(move |(i, k)| {
-            let corners = next(i, self.full_turn[0])
-                .zip(next(k, self.full_turn[1]))
-                .and_then(|(i1, k1)| {
-                    let at = |i: usize, k: usize| self.points[i * STEPS + k];
-                    Some([at(i, k)?, at(i1, k)?, at(i1, k1)?, at(i, k1)?])
-                });
+            let corners = grid.next(0, i).zip(grid.next(1, k)).and_then(|(i1, k1)| {
+                let at = |i: usize, k: usize| self.points[grid.index(i, k)];
+                Some([at(i, k)?, at(i1, k)?, at(i1, k1)?, at(i, k1)?])
+            });
             let near = |c: &[(f64, f64); 4]| {
                 let d = |a: (f64, f64), b: (f64, f64)| (a.0 - b.0).hypot(a.1 - b.1);
                 d(c[0], c[2]).max(d(c[1], c[3])) <= MAX_EDGE
@@ -286,82 +322,28 @@ fn fill(hit: &mut [bool], (z0, cols): (f64, usize), triangle: &[(f64, f64); 3]) 
     }
 }
 
-/// The camera centres (r, z) of shoulder–elbow poses on a grid inside the limits (the
-/// base yaw at rest: turning it moves the camera about the base's z axis only) whose
-/// wrist is solved inside its limits, elbow up, with every link [`CONTACT_MARGIN`](crate::robot::CONTACT_MARGIN) clear
-/// of `floor_z` and of the links it may touch; and how many poses each condition turned
-/// away.
+/// The camera centres (r, z) of the shoulder–elbow poses of a `STEPS` × `STEPS` grid
+/// whose wrist looks down inside its limits, which of them keep every link
+/// [`CONTACT_MARGIN`](crate::robot::CONTACT_MARGIN) clear of `floor_z` and of the links it
+/// may touch, and how many poses each condition turned away.
 fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) {
-    let [yaw, s, e] = model.learned();
-    let full_turn = [s, e].map(|j| {
-        let (lower, upper) = model.joints()[j].one_turn();
-        upper - lower >= TAU - 1e-9
-    });
-    let span = |j: usize, full_turn: bool| {
-        let (lower, upper) = model.joints()[j].one_turn();
-        let margin = if full_turn {
-            0.0
-        } else {
-            LIMIT_MARGIN_DEG.to_radians()
-        };
-        (lower + margin, (upper - lower - 2.0 * margin).max(0.0))
-    };
-    let (shoulder, elbow) = (span(s, full_turn[0]), span(e, full_turn[1]));
+    let grid = PoseGrid::of(model, STEPS);
     let mut tally = ReachFitFailure {
         sampled: STEPS * STEPS,
         ..ReachFitFailure::default()
     };
     let contact = ContactRule::new(model, floor_z);
-    let base_yaw = model.rest()[yaw];
-    let mut samples = Samples {
-        points: vec![None; STEPS * STEPS],
-        full_turn,
-    };
-    let at = |(lower, width): (f64, f64), n: usize| lower + width * (n as f64 + 0.5) / STEPS as f64;
-    let step_of = |(lower, width): (f64, f64), angle: f64| {
-        ((angle - lower) / width * STEPS as f64).clamp(0.0, (STEPS - 1) as f64) as usize
-    };
-    let rest = model.rest();
-    let (i_rest, k_rest) = (step_of(shoulder, rest[s]), step_of(elbow, rest[e]));
-    // Each pose's wrist is solved from its neighbour's, outwards from the rest pose, so
-    // that the whole grid keeps the rest pose's wrist branch.
-    let mut centres = vec![rest; STEPS];
-    for (i, from_row) in outward(i_rest) {
-        let start = from_row.map_or(rest, |f| centres[f]);
-        let mut row = vec![start; STEPS];
-        for (k, from) in outward(k_rest) {
-            let near = from.map_or(start, |f| row[f]);
-            row[k] = near;
-            let theta = Controlled::new(base_yaw, at(shoulder, i), at(elbow, k));
-            let pose = model.pose_near(&theta, &near);
-            if !model.wrist_fits(&pose) {
-                tally.no_wrist += 1;
-                continue;
-            }
-            row[k] = pose.joints;
-            if !model.is_elbow_up(&theta) {
-                tally.elbow_down += 1;
-                continue;
-            }
-            match contact.touch(model, &pose) {
-                Some(Touch::Floor) => tally.below_floor += 1,
-                Some(Touch::Links) => tally.in_contact += 1,
-                None => {
-                    let p = pose.camera.translation.vector;
-                    samples.points[i * STEPS + k] = Some((p.x.hypot(p.y), p.z));
-                    tally.usable += 1;
-                }
-            }
+    let mut free = vec![false; STEPS * STEPS];
+    let points = grid.centres(model, |cell, pose, fits| {
+        if !fits {
+            tally.no_wrist += 1;
+            return;
         }
-        centres[i] = row[k_rest];
-    }
-    (samples, tally)
-}
-
-/// The steps 0..STEPS from `centre` outwards, up then down, each with the step next to it
-/// that it continues from (none for `centre`).
-fn outward(centre: usize) -> impl Iterator<Item = (usize, Option<usize>)> {
-    let up = (centre + 1..STEPS).map(|n| (n, Some(n - 1)));
-    let down = (0..centre).rev().map(|n| (n, Some(n + 1)));
-    std::iter::once((centre, None)).chain(up).chain(down)
+        match contact.touch(model, pose) {
+            Some(Touch::Floor) => tally.below_floor += 1,
+            Some(Touch::Links) => tally.in_contact += 1,
+            None => free[cell] = true,
+        }
+    });
+    (Samples { grid, points, free }, tally)
 }

@@ -178,10 +178,10 @@ fn panda_at_rest() -> KinematicSim {
         camera_offset: Vector3::zeros(),
         learned_joints: ["panda_joint1", "panda_joint2", "panda_joint4"].into(),
     };
-    let arm = ArmModel::from_description(&description, &settings).expect("the Panda's arm");
-    let space = ReachSpace::fit(&arm, -0.22, 0.22)
-        .expect("a reach space")
-        .space;
+    let mut arm = ArmModel::from_description(&description, &settings).expect("the Panda's arm");
+    let fit = ReachSpace::fit(&arm, -0.22, 0.22).expect("a reach space");
+    let space = fit.space;
+    arm.keep_branch(fit.branch);
     let theta = arm
         .solve_camera_position(&space.prelearning_goal())
         .expect("in reach");

@@ -44,11 +44,12 @@ fn panda_without_hand_shapes() -> ArmModel {
     .unwrap()
 }
 
-/// The arm's fitted reach space (the default floor, 22 cm below the base plane).
-fn reach(model: &ArmModel) -> ReachSpace {
-    ReachSpace::fit(model, -0.22, 0.22)
-        .expect("a reach space")
-        .space
+/// The arm's fitted reach space (the default floor, 22 cm below the base plane), the arm
+/// keeping to the branch of its solutions the space was fitted on.
+fn reach(model: &mut ArmModel) -> ReachSpace {
+    let fit = ReachSpace::fit(model, -0.22, 0.22).expect("a reach space");
+    model.keep_branch(fit.branch);
+    fit.space
 }
 
 /// How far (rad) any joint of `model` strays from `start`, and its camera (m), while the
@@ -71,8 +72,8 @@ fn the_arms_hold_a_pose_under_gravity() {
     // At the pre-learning pose, for 5 simulated seconds: the servos with the gravity
     // feed-forward from the merged bodies hold every joint (measured: under 1e-18 rad, as
     // the OSCAR-6 holds below 1e-5 rad in 10 s); without the servos the arm falls.
-    for model in [panda(), ur_style()] {
-        let goal = reach(&model).prelearning_goal();
+    for mut model in [panda(), ur_style()] {
+        let goal = reach(&mut model).prelearning_goal();
         let start = model.full_pose(&model.solve_camera_position(&goal).unwrap());
         let (joints, camera) = drift(&model, &start, Drive::Hold, 5.0);
         assert!(
@@ -90,8 +91,8 @@ fn moves_end_where_the_kinematic_model_ends_them() {
     // Eight moves to seeded targets of the fitted reach space: the dynamic arm settles
     // where the kinematic model puts the camera within 0.05 mm, the OSCAR-6's contract
     // (tests/dynamic_contract.rs); measured at most 0.005 mm (Panda), 0.004 mm (UR-style).
-    for model in [panda(), ur_style()] {
-        let space = reach(&model);
+    for mut model in [panda(), ur_style()] {
+        let space = reach(&mut model);
         let mut rng = ChaCha8Rng::seed_from_u64(5);
         let settings = DynamicSettings::default();
         let mut kinematic = KinematicSim::new(model.clone(), settings.moves);

@@ -32,7 +32,7 @@ pub const UR_STYLE: TestArm = TestArm {
     file: "ur_style.urdf",
     camera_link: "tool0",
     learned: ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint"],
-    boundaries: [-153.0, -66.0, -150.0, -57.0],
+    boundaries: [-99.0, -20.0, 48.0, 138.0],
 };
 
 impl TestArm {

@@ -154,8 +154,8 @@ impl Grid {
 
 impl ReachSpace {
     /// The study's half annulus scaled as large as it fits inside what `model` reaches
-    /// with the camera looking down on one branch of its solutions (the one of the few
-    /// largest that holds the largest space), its lowest target above `floor_z` (m; the
+    /// with the camera looking down on one branch of its solutions (the largest of the
+    /// few largest in which one fits), its lowest target above `floor_z` (m; the
     /// object hangs `below` m under the camera); when no such space exists, how many
     /// sampled poses each of the conditions turned away.
     pub fn fit(model: &ArmModel, floor_z: f64, below: f64) -> Result<ReachFit, ReachFitFailure> {
@@ -180,16 +180,10 @@ impl ReachSpace {
         let largest = branches.first().map_or(0, Vec::len);
         tally.usable = largest;
         tally.other_branch = free_poses - largest;
-        let mut best: Option<((ReachSpace, f64), &Vec<usize>)> = None;
-        for cells in branches.iter().take(MAX_BRANCHES) {
-            let Some(fit) = Grid::new(&on(cells)).and_then(|grid| fit_in(&grid, floor_z, below))
-            else {
-                continue;
-            };
-            if best.as_ref().is_none_or(|(b, _)| fit.0.r_max > b.0.r_max) {
-                best = Some((fit, cells));
-            }
-        }
+        let best = branches.iter().take(MAX_BRANCHES).find_map(|cells| {
+            let grid = Grid::new(&on(cells))?;
+            Some((fit_in(&grid, floor_z, below)?, cells))
+        });
         let Some(((space, area_share), cells)) = best else {
             return Err(tally);
         };

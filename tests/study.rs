@@ -3,17 +3,25 @@
 //! unchanged, and after the camera turns by 90° at trial 1,500 the root is cut within a few
 //! trials and learning starts over. Seed 1, kinematic OSCAR-6, 3,000 trials.
 
-use eyehand::experiment::{run, Config, RunOptions};
+use eyehand::experiment::{run, Config, RunOptions, RunResult};
 use std::path::{Path, PathBuf};
 
 /// Runs configs/study.conf for 3,000 trials, seed 1, with `edit` applied; the run folder.
 fn study_run(data: &Path, edit: impl FnOnce(&mut Config)) -> PathBuf {
-    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/study.conf");
+    run_file(data, "configs/study.conf", |config| {
+        config.trials = 3000;
+        config.seed = 1;
+        edit(config);
+    })
+    .folder
+}
+
+/// Runs the shipped config `file` with `edit` applied.
+fn run_file(data: &Path, file: &str, edit: impl FnOnce(&mut Config)) -> RunResult {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
     let mut config = Config::from_file(&file).unwrap();
-    config.trials = 3000;
-    config.seed = 1;
     edit(&mut config);
-    run(&RunOptions::new(config, data)).unwrap().folder
+    run(&RunOptions::new(config, data)).unwrap()
 }
 
 /// The trials at which the root was merged, from the run's `merges` file.
@@ -68,6 +76,33 @@ fn the_studys_90_degree_turn_cuts_the_root_within_a_few_trials_and_it_relearns()
     assert!(
         relearned < 2.0 * before.max(0.2),
         "relearned to {relearned} mm (before the turn {before} mm)"
+    );
+}
+
+#[test]
+fn lin8_relearns_after_a_turn_cuts_its_root() {
+    // The study's lin8 file (fig. 5.14) with the 90° turn at trial 200: the root is cut
+    // while a trial is learned, and the fresh tree must start from pre-learning alone.
+    let data = tempfile::tempdir().unwrap();
+    let result = run_file(
+        data.path(),
+        "configs/study/fig5.14_lin8_camera_90.conf",
+        |config| {
+            config.seed = 1;
+            config.rotate_trial = 200;
+            config.trials = 600;
+        },
+    );
+    let cuts = root_merges(&result.folder);
+    assert!(
+        cuts.first().is_some_and(|&t| (200..=230).contains(&t)),
+        "root cut at trials {cuts:?}"
+    );
+    assert!(result.summary.learned, "lin8 learned nothing after the cut");
+    let relearned = four_step_mean(&result.folder, 400, 601);
+    assert!(
+        relearned < 30.0,
+        "4-step mean {relearned} mm over trials 400-600"
     );
 }
 

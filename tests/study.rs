@@ -121,17 +121,14 @@ fn check_config_stderr(file: &Path) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
 }
 
-#[test]
-fn check_config_warns_of_merges_that_cut_the_root_while_the_arm_is_unchanged() {
-    let study = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/study.conf");
-    assert_eq!(
-        check_config_stderr(&study),
-        "",
-        "the study's file cuts nothing"
-    );
+/// `check-config`'s stderr for the shipped `file` as it is (it must say nothing) and with
+/// `am_error_tresh 0.5` (it must warn of root cuts in `trials` trials).
+fn assert_warns_of_a_low_threshold_only(file: &str, trials: usize) {
+    let shipped = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
+    assert_eq!(check_config_stderr(&shipped), "", "{file} cuts nothing");
     let dir = tempfile::tempdir().unwrap();
     let low = dir.path().join("low.conf");
-    let listing = std::fs::read_to_string(&study).unwrap();
+    let listing = std::fs::read_to_string(&shipped).unwrap();
     std::fs::write(
         &low,
         listing.replace("am_error_tresh         5.0", "am_error_tresh 0.5"),
@@ -140,7 +137,17 @@ fn check_config_warns_of_merges_that_cut_the_root_while_the_arm_is_unchanged() {
     let warned = check_config_stderr(&low);
     assert!(
         warned.contains("am_error_tresh 0.5 over am_error_iters 50 cut the tree at its root")
-            && warned.contains("in 1499 trials of plain learning"),
+            && warned.contains(&format!("in {trials} trials of plain learning")),
         "{warned}"
     );
+}
+
+#[test]
+fn check_config_warns_of_merges_that_cut_the_root_while_the_arm_is_unchanged() {
+    assert_warns_of_a_low_threshold_only("configs/study.conf", 1499);
+}
+
+#[test]
+fn check_config_probes_an_nnw_file_for_root_cuts_too() {
+    assert_warns_of_a_low_threshold_only("configs/study/sec3.2.3_nnw.conf", 500);
 }

@@ -290,3 +290,60 @@ impl Branch {
         det * self.sign > 0.0 && self.holds(theta2, theta3)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A grid of `steps` per joint over one turn of each, the shoulder's and the elbow's.
+    fn full_turns(steps: usize) -> PoseGrid {
+        PoseGrid {
+            spans: [(-std::f64::consts::PI, TAU); 2],
+            full_turn: [true, true],
+            steps,
+        }
+    }
+
+    #[test]
+    fn a_full_turn_wraps_its_steps_and_its_neighbours() {
+        let grid = full_turns(8);
+        assert_eq!(grid.step_of(0, grid.angle(0, 3)), 3);
+        assert_eq!(grid.step_of(0, grid.angle(0, 3) + TAU), 3);
+        assert_eq!(grid.step_of(1, grid.angle(1, 7) - 2.0 * TAU), 7);
+        let around: Vec<_> = grid.neighbours(0, 7).collect();
+        assert!(
+            around.contains(&(7, 7)) && around.contains(&(0, 0)),
+            "{around:?}"
+        );
+    }
+
+    #[test]
+    fn the_sign_of_a_two_link_arm_splits_at_the_straight_elbow() {
+        // A planar two-link arm (upper arm 1, forearm 0.6) reaching from the base axis:
+        // r, z of the hand; the sign flips where the elbow passes straight (θ3 = 0, π).
+        let grid = full_turns(36);
+        let centres: Vec<_> = (0..36 * 36)
+            .map(|cell| {
+                let (s, e) = (grid.angle(0, cell / 36), grid.angle(1, cell % 36));
+                let (r, z) = (s.cos() + 0.6 * (s + e).cos(), s.sin() + 0.6 * (s + e).sin());
+                Some((r.abs() + 2.0, z))
+            })
+            .collect();
+        let signs = grid.signs(&centres);
+        let components = grid.components(&signs);
+        let elbow_sign = |k: usize| signs[grid.index(5, k)];
+        assert_ne!(elbow_sign(9), elbow_sign(27), "elbow one way and the other");
+        // The hand's r is kept away from the axis, so only the elbow splits the grid.
+        assert_eq!(
+            components.len(),
+            2,
+            "{:?}",
+            components.iter().map(Vec::len).collect::<Vec<_>>()
+        );
+        let branch = Branch::new(grid.clone(), &components[0], signs[components[0][0]]);
+        let cell = components[0][components[0].len() / 2];
+        let (s, e) = (grid.angle(0, cell / 36), grid.angle(1, cell % 36));
+        assert!(branch.holds(s, e) && branch.holds(s + TAU, e - TAU));
+        assert!(!branch.holds_with(s, e, -f64::from(signs[cell])));
+    }
+}

@@ -93,6 +93,8 @@ pub struct MethodFacts {
     /// True for one model without a tree, which `change_recovery correct` wraps in a
     /// [`CorrectedLearner`](crate::learn::change::CorrectedLearner).
     pub single_model: bool,
+    /// The entries that make a trial's learning long, named when a trial takes long.
+    pub slow_entries: &'static str,
 }
 
 impl fmt::Display for Method {

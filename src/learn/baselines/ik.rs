@@ -72,4 +72,5 @@ pub(crate) const IK_FACTS: MethodFacts = MethodFacts {
     bounded: false,
     watches_changes: false,
     single_model: false,
+    slow_entries: "feedback_steps, bin_size, max_stored_patterns",
 };

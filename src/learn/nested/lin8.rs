@@ -109,6 +109,7 @@ pub(crate) const LIN8_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     single_model: false,
+    slow_entries: "feedback_steps, bin_size, max_stored_patterns",
 };
 
 #[cfg(test)]

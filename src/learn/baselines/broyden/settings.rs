@@ -54,4 +54,5 @@ pub(crate) const BROYDEN_FACTS: MethodFacts = MethodFacts {
     bounded: false,
     watches_changes: false,
     single_model: false,
+    slow_entries: "feedback_steps, bin_size, max_stored_patterns",
 };

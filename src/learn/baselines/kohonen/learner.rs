@@ -157,4 +157,5 @@ pub(crate) const KOHONEN_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     single_model: true,
+    slow_entries: "feedback_steps, bin_size, max_stored_patterns",
 };

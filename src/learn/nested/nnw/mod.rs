@@ -88,6 +88,7 @@ pub(crate) const NNW_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     single_model: false,
+    slow_entries: "hidden_units, nnw_train_limit, feedback_steps",
 };
 
 #[cfg(test)]

@@ -62,4 +62,5 @@ pub(crate) const ISSGP_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     single_model: true,
+    slow_entries: "issgp_features, feedback_steps",
 };

@@ -79,4 +79,5 @@ pub(crate) const LWPR_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     single_model: true,
+    slow_entries: "init_D, w_gen, feedback_steps",
 };

@@ -59,4 +59,5 @@ pub(crate) const MLP_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     single_model: true,
+    slow_entries: "mlp_steps_per_trial, mlp_batch, mlp_hidden",
 };

@@ -259,10 +259,9 @@ impl Learner for PyLearner {
     }
 }
 
-/// A built-in learner (`lin5`, `lin8`, `nnw`, `ffn`, `kohonen`, `ik`, `lwpr`, `issgp`,
-/// `mlp`, `broyden`) with the settings of a config, built as a run builds its learner (on
-/// an arm other than the OSCAR-6, its boundaries fitted to that arm):
-/// `Learner(method="lin5", config=None, urdf=None, **entries)`.
+/// A built-in learner (any of `Method::ALL`, by name) with the settings of a config, built
+/// as a run builds its learner (on an arm other than the OSCAR-6, its boundaries fitted to
+/// that arm): `Learner(method="lin5", config=None, urdf=None, **entries)`.
 #[pyclass(unsendable, module = "eyehand", name = "Learner")]
 #[derive(Debug)]
 pub struct BuiltinLearner {

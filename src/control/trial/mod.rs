@@ -126,8 +126,6 @@ impl TrialLoop {
         self.camera.as_ref()
     }
 
-    /// Runs one trial with `learner` and lets it learn from the trial's poses; fails only
-
     /// The poses of the current (or last) trial in the order they were seen: the start and
     /// the pose after every step at which the object was seen.
     pub fn path(&self) -> &[Observation] {

@@ -8,6 +8,7 @@ use crate::learn::{LearnError, Learner};
 use nalgebra::Vector3;
 
 impl TrialLoop {
+    /// Runs one trial with `learner` and lets it learn from the trial's poses; fails only
     /// when the learner cannot learn (its pattern storage failed). Built on
     /// [`begin_trial`](Self::begin_trial), [`step_trial`](Self::step_trial) and
     /// [`finish_trial`](Self::finish_trial).

@@ -3,6 +3,7 @@
 
 use crate::control::{TrialLoop, TrialObserver, TrialOutcome};
 use crate::experiment::output::data_files::DataFiles;
+use crate::experiment::output::info_file::{write_info_header, write_info_tail};
 use crate::experiment::output::summary::{RunSummary, SensorSummary};
 use crate::experiment::plot::{plot_run, PlotError};
 use crate::experiment::run::interrupt::StopRequest;
@@ -17,10 +18,10 @@ use crate::experiment::{
     allocate_run_folder, fresh_run_folder, peak_rss_kb, resident_kb, Config, Event, PreflightError,
     RunFolderError, RunSetup, Sources,
 };
-use crate::learn::{LearnError, Learner, LearnerStats};
+use crate::learn::{LearnError, Learner};
 use crate::robot::{DescriptionError, RobotError};
-use std::io::{self, Write};
-use std::path::{Path, PathBuf};
+use std::io;
+use std::path::PathBuf;
 use std::time::Instant;
 
 /// Trials the run's plot is smoothed over.
@@ -295,6 +296,8 @@ fn drive(
         settle_timeouts: work.settle_timeouts,
         stopped_by_contact: work.contact_stops,
         moves: work.moves,
+        speed_faults: work.speed_faults,
+        worst_speed_fault: work.worst_speed_fault.map(Into::into),
         root_merges,
         events: events.iter().map(Event::to_string).collect(),
         obstacles: config
@@ -351,87 +354,4 @@ pub(crate) fn next_trial(
         trials.prelearn(learner)?;
     }
     Ok(trials.run_trial_observed(learner, observer)?)
-}
-
-fn host_name() -> String {
-    std::fs::read_to_string("/proc/sys/kernel/hostname")
-        .map(|h| h.trim().to_string())
-        .unwrap_or_else(|_| "unknown".into())
-}
-
-fn write_info_header(folder: &Path, options: &RunOptions, setup: &RunSetup) -> io::Result<()> {
-    let mut info = std::fs::File::create(folder.join("info"))?;
-    writeln!(info, "# eyehand {} run", env!("CARGO_PKG_VERSION"))?;
-    writeln!(info, "host {}", host_name())?;
-    writeln!(info, "config_file {}", options.config_name)?;
-    let urdf = setup
-        .config
-        .urdf
-        .path()
-        .map_or(crate::robot::DEFAULT_URDF_NAME.to_string(), |p| {
-            p.display().to_string()
-        });
-    writeln!(info, "urdf {urdf}")?;
-    for event in &setup.events {
-        writeln!(info, "event {event}")?;
-    }
-    writeln!(info, "\n# config")?;
-    info.write_all(setup.config.explained_text(&setup.sources).as_bytes())
-}
-
-fn write_info_tail(folder: &Path, summary: &RunSummary, stats: &LearnerStats) -> io::Result<()> {
-    let mut info = std::fs::OpenOptions::new()
-        .append(true)
-        .open(folder.join("info"))?;
-    writeln!(info, "\n# result")?;
-    writeln!(info, "wall_seconds {:.3}", summary.wall_seconds)?;
-    writeln!(
-        info,
-        "trials_per_hour {:.0}",
-        summary.trials_per_second * 3600.0
-    )?;
-    writeln!(info, "failures {}", summary.failures)?;
-    if let Some(not_learned) = &summary.not_learned {
-        writeln!(info, "not_learned {}", not_learned.reason)?;
-    }
-    if summary.interrupted {
-        writeln!(info, "interrupted after trial {}", summary.trials)?;
-    }
-    writeln!(
-        info,
-        "physics_steps_per_trial {:.1}",
-        summary.physics_steps_per_trial
-    )?;
-    writeln!(
-        info,
-        "simulated_seconds_per_trial {:.4}",
-        summary.simulated_seconds_per_trial
-    )?;
-    writeln!(info, "settle_timeouts {}", summary.settle_timeouts)?;
-    writeln!(info, "stopped_by_contact {}", summary.stopped_by_contact)?;
-    let figure = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
-    writeln!(
-        info,
-        "final_distance_mm mean {} median {}",
-        figure(summary.mean_final_distance_mm),
-        figure(summary.median_final_distance_mm)
-    )?;
-    writeln!(
-        info,
-        "reached_epsilon {} of {} (mean {} simulated s)",
-        summary.reached_epsilon,
-        summary.window,
-        figure(summary.mean_seconds_to_epsilon)
-    )?;
-    writeln!(info, "peak_rss_kb {}", summary.peak_rss_kb)?;
-    writeln!(info, "\n# tree per level: depth nodes bins patterns error")?;
-    for (depth, level) in stats.levels.iter().enumerate() {
-        let error = level.error.map_or("-".to_string(), |e| format!("{e:.6e}"));
-        writeln!(
-            info,
-            "{depth} {} {} {} {error}",
-            level.nodes, level.bins, level.patterns
-        )?;
-    }
-    Ok(())
 }

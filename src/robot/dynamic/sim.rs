@@ -52,6 +52,7 @@ use super::body_parts::body_parts;
 use super::builder::{joint_frame, Arm};
 use super::colliders::contact_compound;
 use super::convert::{to_isometry, to_pose};
+use super::faults::SpeedFault;
 use super::inertia::Inertial;
 use super::seen::compound;
 use super::settings::DynamicSettings;
@@ -126,6 +127,8 @@ pub struct DynamicSim {
     pub(super) move_ticks: Option<Vec<Joints>>,
     /// The set-point of continuous servoing, while it goes on.
     pub(super) tracker: Option<SetPointTracker>,
+    /// The joint furthest beyond its URDF velocity limit after any tick so far.
+    pub(super) worst_speed_fault: Option<SpeedFault>,
 }
 
 impl DynamicSim {
@@ -143,6 +146,7 @@ impl DynamicSim {
             kept_ticks: None,
             move_ticks: None,
             tracker: None,
+            worst_speed_fault: None,
         };
         let start = sim.plan.joints();
         sim.arm.teleport(&start);
@@ -265,6 +269,8 @@ impl Simulator for DynamicSim {
             simulated_seconds: c.steps() as f64 * self.settings.dt,
             settle_timeouts: c.settle_timeouts(),
             contact_stops: c.contact_stops(),
+            speed_faults: c.speed_faults(),
+            worst_speed_fault: self.worst_speed_fault,
         }
     }
 

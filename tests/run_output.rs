@@ -172,8 +172,7 @@ fn a_dynamic_run_prints_and_writes_what_its_arm_met() {
     let data = tempfile::tempdir().unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_eyehand"))
         .args([
-            "run", "--method", "ik", "--sim", "dynamic", "--trials", "5", "--seed", "1",
-            "--data",
+            "run", "--method", "ik", "--sim", "dynamic", "--trials", "5", "--seed", "1", "--data",
         ])
         .arg(data.path())
         .output()

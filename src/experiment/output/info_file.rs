@@ -15,7 +15,11 @@ fn host_name() -> String {
 
 /// Writes the start of `<folder>/info`: the host, config file, URDF, events and the
 /// config with where each value came from.
-pub(in crate::experiment) fn write_info_header(folder: &Path, options: &RunOptions, setup: &RunSetup) -> io::Result<()> {
+pub(in crate::experiment) fn write_info_header(
+    folder: &Path,
+    options: &RunOptions,
+    setup: &RunSetup,
+) -> io::Result<()> {
     let mut info = std::fs::File::create(folder.join("info"))?;
     writeln!(info, "# eyehand {} run", env!("CARGO_PKG_VERSION"))?;
     writeln!(info, "host {}", host_name())?;
@@ -37,7 +41,11 @@ pub(in crate::experiment) fn write_info_header(folder: &Path, options: &RunOptio
 
 /// Appends the run's result to `<folder>/info`: rates, failures, the arm's work, the
 /// distance figures and the learner's tree per level.
-pub(in crate::experiment) fn write_info_tail(folder: &Path, summary: &RunSummary, stats: &LearnerStats) -> io::Result<()> {
+pub(in crate::experiment) fn write_info_tail(
+    folder: &Path,
+    summary: &RunSummary,
+    stats: &LearnerStats,
+) -> io::Result<()> {
     let mut info = std::fs::OpenOptions::new()
         .append(true)
         .open(folder.join("info"))?;

@@ -118,8 +118,8 @@ impl FreeArm {
         self.arm
             .step(&self.model, set_point.as_ref(), &self.settings);
         self.steps += 1;
-        if matches!(self.drive, Drive::MoveTo(_)) && self.stopped.is_none() && self.arm.in_contact()
-        {
+        let moving = matches!(self.drive, Drive::MoveTo(_)) && self.stopped.is_none();
+        if moving && set_point.is_some_and(|s| self.arm.stopped_by_contact(&s.angles)) {
             self.stopped = Some((self.time(), self.joints()));
         }
         let fault = self.arm.speed_fault(&self.model);

@@ -71,7 +71,7 @@ impl DynamicSim {
         for k in 0..ticks {
             let after = self.set_point(&from, delta, at(k + 2), &next);
             self.tick(&SetPoint::between(&now, &next, &after, dt));
-            if self.arm.in_contact() {
+            if self.arm.stopped_by_contact(&next) {
                 return (k + 1, true);
             }
             (now, next) = (next, after);

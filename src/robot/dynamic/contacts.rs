@@ -2,7 +2,8 @@
 //! shared rule lets touch (not neighbours in the chain, apart at the zero pose:
 //! robot/clearance.rs). The plan already stops a move where the kinematic rule finds
 //! contact; a link that still digs into the floor, an obstacle or another link stops a
-//! move, as a joint limit does.
+//! move, as a joint limit does, and so does a contact that holds the arm back from its
+//! set-point.
 
 use super::builder::Arm;
 use crate::robot::contact::clearance::contact_pairs;

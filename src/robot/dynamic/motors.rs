@@ -5,7 +5,10 @@
 //! the set-point's inverse dynamics (weight, Coriolis and centrifugal torques, the joints'
 //! damping, the path's acceleration) fed forward as joint torques. Rapier's joint limits,
 //! contacts and joint friction act in its step. A tick is `rapier_substeps` Rapier steps,
-//! the motors' targets moved along the set-point's path at each.
+//! the motors' targets moved along the set-point's path at each; a tick that begins with a
+//! link near something takes steps of at most 1 ms with at least 4 solver iterations, the
+//! motors holding the arm where it is for the rest of the tick once a contact holds it back
+//! from its set-point.
 
 use super::builder::Arm;
 use super::integrator::{contact_substeps, CONTACT_ITERATIONS};

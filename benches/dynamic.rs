@@ -258,14 +258,16 @@ fn every_arm(arms: &[BenchArm], measure: impl Fn(&BenchArm, Engine) -> String) -
         .collect()
 }
 
-/// Gaps (°) at 0.2, 0.5 and 1 s.
+/// Gaps (°) at 0.2, 0.5 and 1 s (– where the reference ends before).
 fn at_three_times(gaps: &[(f64, f64)]) -> String {
-    format!(
-        "{:.1e}° / {:.1e}° / {:.1e}°",
-        mujoco::gap_at(gaps, 0.2),
-        mujoco::gap_at(gaps, 0.5),
-        mujoco::gap_at(gaps, 1.0)
-    )
+    let at = |t: f64| {
+        let gap = mujoco::gap_at(gaps, t);
+        match gap.is_nan() {
+            true => NONE.to_string(),
+            false => format!("{gap:.1e}°"),
+        }
+    };
+    format!("{} / {} / {}", at(0.2), at(0.5), at(1.0))
 }
 
 /// Each arm against MuJoCo 4.0 (RK4, 0.1 ms) on the same URDF, on both engines.

@@ -270,6 +270,17 @@ fn at_three_times(gaps: &[(f64, f64)]) -> String {
     format!("{} / {} / {}", at(0.2), at(0.5), at(1.0))
 }
 
+/// A servoed move's largest joint and camera differences and both arms' settle ticks.
+fn move_figures(gaps: &mujoco::MoveGaps) -> String {
+    format!(
+        "{:.1e}° / {:.1e} mm, {} / {}",
+        gaps.joints_deg(),
+        gaps.camera_mm,
+        gaps.settle_ticks.0,
+        gaps.settle_ticks.1
+    )
+}
+
 /// Each arm against MuJoCo 4.0 (RK4, 0.1 ms) on the same URDF, on both engines.
 fn print_mujoco_comparison(arms: &[BenchArm]) {
     let worst = |gaps: Vec<(Joints, f64)>| gaps.iter().map(|g| g.1).fold(0.0, f64::max);
@@ -339,16 +350,7 @@ fn print_mujoco_comparison(arms: &[BenchArm]) {
         };
         row(
             &format!("servoed move {n} ({kind}{limited}), dt 5 ms: largest joint / camera difference, settle ticks ours / MuJoCo's"),
-            every_arm(arms, |arm, engine| {
-                let gaps = gaps(arm, engine);
-                format!(
-                    "{:.1e}° / {:.1e} mm, {} / {}",
-                    gaps.joints_deg(),
-                    gaps.camera_mm,
-                    gaps.settle_ticks.0,
-                    gaps.settle_ticks.1
-                )
-            }),
+            every_arm(arms, |arm, engine| move_figures(&gaps(arm, engine))),
         );
         row(
             &format!("servoed move {n}, dt 5 ms: apart at 0.2 / 0.5 / 1 s"),
@@ -366,14 +368,7 @@ fn print_mujoco_comparison(arms: &[BenchArm]) {
         "held-out OSCAR-6 `damped`, servoed move 2, dt 5 ms: largest joint / camera difference, settle ticks ours / MuJoCo's",
         oscar6_only(|engine| {
             let file = "held_out/mujoco_move_damped.csv";
-            let gaps = mujoco::trace_gaps(&damped, &start, &goal, file, mujoco::with_dt(5e-3, engine));
-            format!(
-                "{:.1e}° / {:.1e} mm, {} / {}",
-                gaps.joints_deg(),
-                gaps.camera_mm,
-                gaps.settle_ticks.0,
-                gaps.settle_ticks.1
-            )
+            move_figures(&mujoco::trace_gaps(&damped, &start, &goal, file, mujoco::with_dt(5e-3, engine)))
         }),
     );
     row(

@@ -1,8 +1,7 @@
 //! Writing a run: its folder, the data files written line by line, the numbers in them,
-//! the `info` file, `summary.json` and the process's memory figures.
+//! `summary.json` and the process's memory figures.
 
 pub(super) mod data_files;
-pub(super) mod info_file;
 pub(super) mod number_text;
 pub(super) mod process_memory;
 pub(super) mod run_folder;

@@ -5,6 +5,7 @@ use crate::control::MAX_RECORDED_STEPS;
 use crate::experiment::verdict::failures::FailureTally;
 use crate::experiment::verdict::learning_verdict::NotLearned;
 use crate::experiment::Config;
+use crate::learn::{LearnerStats, Method};
 use crate::robot::SpeedFault;
 use serde::{Deserialize, Serialize};
 use std::io;
@@ -200,21 +201,19 @@ impl RunSummary {
             })
     }
 
-    /// The learner's size in its own terms, ending in `; ` (nothing for one that has none
-    /// to speak of: ik, ffn's one net).
+    /// The learner's size in its own terms, ending in `; `, as its method's facts give it
+    /// (nothing for one that has none to speak of: ik, ffn's one net); a learner written
+    /// outside the crate gets a generic one.
     fn model_size(&self) -> String {
-        match self.method.as_str() {
-            "lin5" | "lin8" | "nnw" => format!(
-                "tree: {} nodes, {} bins, {} patterns; ",
-                self.nodes, self.bins, self.patterns
-            ),
-            "kohonen" => format!("map: {} cells; ", self.nodes),
-            "lwpr" => format!("{} receptive fields; ", self.nodes),
-            "issgp" => format!("{} random features; ", self.nodes),
-            "mlp" => format!("replay buffer: {} patterns; ", self.patterns),
-            "broyden" => "one 3×3 image Jacobian; ".to_string(),
-            "ik" | "ffn" => String::new(),
-            _ => format!("model: {} nodes, {} patterns; ", self.nodes, self.patterns),
+        let stats = LearnerStats {
+            nodes: self.nodes,
+            bins: self.bins,
+            patterns: self.patterns,
+            ..LearnerStats::default()
+        };
+        match self.method.parse::<Method>() {
+            Ok(method) => (method.facts().size)(&stats),
+            Err(_) => format!("model: {} nodes, {} patterns; ", self.nodes, self.patterns),
         }
     }
 

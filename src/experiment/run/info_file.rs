@@ -1,8 +1,9 @@
-//! The run's `info` file: the host, config, URDF and events at the start, the figures of
-//! the result at the end.
+//! A run folder's `info` file: the header written before the first trial (version, host,
+//! config and where each value came from) and the result appended after the last.
 
+use super::run_options::RunOptions;
 use crate::experiment::output::summary::RunSummary;
-use crate::experiment::{RunOptions, RunSetup};
+use crate::experiment::RunSetup;
 use crate::learn::LearnerStats;
 use std::io::{self, Write};
 use std::path::Path;
@@ -13,9 +14,9 @@ fn host_name() -> String {
         .unwrap_or_else(|_| "unknown".into())
 }
 
-/// Writes the start of `<folder>/info`: the host, config file, URDF, events and the
-/// config with where each value came from.
-pub(in crate::experiment) fn write_info_header(
+/// Writes the `info` file's header: the version, host, config file, URDF, events and
+/// the config with where each value came from.
+pub(super) fn write_info_header(
     folder: &Path,
     options: &RunOptions,
     setup: &RunSetup,
@@ -39,9 +40,8 @@ pub(in crate::experiment) fn write_info_header(
     info.write_all(setup.config.explained_text(&setup.sources).as_bytes())
 }
 
-/// Appends the run's result to `<folder>/info`: rates, failures, the arm's work, the
-/// distance figures and the learner's tree per level.
-pub(in crate::experiment) fn write_info_tail(
+/// Appends the run's result and its tree per level to the `info` file.
+pub(super) fn write_info_tail(
     folder: &Path,
     summary: &RunSummary,
     stats: &LearnerStats,

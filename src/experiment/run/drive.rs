@@ -163,6 +163,8 @@ fn drive(
         settle_timeouts: work.settle_timeouts,
         stopped_by_contact: work.contact_stops,
         moves: work.moves,
+        speed_faults: work.speed_faults,
+        worst_speed_fault: work.worst_speed_fault.map(Into::into),
         root_merges,
         events: setup.events.iter().map(Event::to_string).collect(),
         obstacles: config

@@ -75,6 +75,7 @@ pub(super) fn write_info_tail(
     )?;
     writeln!(info, "settle_timeouts {}", summary.settle_timeouts)?;
     writeln!(info, "stopped_by_contact {}", summary.stopped_by_contact)?;
+    writeln!(info, "speed_faults {}", summary.speed_faults)?;
     let figure = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
     writeln!(
         info,

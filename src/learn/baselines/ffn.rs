@@ -4,6 +4,7 @@
 //! by conjugate-gradient back-propagation on that window after every trial.
 
 use super::net::{minimize, BatchLoss, DenseNet, InputScaling};
+use crate::learn::change::SingleModel;
 use crate::learn::{adjusted_pattern, Observation, PatternSettings, Query};
 use crate::learn::{LearnError, Learner, LearnerStats, Method};
 use nalgebra::{SVector, Vector3};
@@ -113,3 +114,6 @@ impl Learner for FfnLearner {
         }
     }
 }
+
+/// It cannot forget: under change detection it recovers by `change_recovery correct`.
+impl SingleModel for FfnLearner {}

@@ -6,6 +6,7 @@
 
 use super::Lattice;
 use crate::learn::baselines::net::InputScaling;
+use crate::learn::change::SingleModel;
 use crate::learn::{adjusted_pattern, Observation, PatternSettings, Query};
 use crate::learn::{LearnError, Learner, LearnerStats, Method};
 use nalgebra::{SMatrix, SVector, Vector3};
@@ -146,3 +147,6 @@ impl Learner for KohonenLearner {
         }
     }
 }
+
+/// It cannot forget: under change detection it recovers by `change_recovery correct`.
+impl SingleModel for KohonenLearner {}

@@ -138,8 +138,9 @@ impl Watch {
         Ok(())
     }
 
-    /// Closes the trial booked so far before `trial`; on an alarm `inner` forgets, or a
-    /// correction is fitted from the trial the change is dated to.
+    /// Closes the trial booked so far before `trial`; on an alarm `inner` forgets, or it
+    /// drops what it learned since the change and a correction is fitted from the trial the
+    /// change is dated to.
     fn start_trial(&mut self, inner: &mut dyn SingleModel, trial: usize) {
         self.trial = trial;
         let Some(changed_at) = self.misses.start_trial(trial, self.booked) else {
@@ -147,7 +148,10 @@ impl Watch {
         };
         match self.recovery {
             ChangeRecovery::Forget => inner.forget_before(changed_at),
-            ChangeRecovery::Correct => self.corrections.start(changed_at, &self.low, &self.high),
+            ChangeRecovery::Correct => {
+                inner.unlearn_since(changed_at);
+                self.corrections.start(changed_at, &self.low, &self.high);
+            }
         }
     }
 }

@@ -147,4 +147,10 @@ impl SingleModel for Mlp {
     fn forget_before(&mut self, changed_at: usize) {
         self.replay.drop_before(changed_at);
     }
+
+    /// Drops every buffered pattern of the trials since `changed_at`: they are in the
+    /// readings the correction is about to carry back.
+    fn unlearn_since(&mut self, changed_at: usize) {
+        self.replay.drop_since(changed_at);
+    }
 }

@@ -57,4 +57,11 @@ impl Replay {
             self.samples.pop_front();
         }
     }
+
+    /// Drops every sample of the trials from `trial` on.
+    pub(super) fn drop_since(&mut self, trial: usize) {
+        while self.samples.back().is_some_and(|s| s.trial >= trial) {
+            self.samples.pop_back();
+        }
+    }
 }

@@ -79,7 +79,7 @@ fn adam_finds_the_minimum_of_a_quadratic() {
 }
 
 #[test]
-fn the_buffer_keeps_the_newest_and_drops_before_a_trial() {
+fn the_buffer_keeps_the_newest_and_drops_before_and_since_a_trial() {
     let sample = |trial| Sample {
         input: Input::zeros(),
         centred: Input::zeros(),
@@ -90,9 +90,12 @@ fn the_buffer_keeps_the_newest_and_drops_before_a_trial() {
     (0..5).for_each(|trial| replay.push(sample(trial)));
     assert_eq!(replay.len(), 3);
     assert_eq!(replay.get(0).map(|s| s.trial), Some(2));
-    replay.drop_before(4);
+    replay.drop_before(3);
+    assert_eq!(replay.len(), 2);
+    assert_eq!(replay.get(0).map(|s| s.trial), Some(3));
+    replay.drop_since(4);
     assert_eq!(replay.len(), 1);
-    assert_eq!(replay.get(0).map(|s| s.trial), Some(4));
+    assert_eq!(replay.get(0).map(|s| s.trial), Some(3));
 }
 
 #[test]

@@ -9,7 +9,7 @@ use nalgebra::{Matrix3, SVector, Vector3};
 use std::collections::VecDeque;
 
 /// Estimates kept, each with the place it was made at (the most recent moves').
-const MEMORY: usize = 500;
+const MEMORY: usize = 100;
 /// Reading units that count as far as one degree when the place of a trial's start is
 /// matched with the places of the estimates kept.
 const READING_PER_DEG: f64 = 5.0;

@@ -1,7 +1,7 @@
 //! Each learner's settings from the config entries of the same names.
 
 use crate::experiment::Config;
-use crate::learn::change::{ChangeRecovery, ChangeSettings, DetectorSettings};
+use crate::learn::change::{ChangeSettings, DetectorSettings};
 use crate::learn::{
     BroydenSettings, FfnSettings, IssgpSettings, KohonenSettings, Lin5Settings, Lin8Settings,
     LwprSettings, MergeStrategy, MlpSettings, NestedSettings, NnwSettings, PatternSettings,
@@ -79,12 +79,10 @@ pub fn lwpr_settings(config: &Config) -> LwprSettings {
         add_threshold: config.add_threshold,
         norm_out: config.norm_out,
         patterns: pattern_settings(config),
-        change_detection: watch_settings(config),
     }
 }
 
-/// `issgp`: the `issgp_*` entries, `norm_out`, `minimal_joint_move`, `seed`, and the
-/// `change_*` entries under `merge_strategy change_detection`.
+/// `issgp`: the `issgp_*` entries, `norm_out`, `minimal_joint_move` and `seed`.
 pub fn issgp_settings(config: &Config) -> IssgpSettings {
     IssgpSettings {
         features: config.issgp_features,
@@ -96,12 +94,10 @@ pub fn issgp_settings(config: &Config) -> IssgpSettings {
         norm_out: config.norm_out,
         patterns: pattern_settings(config),
         seed: config.seed,
-        change_detection: watch_settings(config),
     }
 }
 
-/// `mlp`: the `mlp_*` entries, `norm_out`, `minimal_joint_move`, `seed`, and the
-/// `change_*` entries under `merge_strategy change_detection`.
+/// `mlp`: the `mlp_*` entries, `norm_out`, `minimal_joint_move` and `seed`.
 pub fn mlp_settings(config: &Config) -> MlpSettings {
     MlpSettings {
         hidden: config.mlp_hidden,
@@ -113,7 +109,6 @@ pub fn mlp_settings(config: &Config) -> MlpSettings {
         norm_out: config.norm_out,
         patterns: pattern_settings(config),
         seed: config.seed,
-        change_detection: watch_settings(config),
     }
 }
 
@@ -129,23 +124,10 @@ pub fn broyden_settings(config: &Config) -> BroydenSettings {
     }
 }
 
-/// The change watch of a single-model learner: the `change_*` entries under
-/// `merge_strategy change_detection` with `change_recovery forget`, none otherwise (under
-/// `correct` the learner's [`CorrectedLearner`](crate::learn::change::CorrectedLearner)
-/// watches it).
-fn watch_settings(config: &Config) -> Option<ChangeSettings> {
-    (config.merge_strategy == MergeStrategy::ChangeDetection
-        && config.change_recovery == ChangeRecovery::Forget)
-        .then(|| change_settings(config))
-}
-
-/// The watch and correction a learner without a tree gets under `merge_strategy
-/// change_detection` with `change_recovery correct`: the `change_*` entries; none
-/// otherwise.
-pub fn correction_settings(config: &Config) -> Option<ChangeSettings> {
-    (config.merge_strategy == MergeStrategy::ChangeDetection
-        && config.change_recovery == ChangeRecovery::Correct)
-        .then(|| change_settings(config))
+/// The change watch a learner without a tree gets under `merge_strategy
+/// change_detection`: the `change_*` entries; none otherwise.
+pub fn single_model_watch_settings(config: &Config) -> Option<ChangeSettings> {
+    (config.merge_strategy == MergeStrategy::ChangeDetection).then(|| change_settings(config))
 }
 
 /// Which pose pairs are learning patterns: `minimal_joint_move`.

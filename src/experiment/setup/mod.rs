@@ -14,15 +14,15 @@ pub use arm::{
     load_description, reach_space, LoadedArm, BOUNDARY_MARGIN_DEG,
 };
 pub use learners::{
-    broyden_settings, correction_settings, ffn_settings, input_bounds, issgp_settings,
-    kohonen_settings, lin5_settings, lin8_settings, lwpr_settings, mlp_settings, nnw_settings,
-    pattern_settings,
+    broyden_settings, ffn_settings, input_bounds, issgp_settings, kohonen_settings, lin5_settings,
+    lin8_settings, lwpr_settings, mlp_settings, nnw_settings, pattern_settings,
+    single_model_watch_settings,
 };
 
 use super::{CameraKind, Config, ObstacleBox, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
 use crate::control::{CameraTiming, MoveFrames, SensorNoise, TrialSettings};
-use crate::learn::change::CorrectedLearner;
+use crate::learn::change::{SingleModel, WatchedLearner};
 use crate::learn::{
     Broyden, FfnLearner, IkLearner, Issgp, KohonenLearner, LearnError, Learner, Lin5, Lin8, Lwpr,
     Method, Mlp, Nnw,
@@ -114,9 +114,9 @@ pub fn move_settings(config: &Config) -> MoveSettings {
 }
 
 /// The learner the config names. `model` is the nominal robot (for `ik`); a learner that
-/// stores patterns in a file (`use_pat_file` 0) puts it in `run_dir`. Under
-/// `merge_strategy change_detection` with `change_recovery correct` a learner with a model
-/// but no tree is wrapped in a [`CorrectedLearner`].
+/// stores patterns in a file (`use_pat_file` 0) puts it in `run_dir`. A learner with a
+/// single model runs in a [`WatchedLearner`], which under `merge_strategy
+/// change_detection` watches it for a change.
 pub fn build_learner(
     config: &Config,
     model: &ArmModel,
@@ -125,32 +125,26 @@ pub fn build_learner(
     let pat_file = run_dir
         .filter(|_| config.use_pat_file == 0)
         .map(|dir| dir.join("pat_file"));
-    let learner: Box<dyn Learner> = match config.method {
-        Method::Lin5 => Box::new(Lin5::new(&lin5_settings(config), pat_file)?),
-        Method::Lin8 => Box::new(Lin8::new(&lin8_settings(config), pat_file)?),
-        Method::Nnw => Box::new(Nnw::new(&nnw_settings(config), pat_file)?),
-        Method::Ik => Box::new(IkLearner::new(model.clone(), CameraModel::default())),
-        Method::Ffn => Box::new(FfnLearner::new(
-            ffn_settings(config),
-            input_bounds(config),
-            config.seed,
-        )),
-        Method::Kohonen => Box::new(KohonenLearner::new(
-            kohonen_settings(config),
-            input_bounds(config),
-        )),
-        Method::Lwpr => Box::new(Lwpr::new(lwpr_settings(config), input_bounds(config))),
-        Method::Issgp => Box::new(Issgp::new(issgp_settings(config), input_bounds(config))),
-        Method::Mlp => Box::new(Mlp::new(mlp_settings(config), input_bounds(config))),
-        Method::Broyden => Box::new(Broyden::new(broyden_settings(config))),
+    let bounds = input_bounds(config);
+    let single: Box<dyn SingleModel> = match config.method {
+        Method::Lin5 => return Ok(Box::new(Lin5::new(&lin5_settings(config), pat_file)?)),
+        Method::Lin8 => return Ok(Box::new(Lin8::new(&lin8_settings(config), pat_file)?)),
+        Method::Nnw => return Ok(Box::new(Nnw::new(&nnw_settings(config), pat_file)?)),
+        Method::Ik => {
+            return Ok(Box::new(IkLearner::new(
+                model.clone(),
+                CameraModel::default(),
+            )))
+        }
+        Method::Broyden => return Ok(Box::new(Broyden::new(broyden_settings(config)))),
+        Method::Ffn => Box::new(FfnLearner::new(ffn_settings(config), bounds, config.seed)),
+        Method::Kohonen => Box::new(KohonenLearner::new(kohonen_settings(config), bounds)),
+        Method::Lwpr => Box::new(Lwpr::new(lwpr_settings(config), bounds)),
+        Method::Issgp => Box::new(Issgp::new(issgp_settings(config), bounds)),
+        Method::Mlp => Box::new(Mlp::new(mlp_settings(config), bounds)),
     };
-    Ok(match correction_settings(config) {
-        Some(change) if config.method.facts().single_model => Box::new(CorrectedLearner::new(
-            learner,
-            &change,
-            pattern_settings(config),
-            input_bounds(config),
-        )),
-        _ => learner,
-    })
+    Ok(Box::new(match single_model_watch_settings(config) {
+        Some(change) => WatchedLearner::watched(single, &change, pattern_settings(config), bounds),
+        None => WatchedLearner::unwatched(single),
+    }))
 }

@@ -4,6 +4,7 @@
 //! by conjugate-gradient back-propagation on that window after every trial.
 
 use super::net::{minimize, BatchLoss, DenseNet, InputScaling};
+use crate::learn::change::SingleModel;
 use crate::learn::MethodFacts;
 use crate::learn::{adjusted_pattern, Observation, PatternSettings, Query};
 use crate::learn::{LearnError, Learner, LearnerStats, Method};
@@ -50,7 +51,11 @@ pub struct FfnLearner {
     net: DenseNet<5, 3>,
     scaling: InputScaling<5>,
     window: Vec<Sample>,
+    /// The trial each sample of the window was learned in.
+    window_trials: Vec<usize>,
     next_slot: usize,
+    /// The trial going on.
+    trial: usize,
 }
 
 impl FfnLearner {
@@ -62,15 +67,19 @@ impl FfnLearner {
             net: DenseNet::new(settings.hidden_units, settings.wrange, &mut rng),
             scaling: InputScaling::new(bounds),
             window: Vec::with_capacity(settings.window),
+            window_trials: Vec::with_capacity(settings.window),
             next_slot: 0,
+            trial: 0,
         }
     }
 
     fn remember(&mut self, sample: Sample) {
         if self.window.len() < self.settings.window {
             self.window.push(sample);
+            self.window_trials.push(self.trial);
         } else {
             self.window[self.next_slot] = sample;
+            self.window_trials[self.next_slot] = self.trial;
         }
         self.next_slot = (self.next_slot + 1) % self.settings.window;
     }
@@ -112,6 +121,31 @@ impl Learner for FfnLearner {
             patterns: self.window.len(),
             levels: Vec::new(),
         }
+    }
+
+    fn start_trial(&mut self, trial: usize) {
+        self.trial = trial;
+    }
+}
+
+/// It cannot forget what its net learned (the config refuses `change_recovery forget` for
+/// it), but its window can drop patterns.
+impl SingleModel for FfnLearner {
+    /// Drops the window's patterns of the trials since `changed_at`, oldest kept first; the
+    /// net is trained on what is left after the next trial.
+    fn unlearn_since(&mut self, changed_at: usize) {
+        let (older, newer) = self.window.split_at(self.next_slot.min(self.window.len()));
+        let (older_trials, newer_trials) = self.window_trials.split_at(older.len());
+        // Oldest first: the slots from `next_slot` on were written before those below it.
+        let kept: Vec<(Sample, usize)> = newer
+            .iter()
+            .zip(newer_trials)
+            .chain(older.iter().zip(older_trials))
+            .filter(|&(_, &trial)| trial < changed_at)
+            .map(|(&sample, &trial)| (sample, trial))
+            .collect();
+        (self.window, self.window_trials) = kept.into_iter().unzip();
+        self.next_slot = self.window.len() % self.settings.window;
     }
 }
 

@@ -1,6 +1,6 @@
-//! The per-trial value the single-model learners (`lwpr`, `issgp`, `mlp`) give the change
-//! watch: the log of a trial's summed miss relative to its summed move, and what an alarm
-//! tells them.
+//! The per-trial value the change watch of a single-model learner is given
+//! ([`WatchedLearner`](super::WatchedLearner)): the log of a trial's summed miss relative to
+//! its summed move, and what an alarm tells the learner.
 //!
 //! The nested learners book each pattern's relative miss; a single smooth model answers
 //! every pattern with an absolute error floor, so a trial's many small late moves miss by
@@ -48,16 +48,14 @@ impl TrialMiss {
     }
 
     /// Trial `trial` comes next, its first pattern number `next_seq`. On an alarm the
-    /// change is logged and the number of the first pattern of the estimated change's
-    /// trial is returned: the learner forgets what it learned before that.
-    pub(crate) fn start_trial(&mut self, trial: usize, next_seq: u64) -> Option<u64> {
+    /// change is logged and the trial it is dated to returned.
+    pub(crate) fn start_trial(&mut self, trial: usize, next_seq: u64) -> Option<usize> {
         match self.watch.start_trial(trial, next_seq) {
             WatchStep::Forget {
-                estimated_trial,
-                cutoff,
+                estimated_trial, ..
             } => {
                 self.events.push(ModelEvent::Change { estimated_trial });
-                Some(cutoff)
+                Some(estimated_trial)
             }
             WatchStep::Nothing | WatchStep::CutStarved => None,
         }

@@ -6,6 +6,7 @@
 
 use super::Lattice;
 use crate::learn::baselines::net::InputScaling;
+use crate::learn::change::SingleModel;
 use crate::learn::MethodFacts;
 use crate::learn::{adjusted_pattern, Observation, PatternSettings, Query};
 use crate::learn::{LearnError, Learner, LearnerStats, Method};
@@ -147,6 +148,9 @@ impl Learner for KohonenLearner {
         }
     }
 }
+
+/// It cannot forget: under change detection it recovers by `change_recovery correct`.
+impl SingleModel for KohonenLearner {}
 
 /// What the program knows of `kohonen` besides its learner (see [`Method::facts`](crate::learn::Method::facts)).
 pub(crate) const KOHONEN_FACTS: MethodFacts = MethodFacts {

@@ -49,9 +49,9 @@
 //! - **Recovery** (merge strategy `change_detection`): after a detected change the tree
 //!   forgets what came before it, lets nodes short of new patterns defer to their
 //!   ancestors (or answer from their stale fits while those do better), and later cuts the
-//!   subtrees starved of new patterns; see [`recovery`]. Or, by default, it keeps the tree
+//!   subtrees starved of new patterns; see [`forget_recovery`]. Or, by default, it keeps the tree
 //!   and answers through a correction of the readings fitted since the change; see
-//!   [`correcting`].
+//!   [`correct_recovery`].
 //! - **Re-training** (models that ask for it: nnw's nets): after a trial, nodes that took
 //!   in enough new patterns are trained again on a sample of their box's stored patterns;
 //!   see [`retrain`].
@@ -86,7 +86,6 @@ pub(crate) use approximator::{Approximator, Sample};
 pub(crate) use arena::NodeArena;
 pub(crate) use bins::Bins;
 pub(crate) use branch::{BinKey, BranchRule, Halving, BRANCHES, MAX_DEPTH};
-pub(crate) use correct_recovery::Corrections;
 pub(crate) use forget_recovery::StaleVerdict;
 pub(crate) use levels::Levels;
 pub(crate) use monitor::Monitor;

@@ -4,10 +4,8 @@
 //! mapping and recovering from it. Merges and detected changes are reported as
 //! [`ModelEvent`]s.
 
-use super::{
-    Approximator, BranchRule, Corrections, NestedSettings, NestedTree, Records, TreeEvent,
-};
-use crate::learn::change::{ChangeRecovery, ChangeWatch, WatchStep};
+use super::{Approximator, BranchRule, NestedSettings, NestedTree, Records, TreeEvent};
+use crate::learn::change::{ChangeRecovery, ChangeWatch, Corrections, WatchStep};
 use crate::learn::{
     LearnError, Learner, LearnerStats, MergeStrategy, Method, ModelEvent, Observation, Pattern,
     PatternSettings, Query,

@@ -1,16 +1,14 @@
 //! The `issgp` learner: random features of the scaled adjusted 5-input patterns and the
-//! posterior of their weights, with forgetting and, under change detection, a watch that
-//! restarts the posterior from its mean.
+//! posterior of their weights, with forgetting, restarted from its mean when a detected
+//! change calls for it.
 
 use super::features::{Features, Input};
 use super::posterior::Posterior;
 use super::IssgpSettings;
 use crate::learn::baselines::net::InputScaling;
-use crate::learn::change::TrialMiss;
-use crate::learn::inputs::finite_or_still;
+use crate::learn::change::SingleModel;
 use crate::learn::{
-    adjusted_pattern, centred, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation,
-    Query,
+    adjusted_pattern, centred, LearnError, Learner, LearnerStats, Method, Observation, Query,
 };
 use nalgebra::{DVector, Vector3};
 use rand::SeedableRng;
@@ -27,9 +25,6 @@ pub struct Issgp {
     /// The features of the input at hand, and (anchored) of its centred twin.
     phi: DVector<f64>,
     phi_centred: DVector<f64>,
-    watch: Option<TrialMiss>,
-    /// Patterns trained so far (the watch dates a change by them).
-    patterns: u64,
 }
 
 impl Issgp {
@@ -47,8 +42,6 @@ impl Issgp {
             phi: DVector::zeros(features.len()),
             phi_centred: DVector::zeros(if settings.anchored { features.len() } else { 0 }),
             features,
-            watch: settings.change_detection.as_ref().map(TrialMiss::new),
-            patterns: 0,
         }
     }
 
@@ -69,31 +62,11 @@ impl Issgp {
         self.posterior.predict(&self.phi) * self.settings.norm_out
     }
 
-    /// Trains one pattern: raw input `x`, joint move `target` (degrees). A pattern with a
-    /// value that is not finite is skipped.
+    /// Trains one pattern: raw input `x`, joint move `target` (degrees), both finite.
     pub fn train(&mut self, x: &Input, target: &Vector3<f64>) {
-        if !x.iter().chain(target.iter()).all(|v| v.is_finite()) {
-            return;
-        }
         self.write_features(x);
         self.posterior
             .add(&self.phi, &(target / self.settings.norm_out));
-        self.patterns += 1;
-    }
-
-    /// Books every pattern of the trial with the watch: its miss by the model that drove
-    /// the trial (nothing is trained yet).
-    fn book_trial(&mut self, path: &[Observation]) {
-        let Some(mut watch) = self.watch.take() else {
-            return;
-        };
-        for (from, to) in self.settings.patterns.pairs(path) {
-            let pattern = adjusted_pattern(from, to);
-            let miss = (self.predict(&pattern.input) - pattern.target).norm();
-            watch.book(Some(miss), pattern.target.norm());
-        }
-        watch.close_trial();
-        self.watch = Some(watch);
     }
 }
 
@@ -103,14 +76,11 @@ impl Learner for Issgp {
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        finite_or_still(self.predict(&query.five_inputs()))
+        self.predict(&query.five_inputs())
     }
 
-    /// Trains every pose pair of the trial. Under change detection the watch is first
-    /// given the trial's summed miss relative to its summed move, by the model as it was
-    /// during the trial (one solve of the weights, not one per pattern).
+    /// Trains every pose pair of the trial.
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
-        self.book_trial(path);
         for (from, to) in self.settings.patterns.pairs(path) {
             let pattern = adjusted_pattern(from, to);
             self.train(&pattern.input, &pattern.target);
@@ -124,21 +94,11 @@ impl Learner for Issgp {
             ..LearnerStats::default()
         }
     }
+}
 
-    /// Under change detection, a detected change restarts the posterior from its mean
-    /// (see the module's notes).
-    fn start_trial(&mut self, trial: usize) {
-        let Some(watch) = &mut self.watch else {
-            return;
-        };
-        if watch.start_trial(trial, self.patterns).is_some() {
-            self.posterior.restart_from_mean();
-        }
-    }
-
-    fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
-        if let Some(watch) = &mut self.watch {
-            watch.drain_events(sink);
-        }
+impl SingleModel for Issgp {
+    /// Restarts the posterior from its mean (see the module's notes).
+    fn forget_before(&mut self, _changed_at: usize) {
+        self.posterior.restart_from_mean();
     }
 }

@@ -17,9 +17,10 @@
 //! - Forgetting (`issgp_forgetting` λ < 1) weighs the past down by λ per pattern, the prior
 //!   included, so 1/(1 − λ) patterns should be many more than D.
 //!
-//! **Change detection** (`merge_strategy change_detection`) feeds the watch one value per
-//! trial, as `lwpr` does ([`TrialMiss`](crate::learn::change)): the trial's summed miss
-//! relative to its summed move, by the model that drove the trial. An alarm makes the
+//! **Change detection** (`merge_strategy change_detection`) is the single-model learners'
+//! shared watch ([`WatchedLearner`](crate::learn::change::WatchedLearner)): one value per
+//! trial, the trial's summed miss relative to its summed move, by the model that drove the
+//! trial. Under `change_recovery forget` an alarm makes the
 //! current answer the prior's mean and sets the precision back to the prior's: every
 //! pattern before it stops counting as evidence, so the patterns after it correct the old
 //! mapping at the rate a fresh learner learns, from the old mapping instead of from zero.

@@ -1,6 +1,5 @@
 //! Settings of the `issgp` learner.
 
-use crate::learn::change::ChangeSettings;
 use crate::learn::MethodFacts;
 use crate::learn::PatternSettings;
 
@@ -31,9 +30,6 @@ pub struct IssgpSettings {
     pub patterns: PatternSettings,
     /// Seed of the features' frequencies and phases; 1 by default.
     pub seed: u64,
-    /// The change watch on the trials (`merge_strategy change_detection`), none by default.
-    /// Only its detector counts.
-    pub change_detection: Option<ChangeSettings>,
 }
 
 impl Default for IssgpSettings {
@@ -48,7 +44,6 @@ impl Default for IssgpSettings {
             norm_out: 10.0,
             patterns: PatternSettings::default(),
             seed: 1,
-            change_detection: None,
         }
     }
 }

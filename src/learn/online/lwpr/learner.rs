@@ -1,13 +1,12 @@
 //! The `lwpr` learner: three output models over the normalised adjusted 5-input patterns,
-//! with forgetting and, under change detection, a watch that resets it.
+//! with forgetting, set back to its start when a detected change calls for it.
 
 use super::output_model::OutputModel;
 use super::projection::Input;
 use super::LwprSettings;
-use crate::learn::change::TrialMiss;
-use crate::learn::inputs::finite_or_still;
+use crate::learn::change::SingleModel;
 use crate::learn::{
-    adjusted_pattern, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation, Query,
+    adjusted_pattern, LearnError, Learner, LearnerStats, Method, Observation, Query,
 };
 use nalgebra::Vector3;
 
@@ -20,9 +19,6 @@ pub struct Lwpr {
     span: Input,
     /// One model per joint move Δθ1, Δθ2, Δθ3.
     outputs: [OutputModel; 3],
-    watch: Option<TrialMiss>,
-    /// Patterns trained so far (the watch dates a change by them).
-    patterns: u64,
 }
 
 impl Lwpr {
@@ -34,8 +30,6 @@ impl Lwpr {
             low: Input::from_fn(|i, _| bounds[i].0),
             span: Input::from_fn(|i, _| bounds[i].1 - bounds[i].0),
             outputs: Default::default(),
-            watch: settings.change_detection.as_ref().map(TrialMiss::new),
-            patterns: 0,
         }
     }
 
@@ -71,28 +65,12 @@ impl Lwpr {
         })
     }
 
-    /// How far the answer at raw input `x` misses `target` (degrees); `None` where some
-    /// output has no field.
-    fn miss(&self, x: &Input, target: &Vector3<f64>) -> Option<f64> {
-        let answer = self.answer(x);
-        let squares = answer
-            .iter()
-            .zip(target.iter())
-            .map(|(a, t)| a.map(|a| (a - t).powi(2)));
-        squares.sum::<Option<f64>>().map(f64::sqrt)
-    }
-
-    /// Trains one pattern: raw input `x`, joint move `target` (degrees). A pattern with a
-    /// value that is not finite is skipped.
+    /// Trains one pattern: raw input `x`, joint move `target` (degrees), both finite.
     pub fn train(&mut self, x: &Input, target: &Vector3<f64>) {
-        if !x.iter().chain(target.iter()).all(|v| v.is_finite()) {
-            return;
-        }
         let x = self.normalise(x);
         for (model, t) in self.outputs.iter_mut().zip(target.iter()) {
             model.train(&x, t / self.settings.norm_out, &self.settings);
         }
-        self.patterns += 1;
     }
 }
 
@@ -101,27 +79,19 @@ impl Learner for Lwpr {
         Method::Lwpr.name()
     }
 
+    /// The answer, zero for outputs no field covers (not finite for inputs far outside the
+    /// boundaries: the [`WatchedLearner`](crate::learn::change::WatchedLearner) it runs in
+    /// answers zero then).
     fn propose(&mut self, query: &Query) -> Vector3<f64> {
         let answer = self.answer(&query.five_inputs()).map(|a| a.unwrap_or(0.0));
-        finite_or_still(Vector3::from(answer))
+        Vector3::from(answer)
     }
 
-    /// Trains every pose pair of the trial. Under change detection the watch is given
-    /// the trial's summed miss (before training) relative to its summed move: see the
-    /// module's notes for why not each pattern's.
+    /// Trains every pose pair of the trial.
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
         for (from, to) in self.settings.patterns.pairs(path) {
             let pattern = adjusted_pattern(from, to);
-            if self.watch.is_some() {
-                let miss = self.miss(&pattern.input, &pattern.target);
-                if let Some(watch) = &mut self.watch {
-                    watch.book(miss, pattern.target.norm());
-                }
-            }
             self.train(&pattern.input, &pattern.target);
-        }
-        if let Some(watch) = &mut self.watch {
-            watch.close_trial();
         }
         Ok(())
     }
@@ -132,23 +102,14 @@ impl Learner for Lwpr {
             ..LearnerStats::default()
         }
     }
+}
 
-    /// Under change detection, a detected change sets every field's forgetting factor
-    /// back to `init_lambda` (see the module's notes for why).
-    fn start_trial(&mut self, trial: usize) {
-        let Some(watch) = &mut self.watch else {
-            return;
-        };
-        if watch.start_trial(trial, self.patterns).is_some() {
-            for model in &mut self.outputs {
-                model.reset_lambda(self.settings.init_lambda);
-            }
-        }
-    }
-
-    fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
-        if let Some(watch) = &mut self.watch {
-            watch.drain_events(sink);
+impl SingleModel for Lwpr {
+    /// Sets every field's forgetting factor back to `init_lambda` (see the module's notes
+    /// for why).
+    fn forget_before(&mut self, _changed_at: usize) {
+        for model in &mut self.outputs {
+            model.reset_lambda(self.settings.init_lambda);
         }
     }
 }

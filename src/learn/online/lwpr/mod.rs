@@ -32,14 +32,16 @@
 //! shared model would need one metric to serve three curvatures and a multi-output PLS;
 //! its price would be a third of the work per pattern.
 //!
-//! **Change detection** (`merge_strategy change_detection`) feeds the same per-trial watch
-//! as the nested learners ([`ChangeWatch`](crate::learn::change)), but with one value per
-//! trial: the log of the trial's summed miss before training relative to its summed move.
+//! **Change detection** (`merge_strategy change_detection`) is the single-model learners'
+//! shared watch ([`WatchedLearner`](crate::learn::change::WatchedLearner)): the nested
+//! learners' detector, but with one value per trial: the log of the trial's summed miss
+//! before training relative to its summed move.
 //! The nested learners give it each pattern's relative miss; LWPR's answers carry an
 //! absolute error floor of a few hundredths of a degree, so the many small moves between a
 //! trial's late poses miss by about their own size whatever the robot does, and their
 //! values drown the rise a change causes in the large moves (a 30° camera turn raised
-//! the per-pattern mean by a third of its spread and no alarm came). An alarm sets every field's λ back to `init_lambda`: the fields forget
+//! the per-pattern mean by a third of its spread and no alarm came). Under `change_recovery
+//! forget` an alarm sets every field's λ back to `init_lambda`: the fields forget
 //! fast again and the annealing starts over. Dropping the stale fields instead was
 //! rejected: a turned camera or a stretched link changes the mapping everywhere, so every
 //! field is stale and dropping them is learning from scratch, while the fields' layout

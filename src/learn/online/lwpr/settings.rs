@@ -1,6 +1,5 @@
 //! Settings of the `lwpr` learner, with the usual names and defaults of LWPR.
 
-use crate::learn::change::ChangeSettings;
 use crate::learn::MethodFacts;
 use crate::learn::PatternSettings;
 
@@ -42,10 +41,6 @@ pub struct LwprSettings {
     pub norm_out: f64,
     /// Which pose pairs are patterns (`minimal_joint_move`).
     pub patterns: PatternSettings,
-    /// The change watch on the trials (`merge_strategy change_detection`), none by
-    /// default: then forgetting alone tracks a changed robot. Only its detector counts:
-    /// LWPR has no subtrees to cut or nodes to starve, so `grace` and `min_fresh` go unused.
-    pub change_detection: Option<ChangeSettings>,
 }
 
 impl Default for LwprSettings {
@@ -65,7 +60,6 @@ impl Default for LwprSettings {
             add_threshold: 0.5,
             norm_out: 10.0,
             patterns: PatternSettings::default(),
-            change_detection: None,
         }
     }
 }

@@ -6,11 +6,9 @@ use super::network::{Input, Network};
 use super::replay_buffer::{Replay, Sample};
 use super::MlpSettings;
 use crate::learn::baselines::net::InputScaling;
-use crate::learn::change::TrialMiss;
-use crate::learn::inputs::finite_or_still;
+use crate::learn::change::SingleModel;
 use crate::learn::{
-    adjusted_pattern, centred, LearnError, Learner, LearnerStats, Method, ModelEvent, Observation,
-    Query,
+    adjusted_pattern, centred, LearnError, Learner, LearnerStats, Method, Observation, Query,
 };
 use nalgebra::Vector3;
 use rand::{Rng, SeedableRng};
@@ -29,9 +27,8 @@ pub struct Mlp {
     replay: Replay,
     /// Draws the batches.
     rng: ChaCha8Rng,
-    watch: Option<TrialMiss>,
-    /// Patterns learned so far (the next one's number).
-    patterns: u64,
+    /// The trial going on: it dates the patterns put into the buffer.
+    trial: usize,
 }
 
 impl Mlp {
@@ -49,8 +46,7 @@ impl Mlp {
             gradient: vec![0.0; count],
             replay: Replay::new(settings.buffer),
             rng,
-            watch: settings.change_detection.as_ref().map(TrialMiss::new),
-            patterns: 0,
+            trial: 0,
         }
     }
 
@@ -63,26 +59,15 @@ impl Mlp {
         answer * self.settings.norm_out
     }
 
-    /// Keeps one pattern (raw input `x`, joint move `target` in degrees) for replay; one
-    /// with a value that is not finite is skipped. Under change detection its miss by the
-    /// net that drove the trial is booked first.
+    /// Keeps one pattern of the trial going on (raw input `x`, joint move `target` in
+    /// degrees, both finite) for replay.
     fn remember(&mut self, x: &Input, target: &Vector3<f64>) {
-        if !x.iter().chain(target.iter()).all(|v| v.is_finite()) {
-            return;
-        }
-        if self.watch.is_some() {
-            let miss = (self.predict(x) - target).norm();
-            if let Some(watch) = &mut self.watch {
-                watch.book(Some(miss), target.norm());
-            }
-        }
         self.replay.push(Sample {
             input: self.scaling.apply(x),
             centred: self.scaling.apply(&centred(x)),
             target: target / self.settings.norm_out,
-            seq: self.patterns,
+            trial: self.trial,
         });
-        self.patterns += 1;
     }
 
     /// One Adam step on a batch drawn uniformly (with replacement) from the buffer.
@@ -124,20 +109,15 @@ impl Learner for Mlp {
     }
 
     fn propose(&mut self, query: &Query) -> Vector3<f64> {
-        finite_or_still(self.predict(&query.five_inputs()))
+        self.predict(&query.five_inputs())
     }
 
     /// Puts every pose pair of the trial into the buffer, then takes
-    /// `steps_per_trial` Adam steps. Under change detection the watch is given the
-    /// trial's summed miss relative to its summed move (the net does not change during a
-    /// trial, so that is the miss of the net that drove it).
+    /// `steps_per_trial` Adam steps.
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
         for (from, to) in self.settings.patterns.pairs(path) {
             let pattern = adjusted_pattern(from, to);
             self.remember(&pattern.input, &pattern.target);
-        }
-        if let Some(watch) = &mut self.watch {
-            watch.close_trial();
         }
         for _ in 0..self.settings.steps_per_trial {
             if crate::cancel::requested() {
@@ -156,20 +136,21 @@ impl Learner for Mlp {
         }
     }
 
-    /// Under change detection, a detected change drops every buffered pattern from before
-    /// the estimated change (see the module's notes).
     fn start_trial(&mut self, trial: usize) {
-        let Some(watch) = &mut self.watch else {
-            return;
-        };
-        if let Some(cutoff) = watch.start_trial(trial, self.patterns) {
-            self.replay.drop_before(cutoff);
-        }
+        self.trial = trial;
+    }
+}
+
+impl SingleModel for Mlp {
+    /// Drops every buffered pattern of the trials before `changed_at` (see the module's
+    /// notes).
+    fn forget_before(&mut self, changed_at: usize) {
+        self.replay.drop_before(changed_at);
     }
 
-    fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
-        if let Some(watch) = &mut self.watch {
-            watch.drain_events(sink);
-        }
+    /// Drops every buffered pattern of the trials since `changed_at`: they are in the
+    /// readings the correction is about to carry back.
+    fn unlearn_since(&mut self, changed_at: usize) {
+        self.replay.drop_since(changed_at);
     }
 }

@@ -15,9 +15,10 @@
 //!   from the buffer. The buffer's bound is its forgetting: a pattern older than
 //!   `mlp_buffer` patterns no longer trains the net.
 //!
-//! **Change detection** (`merge_strategy change_detection`) feeds the watch one value per
-//! trial, as `lwpr` does ([`TrialMiss`](crate::learn::change)). An alarm drops every
-//! buffered pattern from before the estimated change, so the steps that follow train on
+//! **Change detection** (`merge_strategy change_detection`) is the single-model learners'
+//! shared watch ([`WatchedLearner`](crate::learn::change::WatchedLearner)). Under
+//! `change_recovery forget` an alarm drops every buffered pattern of the trials before the
+//! estimated change, so the steps that follow train on
 //! the changed mapping alone; the weights and Adam's moments are kept, as the old mapping
 //! is the best start the net has. Until the first pattern after the alarm there is nothing
 //! to train on and the net answers as before.

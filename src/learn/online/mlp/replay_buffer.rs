@@ -1,10 +1,10 @@
-//! The replay buffer: the most recent learning patterns, numbered, oldest first.
+//! The replay buffer: the most recent learning patterns, dated by trial, oldest first.
 
 use super::network::Input;
 use nalgebra::Vector3;
 use std::collections::VecDeque;
 
-/// A learning pattern as the net sees it, with its number.
+/// A learning pattern as the net sees it, with its trial.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Sample {
     /// The scaled input.
@@ -13,8 +13,8 @@ pub(super) struct Sample {
     pub(super) centred: Input,
     /// The target in `norm_out` units.
     pub(super) target: Vector3<f64>,
-    /// The pattern's number in the run (0 first).
-    pub(super) seq: u64,
+    /// The trial it was learned in.
+    pub(super) trial: usize,
 }
 
 /// At most `capacity` samples; a new one pushes out the oldest.
@@ -51,10 +51,17 @@ impl Replay {
         self.samples.push_back(sample);
     }
 
-    /// Drops every sample numbered below `seq`.
-    pub(super) fn drop_before(&mut self, seq: u64) {
-        while self.samples.front().is_some_and(|s| s.seq < seq) {
+    /// Drops every sample of the trials before `trial`.
+    pub(super) fn drop_before(&mut self, trial: usize) {
+        while self.samples.front().is_some_and(|s| s.trial < trial) {
             self.samples.pop_front();
+        }
+    }
+
+    /// Drops every sample of the trials from `trial` on.
+    pub(super) fn drop_since(&mut self, trial: usize) {
+        while self.samples.back().is_some_and(|s| s.trial >= trial) {
+            self.samples.pop_back();
         }
     }
 }

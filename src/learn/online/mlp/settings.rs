@@ -1,6 +1,5 @@
 //! Settings of the `mlp` learner.
 
-use crate::learn::change::ChangeSettings;
 use crate::learn::MethodFacts;
 use crate::learn::PatternSettings;
 
@@ -28,9 +27,6 @@ pub struct MlpSettings {
     pub patterns: PatternSettings,
     /// Seed of the initial weights and of the batches' draws; 1 by default.
     pub seed: u64,
-    /// The change watch on the trials (`merge_strategy change_detection`), none by default.
-    /// Only its detector counts.
-    pub change_detection: Option<ChangeSettings>,
 }
 
 impl Default for MlpSettings {
@@ -45,7 +41,6 @@ impl Default for MlpSettings {
             norm_out: 10.0,
             patterns: PatternSettings::default(),
             seed: 1,
-            change_detection: None,
         }
     }
 }

@@ -79,20 +79,23 @@ fn adam_finds_the_minimum_of_a_quadratic() {
 }
 
 #[test]
-fn the_buffer_keeps_the_newest_and_drops_before_a_number() {
-    let sample = |seq| Sample {
+fn the_buffer_keeps_the_newest_and_drops_before_and_since_a_trial() {
+    let sample = |trial| Sample {
         input: Input::zeros(),
         centred: Input::zeros(),
         target: Vector3::zeros(),
-        seq,
+        trial,
     };
     let mut replay = Replay::new(3);
-    (0..5).for_each(|seq| replay.push(sample(seq)));
+    (0..5).for_each(|trial| replay.push(sample(trial)));
     assert_eq!(replay.len(), 3);
-    assert_eq!(replay.get(0).map(|s| s.seq), Some(2));
-    replay.drop_before(4);
+    assert_eq!(replay.get(0).map(|s| s.trial), Some(2));
+    replay.drop_before(3);
+    assert_eq!(replay.len(), 2);
+    assert_eq!(replay.get(0).map(|s| s.trial), Some(3));
+    replay.drop_since(4);
     assert_eq!(replay.len(), 1);
-    assert_eq!(replay.get(0).map(|s| s.seq), Some(4));
+    assert_eq!(replay.get(0).map(|s| s.trial), Some(3));
 }
 
 #[test]

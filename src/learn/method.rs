@@ -90,9 +90,6 @@ pub struct MethodFacts {
     pub bounded: bool,
     /// True when it watches for a change under `merge_strategy change_detection`.
     pub watches_changes: bool,
-    /// True for one model without a tree, which runs in a
-    /// [`WatchedLearner`](crate::learn::change::WatchedLearner).
-    pub single_model: bool,
     /// The entries that make a trial's learning long, named when a trial takes long.
     pub slow_entries: &'static str,
 }

@@ -157,6 +157,5 @@ pub(crate) const FFN_FACTS: MethodFacts = MethodFacts {
     kb_per_trial: 0.0,
     bounded: true,
     watches_changes: true,
-    single_model: true,
     slow_entries: "ffn_cg_iterations, ffn_window, ffn_hidden_units",
 };

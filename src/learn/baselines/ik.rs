@@ -71,6 +71,5 @@ pub(crate) const IK_FACTS: MethodFacts = MethodFacts {
     kb_per_trial: 0.0,
     bounded: false,
     watches_changes: false,
-    single_model: false,
     slow_entries: "feedback_steps, bin_size, max_stored_patterns",
 };

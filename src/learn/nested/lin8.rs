@@ -108,7 +108,6 @@ pub(crate) const LIN8_FACTS: MethodFacts = MethodFacts {
     kb_per_trial: 2.6,
     bounded: true,
     watches_changes: true,
-    single_model: false,
     slow_entries: "feedback_steps, bin_size, max_stored_patterns",
 };
 

@@ -160,6 +160,5 @@ pub(crate) const KOHONEN_FACTS: MethodFacts = MethodFacts {
     kb_per_trial: 0.0,
     bounded: true,
     watches_changes: true,
-    single_model: true,
     slow_entries: "feedback_steps, bin_size, max_stored_patterns",
 };

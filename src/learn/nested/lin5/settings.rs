@@ -47,6 +47,5 @@ pub(crate) const LIN5_FACTS: MethodFacts = MethodFacts {
     kb_per_trial: 2.1,
     bounded: true,
     watches_changes: true,
-    single_model: false,
     slow_entries: "feedback_steps, bin_size, max_stored_patterns",
 };

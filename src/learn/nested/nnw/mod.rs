@@ -87,7 +87,6 @@ pub(crate) const NNW_FACTS: MethodFacts = MethodFacts {
     kb_per_trial: 2.6,
     bounded: true,
     watches_changes: true,
-    single_model: false,
     slow_entries: "hidden_units, nnw_train_limit, feedback_steps",
 };
 

@@ -56,6 +56,5 @@ pub(crate) const ISSGP_FACTS: MethodFacts = MethodFacts {
     kb_per_trial: 0.0,
     bounded: true,
     watches_changes: true,
-    single_model: true,
     slow_entries: "issgp_features, feedback_steps",
 };

@@ -72,6 +72,5 @@ pub(crate) const LWPR_FACTS: MethodFacts = MethodFacts {
     kb_per_trial: 0.0,
     bounded: true,
     watches_changes: true,
-    single_model: true,
     slow_entries: "init_D, w_gen, feedback_steps",
 };

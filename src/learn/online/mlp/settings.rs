@@ -53,6 +53,5 @@ pub(crate) const MLP_FACTS: MethodFacts = MethodFacts {
     kb_per_trial: 0.0,
     bounded: true,
     watches_changes: true,
-    single_model: true,
     slow_entries: "mlp_steps_per_trial, mlp_batch, mlp_hidden",
 };

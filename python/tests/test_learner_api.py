@@ -151,7 +151,7 @@ def test_setup_gets_the_boundaries_fitted_to_another_arm(repo, tmp_path):
     result = eyehand.run(learner, trials=1, config=config, data=tmp_path)
     info = (result["folder"] / "info").read_text().splitlines()
     fitted = [line for line in info if line.endswith("# fitted to the arm") and line.startswith("boundary_")]
-    assert len(fitted) == 4
+    assert len(fitted) == 5  # boundaries 0 and 1 from the joints, 4 (cz) from the space
     for line in fitted:
         name, value = line.split()[:2]
         assert learner.config[name] == float(value), line

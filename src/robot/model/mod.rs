@@ -37,8 +37,8 @@ pub struct ArmPose {
     pub level_frames: Frames,
     /// The joint frames of `joints` (as [`ArmModel::link_frames`] gives them).
     pub frames: Frames,
-    /// False when no wrist angles keep the camera vertical with the image x axis radial
-    /// (the pose is then outside the arm's reach; `joints` holds the last attempt).
+    /// False when no wrist angles turn the optical axis straight down (the pose is then
+    /// outside the arm's reach; `joints` holds the last attempt).
     pub wrist_found: bool,
 }
 
@@ -115,8 +115,7 @@ impl ArmModel {
             guess: GuessGeometry::default(),
             seeds: IkSeeds::default(),
         };
-        model.wrist = Wrist::choose(&model);
-        model.rest = model.wrist.held_rest(&model);
+        (model.wrist, model.rest) = Wrist::choose(&model);
         model.update_derived();
         Ok(model)
     }

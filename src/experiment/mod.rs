@@ -15,7 +15,7 @@ mod verdict;
 pub(crate) use config::entry_name;
 pub use config::{
     declarations, defaults_text, docs_table, unused_entries, CameraKind, Config, ConfigError,
-    ConfigErrorKind, Declaration, ObstacleBox, PackagePaths, ReachSetting, Rule, Scope, SimKind,
+    CameraMount, ConfigErrorKind, Declaration, ObstacleBox, PackagePaths, ReachSetting, Rule, Scope, SimKind,
     Source, Sources, UrdfFile, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES, REPEATED_ENTRY_NAMES,
 };
 pub(crate) use config::{shown, SHOWN_CHARS};

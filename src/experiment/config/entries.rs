@@ -9,7 +9,7 @@ use super::scope::{
     PERCEPTRONS, RAYCAST, REGRESSORS, WATCHING,
 };
 use super::urdf_file::UrdfFile;
-use super::values::{CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind};
+use super::values::{CameraKind, CameraMount, ConfigValue, ObstacleBox, ReachSetting, SimKind};
 use super::{ConfigErrorKind, Rule};
 use crate::control::ServoMode;
 use crate::learn::change::ChangeRecovery;
@@ -113,6 +113,10 @@ config_entries! {
     camera_link: CameraLink = CameraLink::Auto, "", All, Rule::Any;
     /// The camera centre x,y,z in the camera link's frame (its z axis the optical axis).
     camera_offset: [f64; 3] = [0.0; 3], "cm", All, Rule::Any;
+    /// The camera on its link: offset x,y,z (m, in the link's frame) and turn roll,pitch,yaw
+    /// (° about the link's x, y, z axes, as a URDF origin's rpy); 0,0,0,0,0,0: at the link's
+    /// origin looking along its z axis (a camera on a flange that faces along -z: 0,0,0,180,0,0).
+    camera_mount: CameraMount = CameraMount::default(), "m, °", All, Rule::Any;
     /// The three learned joints (base yaw, shoulder, elbow) by URDF name, a,b,c; `auto`: the
     /// first joint turning about the vertical, then the two that move the camera most.
     learned_joints: LearnedJoints = LearnedJoints::Auto, "", All, Rule::Any;

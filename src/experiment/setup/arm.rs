@@ -17,11 +17,14 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::path::{Path, PathBuf};
 
-/// The arm settings from `camera_link`, `camera_offset` (cm) and `learned_joints`.
+/// The arm settings from `camera_link`, `camera_offset` (cm), `camera_mount` and
+/// `learned_joints`.
 pub fn arm_settings(config: &Config) -> ArmSettings {
     ArmSettings {
         camera_link: config.camera_link.clone(),
-        camera_offset: Vector3::from(config.camera_offset) * M_PER_CM,
+        camera_offset: Vector3::from(config.camera_offset) * M_PER_CM
+            + Vector3::from(config.camera_mount.offset_m),
+        camera_turn: config.camera_mount.turn(),
         learned_joints: config.learned_joints.clone(),
     }
 }

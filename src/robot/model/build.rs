@@ -9,7 +9,7 @@ use crate::robot::description::{
 use crate::robot::Shape;
 use crate::robot::MAX_JOINTS;
 use crate::robot::{LinkBody, RevoluteJoint};
-use nalgebra::{Isometry3, Translation3, Vector3};
+use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 
 /// Which part of a robot description is the arm, and where its camera sits.
 #[derive(Debug, Clone, PartialEq)]
@@ -20,6 +20,9 @@ pub struct ArmSettings {
     /// The camera centre in the camera link's frame (m), its axes the link's (z the
     /// optical axis). Default 0, 0, 0.
     pub camera_offset: Vector3<f64>,
+    /// The camera's turn in the camera link's frame, about the camera centre: its z axis
+    /// the optical axis. Default none (looking along the link's z axis).
+    pub camera_turn: UnitQuaternion<f64>,
     /// The three learned joints: the study's base yaw, shoulder and elbow. Default
     /// [`LearnedJoints::Auto`] (the OSCAR-6's `joint_1`, `joint_2`, `joint_3`).
     pub learned_joints: LearnedJoints,
@@ -30,8 +33,16 @@ impl Default for ArmSettings {
         ArmSettings {
             camera_link: CameraLink::Auto,
             camera_offset: Vector3::zeros(),
+            camera_turn: UnitQuaternion::identity(),
             learned_joints: LearnedJoints::Auto,
         }
+    }
+}
+
+impl ArmSettings {
+    /// The camera's pose in the camera link's frame: `camera_offset`, then `camera_turn`.
+    pub fn mount(&self) -> Isometry3<f64> {
+        Isometry3::from_parts(Translation3::from(self.camera_offset), self.camera_turn)
     }
 }
 
@@ -119,7 +130,7 @@ impl ArmModel {
         let camera_part = with_held_links(
             description,
             &chain,
-            camera_part(description, &chain, &settings.camera_offset),
+            camera_part(description, &chain, &settings.mount()),
         );
         let last = chain.bodies.len() - 1;
         let mut links: Vec<LinkBody> = chain
@@ -139,10 +150,10 @@ impl ArmModel {
             chain.camera_link,
             camera_part.iter(),
         ));
-        let mount = if settings.camera_offset == Vector3::zeros() {
+        let mount = if settings.mount() == Isometry3::identity() {
             chain.camera_in_body
         } else {
-            chain.camera_in_body * Translation3::from(settings.camera_offset)
+            chain.camera_in_body * settings.mount()
         };
         ArmModel::from_parts(description.name.clone(), joints, learned, mount, links).map_err(
             |_| {
@@ -155,19 +166,19 @@ impl ArmModel {
     }
 }
 
-/// The links that ride with the camera (turned with it), posed in the camera's frame: the
-/// camera link and every link fixed below it, unless the camera link is the last body's own
-/// link (then nothing rides apart from the body).
+/// The links that ride with the camera (turned with it), posed in the camera's frame (at
+/// `mount` in the camera link's): the camera link and every link fixed below it, unless the
+/// camera link is the last body's own link (then nothing rides apart from the body).
 fn camera_part(
     description: &RobotDescription,
     chain: &Chain,
-    offset: &Vector3<f64>,
+    mount: &Isometry3<f64>,
 ) -> Vec<(usize, Isometry3<f64>)> {
     let last = chain.bodies.last().expect("a body per moving joint");
     if last.links[0].0 == chain.camera_link {
         return Vec::new();
     }
-    let to_camera = Translation3::from(-offset);
+    let to_camera = mount.inverse();
     ChainBody::rooted_at(description, chain.camera_link)
         .links
         .into_iter()

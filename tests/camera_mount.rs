@@ -39,7 +39,11 @@ fn looking_down(model: &ArmModel) -> Vec<f64> {
     let mut rolls = Vec::new();
     for i in 0..5 {
         for k in 0..5 {
-            let theta = Controlled::new(0.0, inside(s.lower, s.upper, i), inside(e.lower, e.upper, k));
+            let theta = Controlled::new(
+                0.0,
+                inside(s.lower, s.upper, i),
+                inside(e.lower, e.upper, k),
+            );
             let pose = model.pose_of(&theta);
             if !model.wrist_fits(&pose) {
                 continue;
@@ -64,7 +68,11 @@ fn the_so100_looks_down_with_the_roll_its_wrist_gives() {
     )
     .unwrap();
     let rolls = looking_down(&model);
-    assert!(rolls.len() >= 10, "looks down at {} of 25 poses", rolls.len());
+    assert!(
+        rolls.len() >= 10,
+        "looks down at {} of 25 poses",
+        rolls.len()
+    );
     let radial = |r: &f64| r.sin().abs() < 1e-6 && r.cos() > 0.0;
     assert!(!rolls.iter().all(radial), "{rolls:?}");
 }
@@ -90,11 +98,42 @@ fn camera_mount_turns_the_camera_on_its_link_and_its_default_changes_nothing() {
 
 #[test]
 fn camera_mount_and_camera_offset_may_not_both_move_the_camera() {
-    let both = Config::parse("camera_offset 0,0,5\ncamera_mount 0,0,0.05,0,0,0\n", "test.conf");
+    let both = Config::parse(
+        "camera_offset 0,0,5\ncamera_mount 0,0,0.05,0,0,0\n",
+        "test.conf",
+    );
     let error = both.unwrap_err().to_string();
-    assert!(error.contains("camera_mount") && error.contains("camera_offset"), "{error}");
-    let turn = Config::parse("camera_offset 0,0,5\ncamera_mount 0,0,0,180,0,0\n", "test.conf");
+    assert!(
+        error.contains("camera_mount") && error.contains("camera_offset"),
+        "{error}"
+    );
+    let turn = Config::parse(
+        "camera_offset 0,0,5\ncamera_mount 0,0,0,180,0,0\n",
+        "test.conf",
+    );
     assert!(turn.is_ok());
     let far = Config::parse("camera_mount 0,0,11,0,0,0\n", "test.conf").unwrap_err();
     assert!(far.to_string().contains("10 m"), "{far}");
+}
+
+#[test]
+fn a_camera_no_wrist_pose_turns_down_is_refused_before_any_sampling() {
+    // The SO-101's gripper link points its z axis back into the arm, and its roll axis
+    // stands 2.8° off square to the wrist's flex axis: along that axis the camera never
+    // looks exactly down. Tilted 2.8° on the link, it does.
+    let description = robot("so_arm_description/urdf/so101.urdf");
+    let settings = |mount: &str| {
+        let config = Config::parse(&format!("camera_mount {mount}\n"), "test.conf").unwrap();
+        arm_settings(&config)
+    };
+    let error = ArmModel::from_description(&description, &settings("0,0,0,180,0,0")).unwrap_err();
+    let text = error.to_string();
+    assert!(
+        text.contains("the camera on `gripper_link` cannot look down")
+            && text.contains("wrist_flex, wrist_roll")
+            && text.contains("camera_mount"),
+        "{text}"
+    );
+    let tilted = ArmModel::from_description(&description, &settings("0,0,0,180,2.789,0"));
+    assert!(tilted.is_ok(), "{:?}", tilted.err());
 }

@@ -139,6 +139,7 @@ pub fn arm_entry(error: &DescriptionError) -> Option<&'static str> {
         Kind::UnknownLink { .. } | Kind::NoMovingJoint { .. } | Kind::PrismaticOnChain { .. } => {
             Some("camera_link")
         }
+        Kind::CannotLookDown { .. } => Some("camera_mount"),
         Kind::UnknownJoint { .. }
         | Kind::LearnedJointFixed { .. }
         | Kind::LearnedJointOffChain { .. }

@@ -289,6 +289,27 @@ pub enum DescriptionErrorKind {
         /// Moving joints after the base yaw.
         after_base: usize,
     },
+    /// A camera that no pose of the wrist turns to look straight down.
+    #[error(
+        "the camera on `{camera_link}` cannot look down: {}; if the camera looks along \
+         another axis of its link, say how it is mounted with camera_mount (roll,pitch,yaw \
+         turn the link's z axis onto the optical axis)",
+        if .wrist.is_empty() {
+            "no joint is left after the three learned ones to turn it".to_string()
+        } else {
+            format!("the joints after the learned ones ({}) turn the optical axis (the link's \
+                     z axis as camera_mount turns it) straight down inside their limits at \
+                     none of {} shoulder-elbow poses tried", .wrist.join(", "), .tried)
+        }
+    )]
+    CannotLookDown {
+        /// The camera link.
+        camera_link: String,
+        /// The joints that are not learned, nearest the base first.
+        wrist: Vec<String>,
+        /// The shoulder–elbow poses tried.
+        tried: usize,
+    },
     /// A chain with more moving joints than an arm model holds.
     #[error("the chain has {found} moving joints; an arm may have at most {max}")]
     TooManyJoints {

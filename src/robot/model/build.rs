@@ -1,7 +1,7 @@
 //! An [`ArmModel`] from any robot description: the chain to the camera link, the camera
 //! mounted where the settings say, the three learned joints named by the settings.
 
-use super::ArmModel;
+use super::{ArmModel, Wrist};
 use crate::robot::description::{
     auto_camera_link, Chain, ChainBody, DescriptionError, DescriptionErrorKind as Kind,
     GeometryElement, Inertial, JointKind, RobotDescription,
@@ -155,14 +155,24 @@ impl ArmModel {
         } else {
             chain.camera_in_body * settings.mount()
         };
-        ArmModel::from_parts(description.name.clone(), joints, learned, mount, links).map_err(
-            |_| {
-                fail(Kind::TooManyJoints {
-                    found: chain.joints.len(),
-                    max: MAX_JOINTS,
-                })
-            },
-        )
+        let model = ArmModel::from_parts(description.name.clone(), joints, learned, mount, links)
+            .map_err(|_| {
+            fail(Kind::TooManyJoints {
+                found: chain.joints.len(),
+                max: MAX_JOINTS,
+            })
+        })?;
+        if !Wrist::looks_down_somewhere(&model) {
+            return Err(fail(Kind::CannotLookDown {
+                camera_link: description.links[chain.camera_link].name.clone(),
+                wrist: (0..model.dof())
+                    .filter(|j| !learned.contains(j))
+                    .map(|j| model.joints[j].name.clone())
+                    .collect(),
+                tried: Wrist::POSES_TRIED,
+            }));
+        }
+        Ok(model)
     }
 }
 

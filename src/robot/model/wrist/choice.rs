@@ -16,6 +16,9 @@ const SCORE_STEPS: usize = 6;
 const HOLD_STEPS: usize = 8;
 
 impl Wrist {
+    /// The shoulder–elbow poses a numerical wrist is scored at.
+    pub const POSES_TRIED: usize = SCORE_STEPS * SCORE_STEPS;
+
     /// The wrist of `model` and the rest angles it holds its other joints at: one joint in
     /// closed form when it keeps the camera looking down at every test pose; else the
     /// two (or, when no two do, one) of the last three wrist joints, solved by Newton
@@ -62,6 +65,12 @@ impl Wrist {
         }
         let (_, chosen, rest) = best.expect("at least one wrist joint");
         (chosen, rest)
+    }
+
+    /// True when `model`'s wrist looks down inside its limits at one or more of the
+    /// shoulder–elbow poses it was chosen by, at least.
+    pub(in crate::robot::model) fn looks_down_somewhere(model: &ArmModel) -> bool {
+        model.wrist != Wrist::None && model.wrist.score(&mut model.clone(), &model.rest) > 0
     }
 
     /// True when this wrist turns the optical axis straight down at a grid of learned

@@ -22,6 +22,22 @@ pub enum DescriptionErrorKind {
         /// The operating system's reason.
         reason: String,
     },
+    /// A `.xacro` file, and no `xacro` program on the PATH to expand it.
+    #[error(
+        "is a xacro file and the `xacro` program that expands it is not on the PATH: install \
+         it (`pip install xacro`, or ROS's xacro package) or expand the file yourself \
+         (`xacro FILE > FILE.urdf`) and name the URDF"
+    )]
+    XacroMissing,
+    /// The `xacro` program failed on the file.
+    #[error("`xacro` could not expand it (exit status {}): {reason}",
+        .status.map_or("none".to_string(), |s| s.to_string()))]
+    XacroFailed {
+        /// Its exit status (`None`: it was not run, or a signal ended it).
+        status: Option<i32>,
+        /// What it said (the end of its error output).
+        reason: String,
+    },
     /// Not XML, or not a URDF urdf-rs can read.
     #[error("not a valid URDF: {reason}")]
     NotUrdf {

@@ -1,8 +1,9 @@
 //! The camera as users mount it, on the public arms of PyPI's `example-robot-data` (its
 //! `share/example-robot-data` folder named by `EYEHAND_ROBOT_DATA`, as in tests/corpus.rs):
 //! looking down means the optical axis straight down whatever the image's roll (the SO-100,
-//! whose wrist cannot also turn the image x axis away from the base, looks down), and the
-//! `camera_mount` entry turns the camera on its link.
+//! whose wrist cannot also turn the image x axis away from the base, looks down), a camera
+//! no wrist pose turns down is refused before any sampling, the `camera_mount` entry turns
+//! the camera on its link, and `base_link` cuts one arm out of a whole humanoid.
 
 use eyehand::experiment::setup::arm_settings;
 use eyehand::experiment::Config;
@@ -136,4 +137,39 @@ fn a_camera_no_wrist_pose_turns_down_is_refused_before_any_sampling() {
     );
     let tilted = ArmModel::from_description(&description, &settings("0,0,0,180,2.789,0"));
     assert!(tilted.is_ok(), "{:?}", tilted.err());
+}
+
+#[test]
+fn base_link_and_camera_link_cut_one_arm_out_of_a_whole_humanoid() {
+    let talos = robot("talos_data/robots/talos_reduced.urdf");
+    let arm = robot("talos_data/robots/talos_left_arm.urdf");
+    let config = |text: &str| Config::parse(text, "test.conf").unwrap();
+    let names = |model: &ArmModel| -> Vec<String> {
+        model.joints().iter().map(|j| j.name.clone()).collect()
+    };
+    let cut = ArmModel::from_description(
+        &talos,
+        &arm_settings(&config("base_link arm_left_1_link\n")),
+    )
+    .unwrap();
+    let alone = ArmModel::from_description(&arm, &ArmSettings::default()).unwrap();
+    assert_eq!(names(&cut), names(&alone));
+    assert_eq!(cut.learned(), alone.learned());
+    let error = |text: &str| {
+        ArmModel::from_description(&talos, &arm_settings(&config(text)))
+            .unwrap_err()
+            .to_string()
+    };
+    let above = error("base_link arm_left_1_link\ncamera_link arm_right_7_link\n");
+    assert!(
+        above.contains(
+            "camera link `arm_right_7_link` does not lie below base link `arm_left_1_link`"
+        ),
+        "{above}"
+    );
+    let unknown = error("base_link shoulder\n");
+    assert!(
+        unknown.contains("base link `shoulder` is not a link"),
+        "{unknown}"
+    );
 }

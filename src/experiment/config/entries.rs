@@ -14,7 +14,7 @@ use super::{ConfigErrorKind, Rule};
 use crate::control::ServoMode;
 use crate::learn::change::ChangeRecovery;
 use crate::learn::{BroydenUpdate, MergeStrategy, Method};
-use crate::robot::{CameraLink, Engine, LearnedJoints};
+use crate::robot::{BaseLink, CameraLink, Engine, LearnedJoints};
 
 use Rule::{AtLeast, NonNegative, OpenUnit, Positive, PositiveUpTo, UnitBelowOne, Within};
 use Scope::{All, Unused};
@@ -108,7 +108,10 @@ config_entries! {
     /// The arm's URDF file (a relative one is taken from the config file's folder), or
     /// `shipped` for the OSCAR-6 built in; `--urdf` overrides it.
     urdf: UrdfFile = UrdfFile::default(), "", All, Rule::Any;
-    /// The link the camera is fixed to, the chain from the URDF's root to it the arm; `auto`:
+    /// The link the arm stands on (its frame the world's; one arm of a bigger robot), or
+    /// `root`: the root of the URDF's tree.
+    base_link: BaseLink = BaseLink::Root, "", All, Rule::Any;
+    /// The link the camera is fixed to, the chain from base_link to it the arm; `auto`:
     /// the link named camera_link, else where the chain ends (tool0, a hand, the last link).
     camera_link: CameraLink = CameraLink::Auto, "", All, Rule::Any;
     /// The camera centre x,y,z in the camera link's frame (its z axis the optical axis).

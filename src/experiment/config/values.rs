@@ -4,7 +4,7 @@ use super::ValueError;
 use crate::control::ServoMode;
 use crate::learn::change::ChangeRecovery;
 use crate::learn::{BroydenUpdate, MergeStrategy, Method};
-use crate::robot::{CameraLink, Engine, LearnedJoints};
+use crate::robot::{BaseLink, CameraLink, Engine, LearnedJoints};
 use std::fmt;
 use std::str::FromStr;
 
@@ -189,6 +189,23 @@ impl ConfigValue for CameraMount {
         [x, y, z, roll, pitch, yaw]
             .map(|v| format!("{v:?}"))
             .join(",")
+    }
+}
+
+/// `root`, or a link's name.
+impl ConfigValue for BaseLink {
+    const KIND: &'static str = "root or a link";
+    fn parse_value(raw: &str) -> Result<Self, ValueError> {
+        Ok(match raw {
+            "root" => BaseLink::Root,
+            name => BaseLink::Named(name.to_string()),
+        })
+    }
+    fn render(&self) -> String {
+        match self {
+            BaseLink::Root => "root".to_string(),
+            BaseLink::Named(name) => name.clone(),
+        }
     }
 }
 

@@ -229,6 +229,20 @@ pub enum DescriptionErrorKind {
         /// The name asked for.
         link: String,
     },
+    /// A base link that is not a link of the robot.
+    #[error("base link `{link}` is not a link of the robot")]
+    UnknownBaseLink {
+        /// The name asked for.
+        link: String,
+    },
+    /// A camera link that does not hang below the base link.
+    #[error("camera link `{camera_link}` does not lie below base link `{base_link}`: the arm is the chain from the base link down to the camera link")]
+    CameraNotBelowBase {
+        /// The camera link.
+        camera_link: String,
+        /// The base link.
+        base_link: String,
+    },
     /// A moving joint on the chain that follows another (`<mimic>`): the arm's joints
     /// are moved one by one.
     #[error(

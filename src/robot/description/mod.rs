@@ -20,7 +20,7 @@ mod tree;
 mod warning;
 mod xacro;
 
-pub use auto_arm::{auto_camera_link, camera_choice, CameraChoice};
+pub use auto_arm::{camera_choice, CameraChoice};
 pub use chain::{Chain, ChainBody, ChainJoint, HeldJoint};
 pub use error::{DescriptionError, DescriptionErrorKind};
 pub use geometry::{GeometryElement, MeshGeometry, Shape};

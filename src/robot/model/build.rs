@@ -3,7 +3,7 @@
 
 use super::{ArmModel, Wrist};
 use crate::robot::description::{
-    auto_camera_link, Chain, ChainBody, DescriptionError, DescriptionErrorKind as Kind,
+    camera_choice, Chain, ChainBody, DescriptionError, DescriptionErrorKind as Kind,
     GeometryElement, Inertial, JointKind, RobotDescription,
 };
 use crate::robot::Shape;
@@ -14,6 +14,8 @@ use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 /// Which part of a robot description is the arm, and where its camera sits.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ArmSettings {
+    /// The link the arm stands on, its frame the world's. Default [`BaseLink::Root`].
+    pub base_link: BaseLink,
     /// The link the camera is fixed to; the chain from the root to it is the arm.
     /// Default [`CameraLink::Auto`] (the OSCAR-6's `camera_link`).
     pub camera_link: CameraLink,
@@ -31,6 +33,7 @@ pub struct ArmSettings {
 impl Default for ArmSettings {
     fn default() -> ArmSettings {
         ArmSettings {
+            base_link: BaseLink::Root,
             camera_link: CameraLink::Auto,
             camera_offset: Vector3::zeros(),
             camera_turn: UnitQuaternion::identity(),
@@ -44,12 +47,47 @@ impl ArmSettings {
     pub fn mount(&self) -> Isometry3<f64> {
         Isometry3::from_parts(Translation3::from(self.camera_offset), self.camera_turn)
     }
+
+    /// The base link's index in `description`.
+    pub fn base(&self, description: &RobotDescription) -> Result<usize, DescriptionError> {
+        match &self.base_link {
+            BaseLink::Root => Ok(description.root),
+            BaseLink::Named(name) => description
+                .link_index(name)
+                .ok_or_else(|| DescriptionError {
+                    file: description.file.clone(),
+                    kind: Kind::UnknownBaseLink { link: name.clone() },
+                }),
+        }
+    }
+
+    /// The chain these settings cut from `description`: from the base link to the camera
+    /// link.
+    pub fn chain(&self, description: &RobotDescription) -> Result<Chain, DescriptionError> {
+        let base = self.base(description)?;
+        match &self.camera_link {
+            CameraLink::Auto => {
+                let link = camera_choice(description, base).link;
+                Chain::below(description, base, &description.links[link].name)
+            }
+            CameraLink::Named(name) => Chain::below(description, base, name),
+        }
+    }
+}
+
+/// The link the arm stands on.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum BaseLink {
+    /// The root of the description's tree.
+    Root,
+    /// The link of this name (one arm of a bigger robot).
+    Named(String),
 }
 
 /// The link the camera is fixed to.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum CameraLink {
-    /// The link named `camera_link`, or the end of the chain ([`auto_camera_link`]).
+    /// The link named `camera_link`, or the end of the chain ([`camera_choice`] from the base link).
     Auto,
     /// The link of this name.
     Named(String),
@@ -87,11 +125,7 @@ impl ArmModel {
         description: &RobotDescription,
         settings: &ArmSettings,
     ) -> Result<ArmModel, DescriptionError> {
-        let camera_link = match &settings.camera_link {
-            CameraLink::Auto => &description.links[auto_camera_link(description)].name,
-            CameraLink::Named(name) => name,
-        };
-        let chain = Chain::new(description, camera_link)?;
+        let chain = settings.chain(description)?;
         let learned = match &settings.learned_joints {
             LearnedJoints::Auto => chain.auto_learned_joints(description)?,
             LearnedJoints::Named(names) => {

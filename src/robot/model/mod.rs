@@ -10,7 +10,7 @@ mod joint;
 mod joint_vector;
 mod wrist;
 
-pub use build::{ArmSettings, CameraLink, LearnedJoints};
+pub use build::{ArmSettings, BaseLink, CameraLink, LearnedJoints};
 pub use frames::Frames;
 pub use wrist::Wrist;
 

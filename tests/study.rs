@@ -3,17 +3,25 @@
 //! unchanged, and after the camera turns by 90° at trial 1,500 the root is cut within a few
 //! trials and learning starts over. Seed 1, kinematic OSCAR-6, 3,000 trials.
 
-use eyehand::experiment::{run, Config, RunOptions};
+use eyehand::experiment::{run, Config, RunOptions, RunResult};
 use std::path::{Path, PathBuf};
 
 /// Runs configs/study.conf for 3,000 trials, seed 1, with `edit` applied; the run folder.
 fn study_run(data: &Path, edit: impl FnOnce(&mut Config)) -> PathBuf {
-    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/study.conf");
+    run_file(data, "configs/study.conf", |config| {
+        config.trials = 3000;
+        config.seed = 1;
+        edit(config);
+    })
+    .folder
+}
+
+/// Runs the shipped config `file` with `edit` applied.
+fn run_file(data: &Path, file: &str, edit: impl FnOnce(&mut Config)) -> RunResult {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
     let mut config = Config::from_file(&file).unwrap();
-    config.trials = 3000;
-    config.seed = 1;
     edit(&mut config);
-    run(&RunOptions::new(config, data)).unwrap().folder
+    run(&RunOptions::new(config, data)).unwrap()
 }
 
 /// The trials at which the root was merged, from the run's `merges` file.
@@ -71,6 +79,33 @@ fn the_studys_90_degree_turn_cuts_the_root_within_a_few_trials_and_it_relearns()
     );
 }
 
+#[test]
+fn lin8_relearns_after_a_turn_cuts_its_root() {
+    // The study's lin8 file (fig. 5.14) with the 90° turn at trial 200: the root is cut
+    // while a trial is learned, and the fresh tree must start from pre-learning alone.
+    let data = tempfile::tempdir().unwrap();
+    let result = run_file(
+        data.path(),
+        "configs/study/fig5.14_lin8_camera_90.conf",
+        |config| {
+            config.seed = 1;
+            config.rotate_trial = 200;
+            config.trials = 600;
+        },
+    );
+    let cuts = root_merges(&result.folder);
+    assert!(
+        cuts.first().is_some_and(|&t| (200..=230).contains(&t)),
+        "root cut at trials {cuts:?}"
+    );
+    assert!(result.summary.learned, "lin8 learned nothing after the cut");
+    let relearned = four_step_mean(&result.folder, 400, 601);
+    assert!(
+        relearned < 30.0,
+        "4-step mean {relearned} mm over trials 400-600"
+    );
+}
+
 /// `eyehand check-config FILE`'s stderr.
 fn check_config_stderr(file: &Path) -> String {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_eyehand"))
@@ -86,17 +121,14 @@ fn check_config_stderr(file: &Path) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
 }
 
-#[test]
-fn check_config_warns_of_merges_that_cut_the_root_while_the_arm_is_unchanged() {
-    let study = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/study.conf");
-    assert_eq!(
-        check_config_stderr(&study),
-        "",
-        "the study's file cuts nothing"
-    );
+/// `check-config`'s stderr for the shipped `file` as it is (it must say nothing) and with
+/// `am_error_tresh 0.5` (it must warn of root cuts in `trials` trials).
+fn assert_warns_of_a_low_threshold_only(file: &str, trials: usize) {
+    let shipped = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
+    assert_eq!(check_config_stderr(&shipped), "", "{file} cuts nothing");
     let dir = tempfile::tempdir().unwrap();
     let low = dir.path().join("low.conf");
-    let listing = std::fs::read_to_string(&study).unwrap();
+    let listing = std::fs::read_to_string(&shipped).unwrap();
     std::fs::write(
         &low,
         listing.replace("am_error_tresh         5.0", "am_error_tresh 0.5"),
@@ -105,7 +137,17 @@ fn check_config_warns_of_merges_that_cut_the_root_while_the_arm_is_unchanged() {
     let warned = check_config_stderr(&low);
     assert!(
         warned.contains("am_error_tresh 0.5 over am_error_iters 50 cut the tree at its root")
-            && warned.contains("in 1499 trials of plain learning"),
+            && warned.contains(&format!("in {trials} trials of plain learning")),
         "{warned}"
     );
+}
+
+#[test]
+fn check_config_warns_of_merges_that_cut_the_root_while_the_arm_is_unchanged() {
+    assert_warns_of_a_low_threshold_only("configs/study.conf", 1499);
+}
+
+#[test]
+fn check_config_probes_an_nnw_file_for_root_cuts_too() {
+    assert_warns_of_a_low_threshold_only("configs/study/sec3.2.3_nnw.conf", 500);
 }

@@ -40,5 +40,7 @@ pub use verdict::learning_verdict::{LearningWatch, NotLearned, NotLearnedKind, R
 pub use verdict::milestones::{
     FourStepTrace, LEVEL_BEFORE_EVENT, RECOVERY_FACTOR, RECOVERY_WINDOW,
 };
-pub use verdict::root_cuts::{root_cuts_in_plain_learning, RootCuts, PROBE_TRIALS};
+pub use verdict::root_cuts::{
+    root_cuts_in_plain_learning, RootCuts, NNW_PROBE_TRIALS, PROBE_TRIALS,
+};
 pub use verdict::step_figures::StepFigures;

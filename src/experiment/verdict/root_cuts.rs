@@ -7,13 +7,18 @@ use crate::experiment::run::drive::next_trial;
 use crate::experiment::{RunError, RunSetup};
 use crate::learn::{Method, ModelEvent};
 
-/// Trials a probe learns at most.
+/// Trials a probe of `lin5` or `lin8` learns at most.
 pub const PROBE_TRIALS: usize = 2000;
+/// Trials a probe of `nnw` learns at most: its nets are re-trained as they learn, which
+/// makes a trial several times dearer (500 trials of the study's nnw file take about 3 s of
+/// CPU in an optimized build).
+pub const NNW_PROBE_TRIALS: usize = 500;
 
 /// What learning a config's first trials without its events did to the tree's root.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct RootCuts {
-    /// Trials learned: those before the config's first event, at most [`PROBE_TRIALS`].
+    /// Trials learned: those before the config's first event, at most [`PROBE_TRIALS`]
+    /// ([`NNW_PROBE_TRIALS`] for `nnw`).
     pub trials: usize,
     /// Times the root was merged.
     pub cuts: usize,
@@ -22,18 +27,20 @@ pub struct RootCuts {
 }
 
 /// Learns the first trials of `setup`'s config without any event (the trials before its
-/// first event, at most [`PROBE_TRIALS`]) and counts the root merges. `None` for a method
-/// without the study's merges, or one too slow to learn that many trials here (`nnw`).
+/// first event, at most [`PROBE_TRIALS`], or [`NNW_PROBE_TRIALS`] for `nnw`) and counts the
+/// root merges. `None` for a method without the study's merges.
 pub fn root_cuts_in_plain_learning(setup: &RunSetup) -> Result<Option<RootCuts>, RunError> {
     let config = &setup.config;
-    if !matches!(config.method, Method::Lin5 | Method::Lin8) {
-        return Ok(None);
-    }
+    let most = match config.method {
+        Method::Lin5 | Method::Lin8 => PROBE_TRIALS,
+        Method::Nnw => NNW_PROBE_TRIALS,
+        _ => return Ok(None),
+    };
     let first_event = setup.events.iter().map(|e| e.trial()).min();
     let trials = first_event
         .map_or(config.trials, |t| t.saturating_sub(1))
         .min(config.trials)
-        .min(PROBE_TRIALS);
+        .min(most);
     let mut learner = setup.learner(None)?;
     let mut loop_ = setup.trial_loop();
     learner.start_trial(0);

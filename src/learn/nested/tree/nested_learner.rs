@@ -114,7 +114,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
     /// longer be written or read: the run cannot go on without them. While a correction
     /// is fitted after a change, the patterns go to its fit instead, and the tree learns
     /// them once it is fixed. A trial that yields no pattern is booked as a failure with
-    /// the change watch.
+    /// the change watch. Once a pattern merges the root, the rest of the trial is left
+    /// unlearned: the fresh tree starts from pre-learning, as at the start of a run.
     fn learn(&mut self, path: &[Observation]) -> Result<(), LearnError> {
         if let Some(error) = self.failed.take() {
             return Err(error);
@@ -134,7 +135,12 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
                 self.corrections.book(&pattern);
             } else {
                 let corrected = self.corrections.pattern(&pattern);
-                self.train(&corrected, true, monitored)?;
+                // lin8's fresh root, given the trial's last few patterns (whose readings
+                // after the move vary, too few to fit them) before pre-learning, answers
+                // no move from then on: the arm stays put and learns nothing more.
+                if self.train(&corrected, true, monitored)? == TreeEvent::Reset {
+                    break;
+                }
             }
         }
         if let (0, Some(watch)) = (patterns, &mut self.watch) {
@@ -200,13 +206,14 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
 #[allow(private_bounds)]
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N> {
     /// Trains one pattern; `watched`: its error counts towards the change watch's value of
-    /// the trial; `monitored`: towards the running errors of the nodes on its path.
+    /// the trial; `monitored`: towards the running errors of the nodes on its path. Returns
+    /// what training it did to the tree.
     fn train(
         &mut self,
         pattern: &Pattern<N>,
         watched: bool,
         monitored: bool,
-    ) -> Result<(), LearnError> {
+    ) -> Result<TreeEvent, LearnError> {
         let event = self.tree.train_monitored(pattern, monitored)?;
         if let Some(watch) = &mut self.watch {
             if event == TreeEvent::Reset {
@@ -217,7 +224,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
             }
         }
         self.relearn |= event == TreeEvent::Reset;
-        Ok(())
+        Ok(event)
     }
 
     /// After an alarm dating the change at trial `changed_at`, pattern number `cutoff`:

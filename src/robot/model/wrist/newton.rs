@@ -44,8 +44,8 @@ pub(super) fn newton(
         // d(tilt)/d(angle): the part of each joint's turn across the optical axis.
         let optical = camera.rotation * Vector3::z();
         let mut jacobian = Matrix3::zeros();
-        for s in 0..count {
-            jacobian.set_column(s, &tilting(&axes[s], &optical));
+        for (s, axis) in axes.iter().enumerate().take(count) {
+            jacobian.set_column(s, &tilting(axis, &optical));
         }
         // Damped least squares (unused columns are 0 and held by the damping).
         let normal = jacobian.transpose() * jacobian

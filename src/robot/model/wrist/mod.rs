@@ -160,15 +160,8 @@ fn one_joint_angle(model: &ArmModel, j: usize, frames: &Frames) -> f64 {
     let (from, to) = (along(optical), along(down));
     let turn = axis.dot(&from.cross(&to)).atan2(from.dot(&to));
     // The level frames hold the joint at its rest angle (0 for the OSCAR-6).
-    let angle = match model.rest[j] {
+    match model.rest[j] {
         0.0 => turn,
         rest => rest + turn,
-    };
-    // A whole turn brings it inside limits that do not straddle 0 (the Kinova's 30°..330°).
-    let joint = &model.joints[j];
-    let turn = std::f64::consts::TAU;
-    [angle - turn, angle + turn]
-        .into_iter()
-        .find(|shifted| !joint.admits(angle) && joint.admits(*shifted))
-        .unwrap_or(angle)
+    }
 }

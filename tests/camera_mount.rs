@@ -80,21 +80,28 @@ fn the_so100_looks_down_with_the_roll_its_wrist_gives() {
 
 #[test]
 fn camera_mount_turns_the_camera_on_its_link_and_its_default_changes_nothing() {
-    let description = robot("kinova_description/robots/kinova.urdf");
     let config = |text: &str| Config::parse(text, "test.conf").unwrap();
-    let plain = ArmModel::from_description(&description, &arm_settings(&config(""))).unwrap();
+    let so100 = robot("so_arm_description/urdf/so100.urdf");
+    let plain = ArmModel::from_description(&so100, &arm_settings(&config(""))).unwrap();
     let zeros = config("camera_mount 0,0,0,0,0,0");
-    let same = ArmModel::from_description(&description, &arm_settings(&zeros)).unwrap();
+    let same = ArmModel::from_description(&so100, &arm_settings(&zeros)).unwrap();
     assert_eq!(plain, same);
-    // Link 6's z axis points back into the wrist; turned half round about x the camera
-    // looks along the hand, 5 cm out from the link's origin.
-    let flipped = config("camera_mount 0,0,-0.05,180,0,0");
-    let turned = ArmModel::from_description(&description, &arm_settings(&flipped)).unwrap();
-    let (was, is) = (plain.camera_mount(), turned.camera_mount());
-    let along = |mount: nalgebra::Isometry3<f64>| mount.rotation * Vector3::z();
-    assert!((along(is) + along(was)).norm() < 1e-12);
-    let moved = is.translation.vector - was.translation.vector;
-    assert!((moved - was.rotation * Vector3::new(0.0, 0.0, -0.05)).norm() < 1e-12);
+    // The Kinova's link 6 has its z axis pointing back into the wrist: turned half round
+    // about x the camera looks along the hand, and an offset moves it along the link's -z.
+    let kinova = robot("kinova_description/robots/kinova.urdf");
+    let mounted = |text: &str| {
+        ArmModel::from_description(&kinova, &arm_settings(&config(text)))
+            .unwrap()
+            .camera_mount()
+    };
+    let (at, out) = (
+        mounted("camera_mount 0,0,0,180,0,0"),
+        mounted("camera_mount 0,0,-0.05,180,0,0"),
+    );
+    let link = at * nalgebra::UnitQuaternion::from_euler_angles(std::f64::consts::PI, 0.0, 0.0);
+    assert!((at.rotation * Vector3::z() + link.rotation * Vector3::z()).norm() < 1e-12);
+    let moved = out.translation.vector - at.translation.vector;
+    assert!((moved - link.rotation * Vector3::new(0.0, 0.0, -0.05)).norm() < 1e-12);
 }
 
 #[test]
@@ -172,4 +179,24 @@ fn base_link_and_camera_link_cut_one_arm_out_of_a_whole_humanoid() {
         unknown.contains("base link `shoulder` is not a link"),
         "{unknown}"
     );
+}
+
+#[test]
+fn a_camera_looking_back_into_its_arm_is_refused_before_any_trial() {
+    // The Kinova's link 6 has its z axis along joint 6 back into the wrist: looking down,
+    // the camera saw link 5 10 cm below it at every start. Turned, it looks along the hand.
+    let description = robot("kinova_description/robots/kinova.urdf");
+    let settings = |mount: &str| {
+        let config = Config::parse(&format!("camera_mount {mount}\n"), "test.conf").unwrap();
+        arm_settings(&config)
+    };
+    let error = ArmModel::from_description(&description, &settings("0,0,0,0,0,0")).unwrap_err();
+    assert!(
+        error
+            .to_string()
+            .contains("the camera on `j2s6s200_link_6` looks back into the arm"),
+        "{error}"
+    );
+    let turned = ArmModel::from_description(&description, &settings("0,0,0,180,0,0"));
+    assert!(turned.is_ok(), "{:?}", turned.err());
 }

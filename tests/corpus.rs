@@ -29,10 +29,6 @@ struct Arm {
     verdict: Verdict,
 }
 
-/// The UR arms (Universal Robots' own layout, joint limits ±360°) on `tool0`: the wrist
-/// looks down everywhere, the elbow-up rule built from joint origins rejects the rest.
-const UR_ELBOW: &str = "the wrist could not look down at 0%, the elbow was not up at 75%";
-
 /// Every serial arm of the collection: a chain from a fixed base to a link that can carry
 /// a camera (legged robots, hands, humanoids' whole bodies and flying bases are not arms).
 const ARMS: &[Arm] = &[
@@ -47,19 +43,19 @@ const ARMS: &[Arm] = &[
     // The camera on link 6 looks along its z axis, back into the arm.
     Arm {
         urdf: "kinova_description/robots/kinova.urdf",
-        verdict: Verdict::Refused("only 0 of the 8 pre-learning moves can be made"),
+        verdict: Verdict::Refused("looks back into the arm"),
     },
     Arm {
         urdf: "ur_description/urdf/ur3_robot.urdf",
-        verdict: Verdict::Refused(UR_ELBOW),
+        verdict: Verdict::Learns(0.5),
     },
     Arm {
         urdf: "ur_description/urdf/ur5_robot.urdf",
-        verdict: Verdict::Refused(UR_ELBOW),
+        verdict: Verdict::Learns(0.5),
     },
     Arm {
         urdf: "ur_description/urdf/ur10_robot.urdf",
-        verdict: Verdict::Refused(UR_ELBOW),
+        verdict: Verdict::Learns(0.5),
     },
     Arm {
         urdf: "z1_description/urdf/z1.urdf",

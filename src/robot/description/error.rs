@@ -340,6 +340,21 @@ pub enum DescriptionErrorKind {
         /// The shoulder–elbow poses tried.
         tried: usize,
     },
+    /// A camera that looks back into its own arm: a joint of the chain lies on its optical
+    /// axis in front of it when it looks down.
+    #[error(
+        "the camera on `{camera_link}` looks back into the arm: joint `{joint}` lies {distance_cm:.1} cm \
+         in front of it on its optical axis (the link's z axis) when it looks down; turn it to \
+         look away from the arm with camera_mount (0,0,0,180,0,0 looks along the link's -z)"
+    )]
+    CameraFacesArm {
+        /// The camera link.
+        camera_link: String,
+        /// The joint in front of the camera.
+        joint: String,
+        /// How far in front (cm).
+        distance_cm: f64,
+    },
     /// A chain with more moving joints than an arm model holds.
     #[error("the chain has {found} moving joints; an arm may have at most {max}")]
     TooManyJoints {

@@ -206,6 +206,13 @@ impl ArmModel {
                 tried: Wrist::POSES_TRIED,
             }));
         }
+        if let Some((joint, distance)) = joint_in_front(&model) {
+            return Err(fail(Kind::CameraFacesArm {
+                camera_link: description.links[chain.camera_link].name.clone(),
+                joint: model.joints[joint].name.clone(),
+                distance_cm: distance * 100.0,
+            }));
+        }
         Ok(model)
     }
 }
@@ -280,6 +287,26 @@ fn with_held_links(
         next += 1;
     }
     links
+}
+
+/// A joint (0-based) whose origin lies in front of the camera, within 0.05 rad of its
+/// optical axis and 30 cm of it, with the learned joints in the middle of their limits
+/// and the camera looking down, and how far (m); `None` when none does (or the wrist does
+/// not look down there).
+fn joint_in_front(model: &ArmModel) -> Option<(usize, f64)> {
+    let theta = crate::robot::Controlled::from_fn(|i, _| model.joints[model.learned[i]].middle());
+    let pose = model.pose_of(&theta);
+    if !pose.wrist_found {
+        return None;
+    }
+    let centre = pose.camera.translation.vector;
+    let optical = pose.camera.rotation * Vector3::z();
+    (0..model.dof()).find_map(|k| {
+        let to = pose.frames[k].translation.vector - centre;
+        let along = to.dot(&optical);
+        let off = to.cross(&optical).norm();
+        (along > 1e-3 && along < 0.3 && off < 0.05 * along).then_some((k, along))
+    })
 }
 
 /// A collision element posed in its body.

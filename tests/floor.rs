@@ -1,8 +1,8 @@
 //! The world around the arm: a move that would take the camera or a link below the floor
 //! stops there in both simulators alike (reported and counted as a contact stop), a
-//! free-falling arm lands on the floor, an arm driven into its base comes to rest with the
-//! joint it whipped past its velocity limit reported (on both dynamic engines), and the
-//! dynamic entries refuse absurd values.
+//! free-falling arm lands on the floor, an arm driven into its base stops there with every
+//! joint within its URDF velocity limit (on both dynamic engines), and the dynamic entries
+//! refuse absurd values.
 
 use eyehand::experiment::Config;
 use eyehand::robot::{
@@ -122,12 +122,13 @@ fn a_falling_arm_lands_on_the_floor() {
 }
 
 #[test]
-fn an_arm_driven_into_its_base_comes_to_rest_and_the_wrist_it_whipped_is_reported() {
-    // `simulate --from 0,30,90,0,30,0 --to 0,-29,160,0,30,0 --duration 3`: at about 0.7 s
-    // the camera strikes the base at full speed; on `rk4` the contact stops the move (by
-    // 1 s) and the servos hold the arm there. The strike whips the light wrist (joint 5) past its 2 rad/s
-    // limit for a few ticks: a fault, counted and named, after which the arm comes to rest
-    // (it used to chatter at up to 213 rad/s for 444 ticks).
+fn an_arm_driven_into_its_base_stops_there_every_joint_within_its_velocity_limit() {
+    // `simulate --from 0,30,90,0,30,0 --to 0,-29,160,0,30,0 --duration 3`: at about 0.69 s
+    // the camera strikes the base at full speed. The contact holds the arm back from its
+    // set-point, which stops the move there (within the tick of the strike), and the
+    // servos hold the arm where it is: no joint turns faster than its URDF velocity limit
+    // on either engine (servos pushing on toward a set-point inside the base used to whip
+    // the wrist, joint 5, to 22.6 rad/s against its 2 rad/s), and the arm comes to rest.
     let deg = |v: [f64; 6]| Joints::from_slice(&v).map(f64::to_radians);
     let start = deg([0.0, 30.0, 90.0, 0.0, 30.0, 0.0]);
     let goal = deg([0.0, -29.0, 160.0, 0.0, 30.0, 0.0]);
@@ -146,24 +147,28 @@ fn an_arm_driven_into_its_base_comes_to_rest_and_the_wrist_it_whipped_is_reporte
             true,
         )
         .expect("a move inside the limits");
+        let mut fastest = 0.0f64;
         while arm.time() < 3.0 - 1e-9 {
             arm.step();
+            let share = arm
+                .speeds()
+                .iter()
+                .zip(model.joints())
+                .map(|(v, joint)| v.abs() / joint.velocity)
+                .fold(0.0, f64::max);
+            fastest = fastest.max(share);
         }
-        // Rapier's contacts hold the camera shallower than the 0.5 mm that stops a move:
-        // there the servos push on, within their efforts.
         let stopped = arm.stopped_by_contact();
-        let expected = engine == Engine::Rk4;
-        assert_eq!(stopped.is_some(), expected, "{engine:?}: {stopped:?}");
         assert!(
-            stopped.is_none_or(|t| t > 0.6 && t < 1.0),
+            stopped.is_some_and(|t| t > 0.6 && t < 0.75),
             "{engine:?}: {stopped:?}"
         );
         let (faults, worst) = arm.speed_faults();
-        let worst = worst.expect("the strike is a fault");
-        assert_eq!(worst.joint, 5, "{engine:?}: {worst}");
+        assert_eq!(faults, 0, "{engine:?}: {worst:?}");
         assert!(
-            faults < 50 && worst.speed < 40.0,
-            "{engine:?}: {faults} ticks, {worst}"
+            fastest < 1.0,
+            "{engine:?}: a joint at {:.2} of its limit",
+            fastest
         );
         assert!(
             arm.speeds().amax() < 1e-3,

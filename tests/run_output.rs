@@ -110,6 +110,10 @@ fn the_run_folder_has_every_file_and_summary_field() {
         "window",
         "mean_distance_mm",
         "median_distance_mm",
+        "settle_timeouts",
+        "stopped_by_contact",
+        "speed_faults",
+        "worst_speed_fault",
     ] {
         assert!(json.get(field).is_some(), "summary.json has {field}");
     }
@@ -161,6 +165,40 @@ fn the_command_line_runs_and_prints_the_folder() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("bad event `spin:3`"));
+}
+
+#[test]
+fn a_dynamic_run_prints_and_writes_what_its_arm_met() {
+    let data = tempfile::tempdir().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_eyehand"))
+        .args([
+            "run", "--method", "ik", "--sim", "dynamic", "--trials", "5", "--seed", "1", "--data",
+        ])
+        .arg(data.path())
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}");
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with("dynamic arm: "))
+        .unwrap_or_else(|| panic!("no line of the arm's work in {stdout}"));
+    for words in [
+        "physics steps per trial",
+        "0 settle time-outs",
+        "moves stopped by a contact",
+        "0 steps with a joint beyond its velocity limit",
+    ] {
+        assert!(line.contains(words), "{line}");
+    }
+    let summary = data.path().join("ik/0/summary.json");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(summary).unwrap()).unwrap();
+    assert_eq!(json["sim"], "dynamic");
+    assert!(json["physics_steps_per_trial"].as_f64().unwrap() > 10.0);
+    assert_eq!(json["speed_faults"], 0);
+    assert!(json["worst_speed_fault"].is_null());
+    assert!(json["moves"].as_u64().unwrap() >= 5);
 }
 
 #[test]

@@ -187,7 +187,9 @@ fn a_continuous_goal_into_the_floor_stops_on_it() {
         &Controlled::new(0.0, (-30f64).to_radians(), 20f64.to_radians()),
     );
     assert!(sim.work().contact_stops >= 1, "{:?}", sim.work());
+    // On the floor or above it (to rounding: the servos hold the arm where the set-point,
+    // stopped on the floor, put it).
     let camera_z = sim.camera_pose().translation.z;
-    assert!(camera_z > DEFAULT_FLOOR_Z, "camera at {camera_z} m");
+    assert!(camera_z > DEFAULT_FLOOR_Z - 1e-12, "camera at {camera_z} m");
     assert_eq!(sim.work().moves, 0, "no step move was made");
 }

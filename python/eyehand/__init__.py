@@ -5,8 +5,8 @@ line uses.
 
 - ``Testbed``: a trial driven one feedback step at a time (``reset``, ``step``, ``learn``,
   ``prelearn``, ``stretch_link``, ``rotate_camera``, ``fk``).
-- ``Learner``: a built-in learner (``lin5``, ``lin8``, ``nnw``, ``ffn``, ``kohonen``, ``ik``)
-  with ``propose(query)`` and ``learn(path)``.
+- ``Learner``: a built-in learner (any method ``eyehand run --method`` takes) with
+  ``propose(query)`` and ``learn(path)``.
 - ``patterns``: a path's learning patterns as the built-in learners form them;
   ``Patterns`` the same by name, and ``Query`` a query by name (``INPUTS``, ``INPUT_UNITS``,
   ``TARGETS`` name their columns; ``input_bounds`` gives a config's boundaries in that order).

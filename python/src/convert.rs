@@ -1,7 +1,7 @@
-//! Crossing the boundary: vectors and observations to and from NumPy, a config from a
-//! file and keyword entries, and the library's errors as Python exceptions.
+//! Crossing the boundary: vectors and observations to and from NumPy, a run's request
+//! from a config file and keyword entries, and the library's errors as Python exceptions.
 
-use eyehand::experiment::{Config, RunError, DEFAULT_CONFIG_NAME};
+use eyehand::experiment::{RequestError, RunError, RunOptions, RunRequest};
 use eyehand::learn::{Observation, Query};
 use nalgebra::Vector3;
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
@@ -88,34 +88,40 @@ pub fn path_from(value: &Bound<'_, PyAny>) -> PyResult<Vec<Observation>> {
         .collect()
 }
 
-/// The config file named (or the shipped default) and the name it is reported under,
-/// with `entries` (name = value) set on top; a bad file or entry is a `ValueError`.
-pub fn load_config(
+/// A run as Python asks for it: the config file named (or the shipped default), then the
+/// keyword `entries` (name = value) and the `named` arguments given (`sim`, `method`, …,
+/// as text), applied together as the command line's `--set`s are.
+pub fn run_request(
     file: Option<&Path>,
     entries: Option<&Bound<'_, PyDict>>,
-) -> PyResult<(Config, String)> {
-    let (mut config, name) = match file {
-        Some(path) => (
-            Config::from_file(path).map_err(value_error)?,
-            path.display().to_string(),
-        ),
-        None => (Config::default_config(), DEFAULT_CONFIG_NAME.to_string()),
-    };
+    named: &[(&str, Option<String>)],
+) -> PyResult<RunRequest> {
+    let mut sets = Vec::new();
     for (key, value) in entries.into_iter().flatten() {
-        let key: String = key.extract()?;
-        let text = value.str()?.to_string();
-        config
-            .set(&key, &text)
-            .map_err(|e| PyValueError::new_err(format!("{key}={text}: {e}")))?;
+        sets.push((key.extract::<String>()?, value.str()?.to_string()));
     }
-    Ok((config, name))
+    let given = named
+        .iter()
+        .filter_map(|(name, value)| Some((name.to_string(), value.clone()?)));
+    sets.extend(given);
+    Ok(RunRequest {
+        config: file.map(Path::to_path_buf),
+        sets,
+        ..RunRequest::default()
+    })
 }
 
-/// Sets one entry given as text (the `sim`, `camera`, `seed` arguments).
-pub fn set_entry(config: &mut Config, name: &str, value: &str) -> PyResult<()> {
-    config
-        .set(name, value)
-        .map_err(|e| PyValueError::new_err(format!("{name}={value}: {e}")))
+/// The options of the run `request` asks for, its config checked once with every entry
+/// in: a bad file, entry or pair of entries is a `ValueError` naming the file and line or
+/// the entry.
+pub fn run_options(request: &RunRequest) -> PyResult<RunOptions> {
+    request.options().map_err(|error| match error {
+        RequestError::Set { shown, kind } => value_error(format!("{shown}: {kind}")),
+        RequestError::Combined { config, kind } => {
+            value_error(format!("{config} with the keyword entries: {kind}"))
+        }
+        other => value_error(other),
+    })
 }
 
 /// Any error whose message is the whole story, as a `ValueError`.

@@ -2,12 +2,12 @@
 //! [`Learner`], and the built-in learners as the Python class `eyehand.Learner`.
 
 use crate::config_dict::config_dict;
-use crate::convert::{load_config, path_array, path_from, query_array, query_from, vector3};
+use crate::convert::{
+    path_array, path_from, query_array, query_from, run_options, run_request, value_error, vector3,
+};
 use crate::named::{NamedQuery, Patterns};
-use eyehand::experiment::setup::build_learner;
-use eyehand::experiment::{Config, StopRequest};
+use eyehand::experiment::{Config, RunRequest, StopRequest};
 use eyehand::learn::{LearnError, Learner, LearnerStats, Observation, Query};
-use eyehand::robot::ArmModel;
 use nalgebra::Vector3;
 use numpy::PyArray1;
 use pyo3::exceptions::{PyKeyboardInterrupt, PyValueError};
@@ -259,9 +259,9 @@ impl Learner for PyLearner {
     }
 }
 
-/// A built-in learner (`lin5`, `lin8`, `nnw`, `ffn`, `kohonen`, `ik`, `lwpr`, `issgp`,
-/// `mlp`, `broyden`) with the settings of
-/// a config: `Learner(method="lin5", config=None, urdf=None, **entries)`.
+/// A built-in learner (any of `Method::ALL`, by name) with the settings of a config, built
+/// as a run builds its learner (on an arm other than the OSCAR-6, its boundaries fitted to
+/// that arm): `Learner(method="lin5", config=None, urdf=None, **entries)`.
 #[pyclass(unsendable, module = "eyehand", name = "Learner")]
 #[derive(Debug)]
 pub struct BuiltinLearner {
@@ -285,10 +285,13 @@ impl BuiltinLearner {
         urdf: Option<PathBuf>,
         entries: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<BuiltinLearner> {
-        let (mut config, _) = load_config(config.as_deref(), entries)?;
-        crate::convert::set_entry(&mut config, "method", method)?;
-        let model = nominal_model(&config, urdf.as_deref())?;
-        let inner = build_learner(&config, &model, None).map_err(crate::convert::value_error)?;
+        let named = [("method", Some(method.to_string()))];
+        let request = RunRequest {
+            urdf,
+            ..run_request(config.as_deref(), entries, &named)?
+        };
+        let setup = run_options(&request)?.setup().map_err(value_error)?;
+        let inner = setup.learner(None).map_err(value_error)?;
         Ok(BuiltinLearner { inner })
     }
 
@@ -334,15 +337,4 @@ impl BuiltinLearner {
     fn __repr__(&self) -> String {
         format!("eyehand.Learner({:?})", self.inner.name())
     }
-}
-
-/// The arm a URDF describes (the shipped OSCAR-6 without one) as the config's arm entries
-/// pick it out; a bad URDF is a `ValueError`.
-pub fn nominal_model(
-    config: &eyehand::experiment::Config,
-    urdf: Option<&std::path::Path>,
-) -> PyResult<ArmModel> {
-    eyehand::experiment::setup::load_arm(config, urdf)
-        .map(|arm| arm.model)
-        .map_err(crate::convert::value_error)
 }

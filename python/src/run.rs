@@ -3,9 +3,11 @@
 //! after its current trial, as it does on the command line: the folder keeps a summary
 //! marked interrupted, and `KeyboardInterrupt` is raised once the run has written it.
 
-use crate::convert::{load_config, run_error, set_entry, value_error};
+use crate::convert::{run_error, run_options, run_request, value_error};
 use crate::learner::{ErrorSlot, PyLearner, SIGINT};
-use eyehand::experiment::{run, run_learner_set_up, Event, RunError, RunOptions, RunResult};
+use eyehand::experiment::{
+    run, run_learner_set_up, Event, RunError, RunOptions, RunRequest, RunResult,
+};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -39,19 +41,14 @@ pub fn run_py(
     plot: bool,
     entries: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<(String, String, String)> {
-    let (mut config, config_name) = load_config(config.as_deref(), entries)?;
-    let overrides = [
+    let named = [
         ("method", method.map(str::to_string)),
         ("sim", sim.map(str::to_string)),
         ("camera", camera.map(str::to_string)),
         ("seed", seed.map(|s| s.to_string())),
         ("trials", trials.map(|t| t.to_string())),
     ];
-    for (name, value) in overrides {
-        if let Some(value) = value {
-            set_entry(&mut config, name, &value)?;
-        }
-    }
+    let request = run_request(config.as_deref(), entries, &named)?;
     if learner.is_some() && method.is_some() {
         return Err(PyValueError::new_err(
             "give a learner or a method, not both",
@@ -61,13 +58,14 @@ pub fn run_py(
         .iter()
         .map(|e| e.parse::<Event>().map_err(value_error))
         .collect::<PyResult<Vec<_>>>()?;
-    let options = RunOptions {
-        config_name,
+    let request = RunRequest {
         urdf,
+        data,
         events,
         plot,
-        ..RunOptions::new(config, data)
+        ..request
     };
+    let options = run_options(&request)?;
     let result = match learner {
         None => run_interruptible(py, &options)?.map_err(run_error)?,
         Some(object) => run_python_learner(py, object, &options)?,

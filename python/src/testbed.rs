@@ -1,11 +1,11 @@
 //! `eyehand.Testbed`: the trial loop of a run, driven one feedback step at a time from
 //! Python, on the simulator and camera a run's config names.
 
-use crate::convert::{load_config, path_array, query_array, set_entry, value_error, vector3};
+use crate::convert::{path_array, query_array, run_options, run_request, value_error, vector3};
 use crate::learner::{BuiltinLearner, ErrorSlot, PyLearner};
 use crate::view::EpisodeView;
 use eyehand::control::{Failure, StepError, TrialEnd, TrialLoop};
-use eyehand::experiment::{CameraKind, Event, RunSetup, Sources};
+use eyehand::experiment::{CameraKind, RunRequest, RunSetup};
 use eyehand::learn::{LearnError, Learner};
 use eyehand::robot::Controlled;
 use eyehand::units::{MM_PER_M, M_PER_CM};
@@ -289,8 +289,9 @@ impl Testbed {
     }
 }
 
-/// The testbed's setup: the config file (or the default) with `entries`, `sim`, `camera`
-/// and `seed` set, and the arm of `urdf`, checked as a run checks them.
+/// The testbed's setup: the config file (or the default) with `entries`, `sim` and
+/// `camera` set together and checked once, the `seed`, and the arm of `urdf`, checked as a
+/// run checks them.
 pub fn run_setup(
     config: Option<PathBuf>,
     sim: &str,
@@ -299,12 +300,16 @@ pub fn run_setup(
     urdf: Option<PathBuf>,
     entries: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<RunSetup> {
-    let (mut config, _) = load_config(config.as_deref(), entries)?;
-    set_entry(&mut config, "sim", sim)?;
-    set_entry(&mut config, "camera", camera)?;
-    config.seed = seed;
-    let events = Event::of_run(&config, &[]);
-    RunSetup::new(config, urdf.as_deref(), events, &Sources::default()).map_err(value_error)
+    let named = [
+        ("sim", Some(sim.to_string())),
+        ("camera", Some(camera.to_string())),
+    ];
+    let request = RunRequest {
+        seed: Some(seed),
+        urdf,
+        ..run_request(config.as_deref(), entries, &named)?
+    };
+    run_options(&request)?.setup().map_err(value_error)
 }
 
 /// Runs `body` with `learner` as a Rust learner: a built-in `eyehand.Learner` directly,

@@ -103,3 +103,25 @@ def test_a_bad_config_file_is_a_value_error_naming_file_and_line(repo, tmp_path)
         eyehand.run(config=bad, data=tmp_path)
     with pytest.raises(ValueError, match="unknown entry `no_such_entry`"):
         eyehand.Testbed(no_such_entry=3)
+
+
+@pytest.mark.parametrize("order", ["sim first", "entries first"])
+def test_keyword_entries_are_applied_together_and_checked_once(order):
+    # camera_fps above 0 needs the dynamic simulator: given together, in either order, the
+    # pair is one valid config.
+    given = {"sim": "dynamic", "camera_fps": 30} if order == "sim first" else {"camera_fps": 30, "sim": "dynamic"}
+    testbed = eyehand.Testbed(seed=2, **given)
+    assert testbed.reset().shape == (5,)
+    _reading, _joints, distance, _seen = testbed.step([0.5, 0.5, 0.5])
+    assert np.isfinite(distance)
+    learner = eyehand.Learner("lin5", **given)
+    assert learner.name == "lin5"
+
+
+def test_a_bad_keyword_entry_is_refused_with_its_name():
+    with pytest.raises(ValueError, match="camera_fps"):
+        eyehand.Testbed(sim="dynamic", camera_fps=-1)
+    with pytest.raises(ValueError, match="camera_fps"):
+        eyehand.Testbed(camera_fps=30)
+    with pytest.raises(ValueError, match="tree_depth"):
+        eyehand.Learner("lin5", tree_depth="deep")

@@ -5,6 +5,7 @@
 //! 130/143 for a run stopped by SIGINT/SIGTERM. Output goes through `say`, so a closed
 //! pipe or a full disk behind stdout ends the program with a code, never a panic.
 
+mod method_arg;
 mod reach;
 mod report;
 mod run;

@@ -15,9 +15,8 @@ pub(super) struct RunArgs {
     /// The config file; an entry it does not give keeps its default (default: none).
     #[arg(long)]
     config: Option<PathBuf>,
-    /// The learning method: lin5, lin8, nnw, ffn, kohonen, ik, lwpr, issgp, mlp or
-    /// broyden.
-    #[arg(long)]
+    /// The learning method.
+    #[arg(long, value_enum)]
     method: Option<Method>,
     /// The simulator: kinematic or dynamic.
     #[arg(long)]

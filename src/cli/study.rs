@@ -17,9 +17,8 @@ use std::path::PathBuf;
 pub(super) struct CompareArgs {
     #[command(subcommand)]
     action: Option<StudyAction>,
-    /// The methods, comma-separated (of
-    /// lin5,lin8,nnw,ffn,kohonen,ik,lwpr,issgp,mlp,broyden).
-    #[arg(long, value_delimiter = ',', required = true)]
+    /// The methods, comma-separated.
+    #[arg(long, value_enum, value_delimiter = ',', required = true)]
     methods: Vec<Method>,
     /// Trials per run.
     #[arg(

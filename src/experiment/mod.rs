@@ -23,9 +23,10 @@ pub(crate) use config::{shown, SHOWN_CHARS};
 pub use output::data_files::DataFiles;
 pub use output::process_memory::{peak_rss_kb, resident_kb};
 pub use output::run_folder::{allocate_run_folder, fresh_run_folder, RunFolderError, RUN_IDS};
-pub use output::summary::{RunSummary, SensorSummary};
-pub use run::drive::{run, run_learner, run_learner_set_up, RunError, RunOptions, RunResult};
+pub use output::summary::{RunSummary, SensorSummary, SpeedFaultSummary};
+pub use run::drive::{run, run_learner, run_learner_set_up};
 pub use run::interrupt::StopRequest;
+pub use run::run_options::{RunError, RunOptions, RunResult};
 pub use run::tree_lines::TREE_LINES_FILE;
 pub use setup::events::{Event, EventError};
 pub use setup::preflight::{

@@ -1,5 +1,7 @@
-//! The learning methods a run can choose.
+//! The learning methods a run can choose, and the facts each learner's folder declares
+//! about itself.
 
+use crate::learn::LearnerStats;
 use std::fmt;
 use std::str::FromStr;
 
@@ -43,33 +45,56 @@ impl Method {
         Method::Broyden,
     ];
 
+    /// What the program knows of the method besides its learner, declared in the
+    /// learner's own folder. The match names every variant: a new method does not compile
+    /// until its facts are listed here.
+    pub const fn facts(self) -> &'static MethodFacts {
+        use crate::learn::{baselines, nested, online};
+        match self {
+            Method::Lin5 => &nested::LIN5_FACTS,
+            Method::Lin8 => &nested::LIN8_FACTS,
+            Method::Nnw => &nested::NNW_FACTS,
+            Method::Ffn => &baselines::FFN_FACTS,
+            Method::Kohonen => &baselines::KOHONEN_FACTS,
+            Method::Ik => &baselines::IK_FACTS,
+            Method::Lwpr => &online::LWPR_FACTS,
+            Method::Issgp => &online::ISSGP_FACTS,
+            Method::Mlp => &online::MLP_FACTS,
+            Method::Broyden => &baselines::BROYDEN_FACTS,
+        }
+    }
+
     /// The method's name as written in configs and folder names.
     pub fn name(self) -> &'static str {
-        match self {
-            Method::Lin5 => "lin5",
-            Method::Lin8 => "lin8",
-            Method::Nnw => "nnw",
-            Method::Ffn => "ffn",
-            Method::Kohonen => "kohonen",
-            Method::Ik => "ik",
-            Method::Lwpr => "lwpr",
-            Method::Issgp => "issgp",
-            Method::Mlp => "mlp",
-            Method::Broyden => "broyden",
-        }
+        self.facts().name
     }
 }
 
-impl Method {
-    /// True for the methods whose size is a count of nodes: the tree nodes of lin5, lin8
-    /// and nnw, the receptive fields of lwpr and the neurons of kohonen (ffn and mlp are
-    /// one net, ik and issgp have none).
-    pub fn has_nodes(self) -> bool {
-        matches!(
-            self,
-            Method::Lin5 | Method::Lin8 | Method::Nnw | Method::Lwpr | Method::Kohonen
-        )
-    }
+/// What the program knows of a built-in method besides its learner: its name, how its
+/// size is reported, what the Slurm memory estimate counts for it, and which of the entries
+/// shared by several learners apply to it. Each learner's folder declares its own.
+#[derive(Debug, Clone, Copy)]
+pub struct MethodFacts {
+    /// The name in configs, on the command line and in `data/<method>/`.
+    pub name: &'static str,
+    /// The learner's size in its own terms, from its figures, ending in `; ` (empty for
+    /// one that has none to speak of).
+    pub size: fn(&LearnerStats) -> String,
+    /// True when its size (`nodes`) is a count of nodes: tree nodes, receptive fields, map
+    /// cells.
+    pub counts_nodes: bool,
+    /// Memory a run keeps per trial (kB), for the Slurm memory estimate: the patterns
+    /// stored.
+    pub kb_per_trial: f64,
+    /// True when its root box is the input boundaries 0–4 (the `boundary_*` entries).
+    pub bounded: bool,
+    /// True when it watches for a change under `merge_strategy change_detection`.
+    pub watches_changes: bool,
+    /// True for one model without a tree, which `change_recovery correct` wraps in a
+    /// [`CorrectedLearner`](crate::learn::change::CorrectedLearner).
+    pub single_model: bool,
+    /// The entries that make a trial's learning long, named when a trial takes long.
+    pub slow_entries: &'static str,
 }
 
 impl fmt::Display for Method {

@@ -23,7 +23,7 @@ pub use inputs::{
     adjusted_pattern, centred, pose_pairs, unadjusted_pattern, Observation, Pattern, Pattern5,
     Pattern8, PatternSettings, Query,
 };
-pub use method::Method;
+pub use method::{Method, MethodFacts};
 pub use nested::{Lin5, Lin5Settings, Lin8, Lin8Settings, MergeStrategy, Nnw, NnwSettings};
 pub use nested::{NestedLearner, NestedSettings, PerceptronSettings, TreeSettings};
 pub use online::{Issgp, IssgpSettings, Lwpr, LwprSettings, Mlp, MlpSettings};

@@ -2,7 +2,7 @@
 //! or dynamic.
 
 use super::model::{ArmModel, Controlled};
-use super::{Joints, Obstacle, RobotError, WorldView, DEFAULT_FLOOR_Z};
+use super::{Joints, Obstacle, RobotError, SpeedFault, WorldView, DEFAULT_FLOOR_Z};
 use nalgebra::Isometry3;
 
 /// How commanded moves are executed.
@@ -65,6 +65,10 @@ pub struct SimWork {
     pub settle_timeouts: u64,
     /// Moves stopped by a contact (the floor, an obstacle or another link).
     pub contact_stops: u64,
+    /// Physics steps after which a joint turned faster than its URDF velocity limit.
+    pub speed_faults: u64,
+    /// The joint furthest beyond its velocity limit in any of them.
+    pub worst_speed_fault: Option<SpeedFault>,
 }
 
 /// A simulated OSCAR-6 with a camera in its end-effector.

@@ -117,16 +117,27 @@ pub fn gap_at(gaps: &[(f64, f64)], t: f64) -> f64 {
 }
 
 /// How far the dynamic arm strays from MuJoCo over a servoed move.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct MoveGaps {
-    /// The largest joint difference at any tick (degrees).
-    pub joints_deg: f64,
     /// The largest distance between the camera centres at any tick (mm), both placed by
     /// the model's kinematics.
     pub camera_mm: f64,
     /// The ticks each arm took to settle at the goal (ours, MuJoCo's): the first tick
     /// from which every joint stays within the settle tolerances of it.
     pub settle_ticks: (usize, usize),
+    /// At each of MuJoCo's rows the time (s) and the largest joint difference (°), for
+    /// [`gap_at`].
+    pub over_time: Vec<(f64, f64)>,
+}
+
+impl MoveGaps {
+    /// The largest joint difference at any tick (degrees).
+    pub fn joints_deg(&self) -> f64 {
+        self.over_time
+            .iter()
+            .map(|(_, gap)| *gap)
+            .fold(0.0, f64::max)
+    }
 }
 
 /// Move `n` of tests/data/PREFIXmoves.csv on `model` stepped with `settings`, held
@@ -180,13 +191,14 @@ pub fn trace_gaps(
         (*q - goal).amax() <= settings.settle_position_tol && v.amax() <= settings.settle_speed_tol
     };
     let (mut ours, mut theirs) = (Vec::new(), Vec::new());
-    let (mut joints_deg, mut camera_mm) = (0.0f64, 0.0f64);
+    let mut camera_mm = 0.0f64;
+    let mut over_time = Vec::with_capacity(reference.len());
     for (tick, row) in reference.iter().enumerate() {
         if tick > 0 {
             arm.step();
         }
         let (q, v) = (pose(&row[1..]), pose(&row[1 + dof..]));
-        joints_deg = joints_deg.max(apart(&arm.joints(), &q).to_degrees());
+        over_time.push((row[0], apart(&arm.joints(), &q).to_degrees()));
         let camera = model.camera_position(&arm.joints()) - model.camera_position(&q);
         camera_mm = camera_mm.max(1000.0 * camera.norm());
         ours.push(settled(&arm.joints(), &arm.speeds()));
@@ -194,26 +206,24 @@ pub fn trace_gaps(
     }
     let settle = |flags: &[bool]| flags.iter().rposition(|s| !s).map_or(0, |last| last + 1);
     MoveGaps {
-        joints_deg,
         camera_mm,
         settle_ticks: (settle(&ours), settle(&theirs)),
+        over_time,
     }
 }
 
-/// A 20 s undamped swing of the OSCAR-6 at 5 ms on `engine` from a bent pose: its change of
-/// total energy from start to end (J) and its peak kinetic energy (J).
-pub fn undamped_swing_energy(engine: Engine) -> (f64, f64) {
-    let start = Joints::from_slice(&[0.0, 30.0, 20.0, 0.0, 40.0, 0.0]).map(f64::to_radians);
+/// The bent pose (rad) the OSCAR-6's undamped swing starts from.
+pub fn oscar6_swing_start() -> Joints {
+    Joints::from_slice(&[0.0, 30.0, 20.0, 0.0, 40.0, 0.0]).map(f64::to_radians)
+}
+
+/// A 20 s passive swing of `model` (undamped where its URDF is) from `start` at 5 ms on
+/// `engine`, limits and contacts off: its change of total energy from start to end (J)
+/// and its peak kinetic energy (J).
+pub fn undamped_swing_energy(model: &ArmModel, start: &Joints, engine: Engine) -> (f64, f64) {
     let settings = with_dt(5e-3, engine);
-    let mut arm = FreeArm::new(
-        ArmModel::oscar6(),
-        &start,
-        settings,
-        Drive::Passive,
-        false,
-        false,
-    )
-    .expect("a finite start");
+    let mut arm = FreeArm::new(model.clone(), start, settings, Drive::Passive, false, false)
+        .expect("a finite start");
     let first = arm.energy().total();
     let mut peak = 0.0f64;
     while arm.time() < 20.0 - 1e-9 {

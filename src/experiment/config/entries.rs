@@ -1,5 +1,6 @@
 //! Every config entry, declared once: its doc line, name, kind, default, unit, what it
-//! applies to and the rule its value must meet on its own. The parser, the defaults,
+//! applies to and the rule its value must meet on its own. A learner's entries take their
+//! defaults from its settings' `Default`, written once in the learner's folder. The parser, the defaults,
 //! `info`, `config defaults`, the error messages and docs/CONFIG.md all come from here.
 
 use super::declaration::{bad_value, meets_rule, one_line, Declaration};
@@ -12,8 +13,12 @@ use super::urdf_file::UrdfFile;
 use super::values::{CameraKind, CameraMount, ConfigValue, ObstacleBox, ReachSetting, SimKind};
 use super::{ConfigErrorKind, Rule};
 use crate::control::ServoMode;
-use crate::learn::change::ChangeRecovery;
-use crate::learn::{BroydenUpdate, MergeStrategy, Method};
+use crate::learn::change::{ChangeRecovery, ChangeSettings};
+use crate::learn::{
+    BroydenSettings, BroydenUpdate, FfnSettings, IssgpSettings, KohonenSettings, Lin5Settings,
+    Lin8Settings, LwprSettings, MergeStrategy, Method, MlpSettings, NestedSettings, NnwSettings,
+    PatternSettings, PerceptronSettings, TreeSettings,
+};
 use crate::robot::{BaseLink, CameraLink, Engine, LearnedJoints};
 
 use Rule::{AtLeast, NonNegative, OpenUnit, Positive, PositiveUpTo, UnitBelowOne, Within};
@@ -21,6 +26,36 @@ use Scope::{All, Unused};
 
 /// Largest magnitude of an input boundary.
 const BOUNDARY: Rule = Within(-1e6, 1e6);
+
+// The settings whose `Default` the learners' entries below take their defaults from.
+
+fn lin5() -> Lin5Settings {
+    Lin5Settings::default()
+}
+
+fn tree() -> TreeSettings {
+    TreeSettings::default()
+}
+
+fn change() -> ChangeSettings {
+    ChangeSettings::default()
+}
+
+fn lwpr() -> LwprSettings {
+    LwprSettings::default()
+}
+
+fn issgp() -> IssgpSettings {
+    IssgpSettings::default()
+}
+
+fn mlp() -> MlpSettings {
+    MlpSettings::default()
+}
+
+fn broyden() -> BroydenSettings {
+    BroydenSettings::default()
+}
 
 config_entries! {
     /// The learning method: lin5, lin8, nnw, ffn, kohonen, ik, lwpr, issgp, mlp or
@@ -36,37 +71,37 @@ config_entries! {
     trials: usize = 10000, "", All, Within(1.0, 1e9);
     /// Input boundary 0 (θ2, the shoulder) of the learner's root box, low end (boundaries 0
     /// and 1 left at their defaults on a URDF other than the shipped one: fitted to the arm).
-    boundary_0_low: f64 = -10.0, "°", BOUNDED, BOUNDARY;
+    boundary_0_low: f64 = lin5().bounds[0].0, "°", BOUNDED, BOUNDARY;
     /// Input boundary 0 (θ2, the shoulder), high end.
-    boundary_0_high: f64 = 80.0, "°", BOUNDED, BOUNDARY;
+    boundary_0_high: f64 = lin5().bounds[0].1, "°", BOUNDED, BOUNDARY;
     /// Input boundary 1 (θ3, the elbow), low end.
-    boundary_1_low: f64 = 40.0, "°", BOUNDED, BOUNDARY;
+    boundary_1_low: f64 = lin5().bounds[1].0, "°", BOUNDED, BOUNDARY;
     /// Input boundary 1 (θ3, the elbow), high end.
-    boundary_1_high: f64 = 145.0, "°", BOUNDED, BOUNDARY;
+    boundary_1_high: f64 = lin5().bounds[1].1, "°", BOUNDED, BOUNDARY;
     /// Input boundary 2 (cx, the blob's image x), low end.
-    boundary_2_low: f64 = -512.0, "pixels", BOUNDED, BOUNDARY;
+    boundary_2_low: f64 = lin5().bounds[2].0, "pixels", BOUNDED, BOUNDARY;
     /// Input boundary 2 (cx), high end.
-    boundary_2_high: f64 = 256.0, "pixels", BOUNDED, BOUNDARY;
+    boundary_2_high: f64 = lin5().bounds[2].1, "pixels", BOUNDED, BOUNDARY;
     /// Input boundary 3 (cy, the blob's image y), low end.
-    boundary_3_low: f64 = -512.0, "pixels", BOUNDED, BOUNDARY;
+    boundary_3_low: f64 = lin5().bounds[3].0, "pixels", BOUNDED, BOUNDARY;
     /// Input boundary 3 (cy), high end.
-    boundary_3_high: f64 = 256.0, "pixels", BOUNDED, BOUNDARY;
+    boundary_3_high: f64 = lin5().bounds[3].1, "pixels", BOUNDED, BOUNDARY;
     /// Input boundary 4 (cz, from the blob's area), low end.
-    boundary_4_low: f64 = -150.0, "", BOUNDED, BOUNDARY;
+    boundary_4_low: f64 = lin5().bounds[4].0, "", BOUNDED, BOUNDARY;
     /// Input boundary 4 (cz), high end.
-    boundary_4_high: f64 = 300.0, "", BOUNDED, BOUNDARY;
+    boundary_4_high: f64 = lin5().bounds[4].1, "", BOUNDED, BOUNDARY;
     /// Input boundary 5 (dx, the image x after the move), low end.
-    boundary_5_low: f64 = -256.0, "pixels", LIN8, BOUNDARY;
+    boundary_5_low: f64 = Lin8Settings::default().bounds[5].0, "pixels", LIN8, BOUNDARY;
     /// Input boundary 5 (dx), high end.
-    boundary_5_high: f64 = 256.0, "pixels", LIN8, BOUNDARY;
+    boundary_5_high: f64 = Lin8Settings::default().bounds[5].1, "pixels", LIN8, BOUNDARY;
     /// Input boundary 6 (dy, the image y after the move), low end.
-    boundary_6_low: f64 = -256.0, "pixels", LIN8, BOUNDARY;
+    boundary_6_low: f64 = Lin8Settings::default().bounds[6].0, "pixels", LIN8, BOUNDARY;
     /// Input boundary 6 (dy), high end.
-    boundary_6_high: f64 = 256.0, "pixels", LIN8, BOUNDARY;
+    boundary_6_high: f64 = Lin8Settings::default().bounds[6].1, "pixels", LIN8, BOUNDARY;
     /// Input boundary 7 (dz, cz after the move), low end.
-    boundary_7_low: f64 = -200.0, "", LIN8, BOUNDARY;
+    boundary_7_low: f64 = Lin8Settings::default().bounds[7].0, "", LIN8, BOUNDARY;
     /// Input boundary 7 (dz), high end.
-    boundary_7_high: f64 = 200.0, "", LIN8, BOUNDARY;
+    boundary_7_high: f64 = Lin8Settings::default().bounds[7].1, "", LIN8, BOUNDARY;
     /// ε: a trial may stop once the camera is this close to the target.
     min_target_distance: f64 = 0.05, "cm", All, PositiveUpTo(10.0);
     /// At most this many feedback steps per trial (a trial learns every pair of its poses).
@@ -75,7 +110,7 @@ config_entries! {
     /// feedback_steps).
     min_feedback_steps: usize = 5, "", All, Rule::Any;
     /// A pose pair is a learning pattern only if at least one joint moved this much.
-    minimal_joint_move: f64 = 0.01, "°", All, Within(0.0, 10.0);
+    minimal_joint_move: f64 = PatternSettings::default().minimal_joint_move, "°", All, Within(0.0, 10.0);
     /// Top joint speed of a move's trapezoidal profile.
     robot_speed: f64 = 90.0, "°/s", All, Within(0.1, 3600.0);
     /// Joint acceleration of a move's trapezoidal profile.
@@ -169,166 +204,166 @@ config_entries! {
     /// Signed length added to that link (negative shortens it).
     elongate_cm: f64 = 0.0, "cm", All, Within(-1000.0, 1000.0);
     /// The tree is not split deeper than this.
-    tree_depth: usize = 8, "", NESTED, Within(1.0, 12.0);
+    tree_depth: usize = tree().max_depth, "", NESTED, Within(1.0, 12.0);
     /// A sub-box is split off when its stored patterns' error in its parent exceeds this.
-    split_error: f64 = 0.0001, "", NESTED, NonNegative;
+    split_error: f64 = tree().split_error, "", NESTED, NonNegative;
     /// Stored patterns a sub-box needs before it is split off (keep it at 25 or more).
-    min_pats_for_split: usize = 50, "", NESTED, Within(1.0, 1e6);
+    min_pats_for_split: usize = tree().min_pats_for_split, "", NESTED, Within(1.0, 1e6);
     /// Learning patterns each bin keeps (the oldest is dropped when full).
-    bin_size: usize = 5, "", NESTED, Within(1.0, 10000.0);
+    bin_size: usize = tree().bin_size, "", NESTED, Within(1.0, 10000.0);
     /// Stored patterns in all bins together at most, past which the least recently used
     /// bins are dropped whole (0: no cap; otherwise at least bin_size).
-    max_stored_patterns: usize = 2000000, "", NESTED, Rule::Any;
+    max_stored_patterns: usize = tree().max_stored_patterns, "", NESTED, Rule::Any;
     /// Relative merge: a child is cut when its running error exceeds its parent's on its box
     /// by this much (99.05: never, in practice).
-    merge_error: f64 = 99.05, "", PERCEPTRONS, NonNegative;
+    merge_error: f64 = tree().merge_error, "", PERCEPTRONS, NonNegative;
     /// Absolute merge: a node is cut when its mean miss over its last am_error_iters
     /// patterns exceeds this.
-    am_error_tresh: f64 = 20.0, "°", PERCEPTRONS, Positive;
+    am_error_tresh: f64 = tree().am_error_tresh, "°", PERCEPTRONS, Positive;
     /// Patterns averaged for the absolute merge.
-    am_error_iters: usize = 300, "", PERCEPTRONS, Within(1.0, 10000.0);
+    am_error_iters: usize = tree().am_error_iters, "", PERCEPTRONS, Within(1.0, 10000.0);
     /// How changes of the mapping are handled: thesis (the study's merges) or
     /// change_detection (also watch the trials and relearn after an alarm).
-    merge_strategy: MergeStrategy = MergeStrategy::Thesis, "", WATCHING, Rule::Any;
+    merge_strategy: MergeStrategy = NestedSettings::default().merge_strategy, "", WATCHING, Rule::Any;
     /// change_detection: a trial counts towards an alarm by how far its mean log relative
     /// error is above the baseline, less this many spreads.
-    change_drift: f64 = 0.5, "", WATCHING, NonNegative;
+    change_drift: f64 = change().detector.drift, "", WATCHING, NonNegative;
     /// change_detection: alarm level of the CUSUM statistic (spreads).
-    change_threshold: f64 = 16.0, "", WATCHING, Positive;
+    change_threshold: f64 = change().detector.threshold, "", WATCHING, Positive;
     /// change_detection: trials the baseline averages over.
-    change_baseline: usize = 300, "", WATCHING, Within(1.0, 1e9);
+    change_baseline: usize = change().detector.baseline, "", WATCHING, Within(1.0, 1e9);
     /// change_detection: trials that pass before a trial's value enters the baseline.
-    change_lag: usize = 60, "", WATCHING, Within(0.0, 1e6);
+    change_lag: usize = change().detector.lag, "", WATCHING, Within(0.0, 1e6);
     /// change_detection: trials watched before the first alarm can come, after the start
     /// and after each alarm (above change_lag).
-    change_warmup: usize = 200, "", WATCHING, Rule::Any;
+    change_warmup: usize = change().detector.warmup, "", WATCHING, Rule::Any;
     /// change_detection: patterns from after a change a node needs before it answers again.
-    change_min_fresh: usize = 20, "", NESTED, Rule::Any;
+    change_min_fresh: usize = change().min_fresh, "", NESTED, Rule::Any;
     /// change_detection: trials after an alarm, and between later checks, before subtrees
     /// starved of new patterns are cut.
-    change_grace: usize = 200, "", NESTED, AtLeast(1.0);
+    change_grace: usize = change().grace, "", NESTED, AtLeast(1.0);
     /// change_detection: what an alarm does to a learner: correct (keep its model and fit a
     /// correction of the camera readings from the patterns since the change) or forget (a
     /// nested learner drops what was learned before the change and cuts what stays
     /// starved; lwpr, issgp and mlp forget as their notes say; ffn and kohonen have none).
-    change_recovery: ChangeRecovery = ChangeRecovery::Correct, "", WATCHING, Rule::Any;
+    change_recovery: ChangeRecovery = change().recovery, "", WATCHING, Rule::Any;
     /// change_recovery correct: patterns since a change its correction of the readings is
     /// fitted from before it is fixed, once a refit no longer moves it, and the tree learns
     /// again (at least 30, the patterns from which queries go through it; lin8's config sets
     /// 600).
-    change_fit_patterns: usize = 300, "", WATCHING, AtLeast(30.0);
+    change_fit_patterns: usize = change().fit_patterns, "", WATCHING, AtLeast(30.0);
     /// change_recovery correct: stored patterns a sub-box needs before it is split off once
     /// a correction is fixed (the changed robot works where the tree is still coarse; never
     /// more than min_pats_for_split).
-    change_split_patterns: usize = 20, "", NESTED, Within(1.0, 1e6);
+    change_split_patterns: usize = change().split_patterns, "", NESTED, Within(1.0, 1e6);
     /// The error of each tree level is averaged over this many patterns.
-    monitor_ave: usize = 100, "", PERCEPTRONS, Within(1.0, 1e7);
+    monitor_ave: usize = tree().monitor_ave, "", PERCEPTRONS, Within(1.0, 1e7);
     /// Kept from the study's config, whose author did not know its use.
     split_extension: f64 = 2.0, "", Unused, Rule::Any;
     /// Staggered sum-sets (perceptrons) per node.
-    nr_of_matrices: usize = 5, "", PERCEPTRONS, Within(1.0, 1000.0);
+    nr_of_matrices: usize = PerceptronSettings::default().sum_sets, "", PERCEPTRONS, Within(1.0, 1000.0);
     /// Patterns a sum-set holds before it is cleared (at least nr_of_matrices).
-    max_pats_in_mat: usize = 1000, "", PERCEPTRONS, Rule::Any;
+    max_pats_in_mat: usize = PerceptronSettings::default().set_size, "", PERCEPTRONS, Rule::Any;
     /// Known patterns (c = 0 → Δθ = 0) trained per 100 regular patterns.
-    known_pattern_perc: f64 = 50.0, "", PERCEPTRONS, Within(0.0, 1000.0);
+    known_pattern_perc: f64 = tree().known_pattern_perc, "", PERCEPTRONS, Within(0.0, 1000.0);
     /// lin8: the d boundaries shrink by this factor per tree depth (the study's 0.20
     /// starves this arm's tree below depth 4; 0.5 halves the d box like every other input).
-    error_area_shrink: f64 = 0.5, "", LIN8, PositiveUpTo(1.0);
+    error_area_shrink: f64 = Lin8Settings::default().error_area_shrink, "", LIN8, PositiveUpTo(1.0);
     /// nnw: at most this many patterns re-train a node after a trial.
-    nnw_train_limit: usize = 300, "", NNW, Within(0.0, 1e6);
+    nnw_train_limit: usize = tree().retrain_limit, "", NNW, Within(0.0, 1e6);
     /// nnw: a node is re-trained once it got this many new patterns.
-    nnw_train_delay: usize = 15, "", NNW, Rule::Any;
+    nnw_train_delay: usize = tree().retrain_delay, "", NNW, Rule::Any;
     /// Initial weights of a net are drawn in ±wrange.
-    wrange: f64 = 0.1, "", NETS, PositiveUpTo(10.0);
+    wrange: f64 = NnwSettings::default().wrange, "", NETS, PositiveUpTo(10.0);
     /// nnw: hidden units of each node's net (at most 100: every node trains its own net,
     /// and 5,000 take 6 s a trial).
-    hidden_units: usize = 5, "", NNW, Within(1.0, 100.0);
+    hidden_units: usize = NnwSettings::default().hidden_units, "", NNW, Within(1.0, 100.0);
     /// ffn: hidden units of the one net (25; the study also tried 45; at most 1,000:
     /// 10,000 take 5 s a trial).
-    ffn_hidden_units: usize = 25, "", FFN, Within(1.0, 1000.0);
+    ffn_hidden_units: usize = FfnSettings::default().hidden_units, "", FFN, Within(1.0, 1000.0);
     /// ffn: the net is trained on this many most recent patterns.
-    ffn_window: usize = 1000, "", FFN, Within(1.0, 1e6);
+    ffn_window: usize = FfnSettings::default().window, "", FFN, Within(1.0, 1e6);
     /// ffn: conjugate-gradient (Polak-Ribière) iterations after every trial (at most
     /// 1,000: 10,000 take 3 s a trial).
-    ffn_cg_iterations: usize = 10, "", FFN, Within(0.0, 1000.0);
+    ffn_cg_iterations: usize = FfnSettings::default().cg_iterations, "", FFN, Within(0.0, 1000.0);
     /// kohonen: neurons per side of the 5-D lattice (7: the study's 16,807).
-    kohonen_side: usize = 7, "", KOHONEN, Within(2.0, 12.0);
+    kohonen_side: usize = KohonenSettings::default().side, "", KOHONEN, Within(2.0, 12.0);
     /// kohonen: patterns over which the neighbourhood and the learning rates shrink.
-    kohonen_anneal_patterns: usize = 150000, "", KOHONEN, AtLeast(1.0);
+    kohonen_anneal_patterns: usize = KohonenSettings::default().anneal_patterns, "", KOHONEN, AtLeast(1.0);
     /// lwpr: a new receptive field's distance metric, times the identity (per squared
     /// normalised input; 25: a Gaussian of σ 0.2 of each input range).
-    init_D: f64 = 25.0, "", LWPR, PositiveUpTo(1e6);
+    init_D: f64 = lwpr().init_d, "", LWPR, PositiveUpTo(1e6);
     /// lwpr: a new field's learning rate of its distance metric.
-    init_alpha: f64 = 50.0, "", LWPR, PositiveUpTo(1e6);
+    init_alpha: f64 = lwpr().init_alpha, "", LWPR, PositiveUpTo(1e6);
     /// lwpr: a new field is made where no field is activated above this (at most 0.5:
     /// nearer 1 almost every pattern makes a field, and a run slows to a few trials per
     /// second).
-    w_gen: f64 = 0.1, "", LWPR, PositiveUpTo(0.5);
+    w_gen: f64 = lwpr().w_gen, "", LWPR, PositiveUpTo(0.5);
     /// lwpr: of two fields both activated above this, the narrower is dropped (1: never;
     /// above w_gen).
-    w_prune: f64 = 1.0, "", LWPR, Rule::Any;
+    w_prune: f64 = lwpr().w_prune, "", LWPR, Rule::Any;
     /// lwpr: a new field's forgetting factor.
-    init_lambda: f64 = 0.999, "", LWPR, OpenUnit;
+    init_lambda: f64 = lwpr().init_lambda, "", LWPR, OpenUnit;
     /// lwpr: the forgetting factor's annealing rate per update.
-    tau_lambda: f64 = 0.9999, "", LWPR, UnitBelowOne;
+    tau_lambda: f64 = lwpr().tau_lambda, "", LWPR, UnitBelowOne;
     /// lwpr: the forgetting factor a field anneals to.
-    final_lambda: f64 = 0.99999, "", LWPR, OpenUnit;
+    final_lambda: f64 = lwpr().final_lambda, "", LWPR, OpenUnit;
     /// lwpr: 1: diagonal distance metrics (a width per input); 0: full ones.
-    diag_only: usize = 1, "", LWPR, Within(0.0, 1.0);
+    diag_only: usize = usize::from(lwpr().diag_only), "", LWPR, Within(0.0, 1.0);
     /// lwpr: 1: the metric's learning rates adapt (meta learning); 0: fixed.
-    meta: usize = 0, "", LWPR, Within(0.0, 1.0);
+    meta: usize = usize::from(lwpr().meta), "", LWPR, Within(0.0, 1.0);
     /// lwpr: learning rate of the learning rates' logarithms (with meta 1).
-    meta_rate: f64 = 250.0, "", LWPR, Within(0.0, 1e6);
+    meta_rate: f64 = lwpr().meta_rate, "", LWPR, Within(0.0, 1e6);
     /// lwpr: weight of the smoothness penalty on the distance metric.
-    penalty: f64 = 0.000001, "", LWPR, Within(0.0, 1e3);
+    penalty: f64 = lwpr().penalty, "", LWPR, Within(0.0, 1e3);
     /// lwpr: another PLS projection is added once the last cut the error below this
     /// fraction.
-    add_threshold: f64 = 0.5, "", LWPR, OpenUnit;
+    add_threshold: f64 = lwpr().add_threshold, "", LWPR, OpenUnit;
     /// lwpr, issgp, mlp: outputs Δθ are learned in units of this many degrees.
-    norm_out: f64 = 10.0, "°", REGRESSORS, PositiveUpTo(1e4);
+    norm_out: f64 = lwpr().norm_out, "°", REGRESSORS, PositiveUpTo(1e4);
     /// issgp: D, the random Fourier features (the Cholesky factor is D×D).
-    issgp_features: usize = 500, "", ISSGP, Within(1.0, 4000.0);
+    issgp_features: usize = issgp().features, "", ISSGP, Within(1.0, 4000.0);
     /// issgp: the kernel's length scale of each input θ2,θ3,cx*,cy*,cz*, as a fraction of
     /// the input's boundary range (each above 0, at most 100); by default wider over the
     /// joint angles than over the offsets (the best of the sweep in docs/PEERS.md).
-    issgp_length_scales: [f64; 5] = [1.0, 1.0, 0.5, 0.5, 0.5], "", ISSGP, Rule::Any;
+    issgp_length_scales: [f64; 5] = issgp().length_scales, "", ISSGP, Rule::Any;
     /// issgp: σn, the noise of a target (in norm_out units).
-    issgp_noise: f64 = 0.01, "", ISSGP, PositiveUpTo(1e3);
+    issgp_noise: f64 = issgp().noise, "", ISSGP, PositiveUpTo(1e3);
     /// issgp: σf, the kernel's amplitude (in norm_out units).
-    issgp_signal: f64 = 1.0, "", ISSGP, PositiveUpTo(1e6);
+    issgp_signal: f64 = issgp().signal, "", ISSGP, PositiveUpTo(1e6);
     /// issgp: λ, the weight of everything learned is multiplied by this at each pattern (1:
     /// no forgetting; keep 1/(1 − λ) well above issgp_features).
-    issgp_forgetting: f64 = 1.0, "", ISSGP, Within(0.9, 1.0);
+    issgp_forgetting: f64 = issgp().forgetting, "", ISSGP, Within(0.9, 1.0);
     /// issgp: 1: the answer is anchored at the centred target (no move when cx*, cy*, cz*
     /// are 0; the default, the best of the sweep in docs/PEERS.md); 0: the paper's plain
     /// regression.
-    issgp_anchored: usize = 1, "", ISSGP, Within(0.0, 1.0);
+    issgp_anchored: usize = usize::from(issgp().anchored), "", ISSGP, Within(0.0, 1.0);
     /// mlp: tanh units in each of the net's two hidden layers.
-    mlp_hidden: usize = 32, "", MLP, Within(1.0, 1000.0);
+    mlp_hidden: usize = mlp().hidden, "", MLP, Within(1.0, 1000.0);
     /// mlp: Adam's step size.
-    mlp_rate: f64 = 0.001, "", MLP, PositiveUpTo(1.0);
+    mlp_rate: f64 = mlp().rate, "", MLP, PositiveUpTo(1.0);
     /// mlp: patterns drawn from the replay buffer for each step.
-    mlp_batch: usize = 32, "", MLP, Within(1.0, 100000.0);
+    mlp_batch: usize = mlp().batch, "", MLP, Within(1.0, 100000.0);
     /// mlp: Adam steps after each trial (16, the best of the sweep in docs/PEERS.md).
-    mlp_steps_per_trial: usize = 16, "", MLP, Within(1.0, 10000.0);
+    mlp_steps_per_trial: usize = mlp().steps_per_trial, "", MLP, Within(1.0, 10000.0);
     /// mlp: the replay buffer keeps this many most recent patterns.
-    mlp_buffer: usize = 10000, "", MLP, Within(1.0, 1e6);
+    mlp_buffer: usize = mlp().buffer, "", MLP, Within(1.0, 1e6);
     /// mlp: 1: the answer is anchored at the centred target (no move when cx*, cy*, cz* are
     /// 0; the default, the best of the sweep in docs/PEERS.md); 0: a plain net.
-    mlp_anchored: usize = 1, "", MLP, Within(0.0, 1.0);
+    mlp_anchored: usize = usize::from(mlp().anchored), "", MLP, Within(0.0, 1.0);
     /// broyden: how the image Jacobian follows each move: broyden (Broyden's rank-one
     /// secant update) or rls (recursive least squares with forgetting).
-    broyden_update: BroydenUpdate = BroydenUpdate::Broyden, "", BROYDEN, Rule::Any;
+    broyden_update: BroydenUpdate = broyden().update, "", BROYDEN, Rule::Any;
     /// broyden: α, the gain of Broyden's update (1: each move's secant condition met).
-    broyden_rate: f64 = 1.0, "", BROYDEN, PositiveUpTo(1.0);
+    broyden_rate: f64 = broyden().rate, "", BROYDEN, PositiveUpTo(1.0);
     /// broyden: λ, the forgetting factor of the rls update.
-    broyden_forgetting: f64 = 0.9, "", BROYDEN, Within(0.5, 1.0);
+    broyden_forgetting: f64 = broyden().forgetting, "", BROYDEN, Within(0.5, 1.0);
     /// broyden: μ² of the damped least-squares step, as a share of JᵀJ's mean diagonal.
-    broyden_damping: f64 = 0.001, "", BROYDEN, Within(0.0, 1000.0);
+    broyden_damping: f64 = broyden().damping, "", BROYDEN, Within(0.0, 1000.0);
     /// broyden: largest joint turn of one step (the move is scaled down to it).
-    broyden_max_step: f64 = 15.0, "°", BROYDEN, PositiveUpTo(180.0);
+    broyden_max_step: f64 = broyden().max_step_deg, "°", BROYDEN, PositiveUpTo(180.0);
     /// broyden: each exploratory move of the first trial turns one joint by this.
-    broyden_probe: f64 = 1.0, "°", BROYDEN, PositiveUpTo(10.0);
+    broyden_probe: f64 = broyden().probe_deg, "°", BROYDEN, PositiveUpTo(10.0);
     /// 0: store learning patterns in the run's pat_file; anything else: in memory.
     use_pat_file: i64 = 1, "", NESTED, Rule::Any;
     /// Memory and the per-level tree error are recorded every this many trials.

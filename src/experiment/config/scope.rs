@@ -24,29 +24,11 @@ pub enum Scope {
 pub(super) const NESTED: Scope = Scope::Methods(&[Method::Lin5, Method::Lin8, Method::Nnw]);
 /// The Nested Perceptrons.
 pub(super) const PERCEPTRONS: Scope = Scope::Methods(&[Method::Lin5, Method::Lin8]);
-/// The learners whose root box the input boundaries 0–4 are (all but `ik`).
-pub(super) const BOUNDED: Scope = Scope::Methods(&[
-    Method::Lin5,
-    Method::Lin8,
-    Method::Nnw,
-    Method::Ffn,
-    Method::Kohonen,
-    Method::Lwpr,
-    Method::Issgp,
-    Method::Mlp,
-]);
-/// The learners that watch for a change (`merge_strategy change_detection`): every one
-/// with a model.
-pub(super) const WATCHING: Scope = Scope::Methods(&[
-    Method::Lin5,
-    Method::Lin8,
-    Method::Nnw,
-    Method::Ffn,
-    Method::Kohonen,
-    Method::Lwpr,
-    Method::Issgp,
-    Method::Mlp,
-]);
+/// The learners whose root box the input boundaries 0–4 are (their facts say `bounded`).
+pub(super) const BOUNDED: Scope = Scope::Methods(&BOUNDED_METHODS);
+/// The learners that watch for a change (`merge_strategy change_detection`; their facts
+/// say `watches_changes`).
+pub(super) const WATCHING: Scope = Scope::Methods(&WATCHING_METHODS);
 /// `lin8` alone.
 pub(super) const LIN8: Scope = Scope::Methods(&[Method::Lin8]);
 /// `nnw` alone.
@@ -71,6 +53,53 @@ pub(super) const BROYDEN: Scope = Scope::Methods(&[Method::Broyden]);
 pub(super) const DYNAMIC: Scope = Scope::Sim(SimKind::Dynamic);
 /// The ray-cast camera.
 pub(super) const RAYCAST: Scope = Scope::Camera(CameraKind::Raycast);
+
+/// What a learner's facts say that puts it in a scope several learners share.
+#[derive(Debug, Clone, Copy)]
+enum SharedBy {
+    /// `bounded`.
+    Bounded,
+    /// `watches_changes`.
+    Watching,
+}
+
+const BOUNDED_METHODS: [Method; sharing_count(SharedBy::Bounded)] = sharing(SharedBy::Bounded);
+const WATCHING_METHODS: [Method; sharing_count(SharedBy::Watching)] = sharing(SharedBy::Watching);
+
+/// Whether `method`'s facts put it in the scope `by` names.
+const fn shares(method: Method, by: SharedBy) -> bool {
+    let facts = method.facts();
+    match by {
+        SharedBy::Bounded => facts.bounded,
+        SharedBy::Watching => facts.watches_changes,
+    }
+}
+
+/// How many methods share `by`.
+const fn sharing_count(by: SharedBy) -> usize {
+    let (mut count, mut i) = (0, 0);
+    while i < Method::ALL.len() {
+        if shares(Method::ALL[i], by) {
+            count += 1;
+        }
+        i += 1;
+    }
+    count
+}
+
+/// The methods that share `by`, in the order of [`Method::ALL`]; `N` is their count.
+const fn sharing<const N: usize>(by: SharedBy) -> [Method; N] {
+    let mut methods = [Method::Lin5; N];
+    let (mut n, mut i) = (0, 0);
+    while i < Method::ALL.len() {
+        if shares(Method::ALL[i], by) {
+            methods[n] = Method::ALL[i];
+            n += 1;
+        }
+        i += 1;
+    }
+    methods
+}
 
 impl fmt::Display for Scope {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

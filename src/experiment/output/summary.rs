@@ -5,6 +5,8 @@ use crate::control::MAX_RECORDED_STEPS;
 use crate::experiment::verdict::failures::FailureTally;
 use crate::experiment::verdict::learning_verdict::NotLearned;
 use crate::experiment::Config;
+use crate::learn::{LearnerStats, Method};
+use crate::robot::SpeedFault;
 use serde::{Deserialize, Serialize};
 use std::io;
 use std::path::Path;
@@ -54,6 +56,13 @@ pub struct RunSummary {
     /// Moves the arm made (absent in older summaries).
     #[serde(default)]
     pub moves: u64,
+    /// Physics steps after which a joint of the dynamic arm turned faster than its URDF
+    /// velocity limit (absent in older summaries: 0).
+    #[serde(default)]
+    pub speed_faults: u64,
+    /// The joint furthest beyond its velocity limit in those steps (null: none was).
+    #[serde(default)]
+    pub worst_speed_fault: Option<SpeedFaultSummary>,
     /// Times a merge cut the learner's tree at its root, so that it started over (absent
     /// in older summaries).
     #[serde(default)]
@@ -101,6 +110,27 @@ pub struct RunSummary {
     /// How the run learned nothing, and the likely cause (null when it learned).
     #[serde(default)]
     pub not_learned: Option<NotLearned>,
+}
+
+/// A joint that turned faster than its URDF velocity limit, as `summary.json` names it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct SpeedFaultSummary {
+    /// 1-based joint number.
+    pub joint: usize,
+    /// How fast it turned (°/s, either way).
+    pub speed_deg_s: f64,
+    /// Its URDF velocity limit (°/s).
+    pub limit_deg_s: f64,
+}
+
+impl From<SpeedFault> for SpeedFaultSummary {
+    fn from(fault: SpeedFault) -> Self {
+        SpeedFaultSummary {
+            joint: fault.joint,
+            speed_deg_s: fault.speed.to_degrees(),
+            limit_deg_s: fault.limit.to_degrees(),
+        }
+    }
 }
 
 /// What a summary written before `learned` existed says.
@@ -171,22 +201,46 @@ impl RunSummary {
             })
     }
 
-    /// The learner's size in its own terms, ending in `; ` (nothing for one that has none
-    /// to speak of: ik, ffn's one net).
+    /// The learner's size in its own terms, ending in `; `, as its method's facts give it
+    /// (nothing for one that has none to speak of: ik, ffn's one net); a learner written
+    /// outside the crate gets a generic one.
     fn model_size(&self) -> String {
-        match self.method.as_str() {
-            "lin5" | "lin8" | "nnw" => format!(
-                "tree: {} nodes, {} bins, {} patterns; ",
-                self.nodes, self.bins, self.patterns
-            ),
-            "kohonen" => format!("map: {} cells; ", self.nodes),
-            "lwpr" => format!("{} receptive fields; ", self.nodes),
-            "issgp" => format!("{} random features; ", self.nodes),
-            "mlp" => format!("replay buffer: {} patterns; ", self.patterns),
-            "broyden" => "one 3×3 image Jacobian; ".to_string(),
-            "ik" | "ffn" => String::new(),
-            _ => format!("model: {} nodes, {} patterns; ", self.nodes, self.patterns),
+        let stats = LearnerStats {
+            nodes: self.nodes,
+            bins: self.bins,
+            patterns: self.patterns,
+            ..LearnerStats::default()
+        };
+        match self.method.parse::<Method>() {
+            Ok(method) => (method.facts().size)(&stats),
+            Err(_) => format!("model: {} nodes, {} patterns; ", self.nodes, self.patterns),
         }
+    }
+
+    /// What the arm met on its moves, ending in a newline: on the dynamic simulator its
+    /// physics steps, settle time-outs, contact stops and speed faults (the worst named);
+    /// on the kinematic one its contact stops, if any (nothing otherwise).
+    fn arm_line(&self) -> String {
+        if self.sim != "dynamic" {
+            return match self.stopped_by_contact {
+                0 => String::new(),
+                n => format!("{n} of {} moves stopped by a contact\n", self.moves),
+            };
+        }
+        let worst = self.worst_speed_fault.map_or(String::new(), |w| {
+            format!(
+                " (worst: joint {} at {:.1}°/s, its limit {:.1}°/s)",
+                w.joint, w.speed_deg_s, w.limit_deg_s
+            )
+        });
+        format!(
+            "dynamic arm: {:.1} physics steps per trial, {} settle time-outs, {} of {} moves stopped by a contact, {} steps with a joint beyond its velocity limit{worst}\n",
+            self.physics_steps_per_trial,
+            self.settle_timeouts,
+            self.stopped_by_contact,
+            self.moves,
+            self.speed_faults
+        )
     }
 
     /// A short human-readable report of the run.
@@ -204,6 +258,7 @@ impl RunSummary {
             text += "interrupted: the trials above are those finished before the signal\n";
         }
         text += &format!("{}peak memory {} kB\n", self.model_size(), self.peak_rss_kb);
+        text += &self.arm_line();
         text += &format!(
             "distance to target over the last {} trials (mm):\n",
             self.window

@@ -1,11 +1,12 @@
 //! A run: the robot from its URDF, a simulator, a camera and a learner put together, the
-//! trial loop driven through every trial and event, and the run folder filled as it goes.
+//! trials driven through every event, and the run folder filled as it goes.
 
-use crate::control::{TrialLoop, TrialObserver, TrialOutcome};
+use super::info_file::{write_info_header, write_info_tail};
+use super::run_options::{RunError, RunOptions, RunResult};
+use super::trial_driver::TrialDriver;
 use crate::experiment::output::data_files::DataFiles;
 use crate::experiment::output::summary::{RunSummary, SensorSummary};
-use crate::experiment::plot::{plot_run, PlotError};
-use crate::experiment::run::interrupt::StopRequest;
+use crate::experiment::plot::plot_run;
 use crate::experiment::run::long_trial::LongTrialWatch;
 use crate::experiment::run::progress_bar::RunProgress;
 use crate::experiment::run::tree_lines::TreeLines;
@@ -14,119 +15,15 @@ use crate::experiment::verdict::learning_progress::learner_entries;
 use crate::experiment::verdict::learning_verdict::{LearningWatch, RunEnd};
 use crate::experiment::StepFigures;
 use crate::experiment::{
-    allocate_run_folder, fresh_run_folder, peak_rss_kb, resident_kb, Config, Event, PreflightError,
-    RunFolderError, RunSetup, Sources,
+    allocate_run_folder, fresh_run_folder, peak_rss_kb, resident_kb, Event, RunFolderError,
+    RunSetup,
 };
-use crate::learn::{LearnError, Learner, LearnerStats};
-use crate::robot::{DescriptionError, RobotError};
-use std::io::{self, Write};
-use std::path::{Path, PathBuf};
+use crate::learn::Learner;
+use std::path::PathBuf;
 use std::time::Instant;
 
 /// Trials the run's plot is smoothed over.
 const PLOT_SMOOTHING: usize = 50;
-
-/// Everything a run needs besides the config's entries.
-#[derive(Debug, Clone)]
-pub struct RunOptions {
-    /// The run's settings (flags already applied).
-    pub config: Config,
-    /// Where the config came from, for the `info` file.
-    pub config_name: String,
-    /// Where each of its values came from, for the `info` file (a value not recorded is
-    /// its default, or was set by the program).
-    pub sources: Sources,
-    /// The URDF to load; `None` for the shipped `urdf/oscar6.urdf`.
-    pub urdf: Option<PathBuf>,
-    /// The data folder; runs land in `<data>/<method>/<id>/`.
-    pub data_dir: PathBuf,
-    /// Events given on the command line, on top of the config's.
-    pub events: Vec<Event>,
-    /// Show a progress bar (on a terminal, for runs longer than a second).
-    pub progress: bool,
-    /// Draw `plot.png` at the end.
-    pub plot: bool,
-    /// Stops the run after its current trial when made (by SIGINT or SIGTERM, see
-    /// [`StopRequest::on_signals`]).
-    pub stop: StopRequest,
-    /// A fixed run folder (a sweep's cell), emptied first; `None` for the first free id.
-    pub folder: Option<PathBuf>,
-}
-
-impl RunOptions {
-    /// Options for a run of `config` into `data_dir`: the shipped URDF, no events beyond the
-    /// config's, no progress bar, no plot.
-    pub fn new(config: Config, data_dir: impl Into<PathBuf>) -> RunOptions {
-        RunOptions {
-            config,
-            config_name: "(given in code)".into(),
-            sources: Sources::default(),
-            urdf: None,
-            data_dir: data_dir.into(),
-            events: Vec::new(),
-            progress: false,
-            plot: false,
-            stop: StopRequest::new(),
-            folder: None,
-        }
-    }
-}
-
-/// Why a run could not start or go on.
-#[derive(Debug, thiserror::Error)]
-#[non_exhaustive]
-pub enum RunError {
-    /// The URDF is broken, or the arm the config's entries pick out of it cannot be built.
-    #[error(transparent)]
-    Urdf(#[from] DescriptionError),
-    /// The config's `camera_link` or `learned_joints` names no such part of the URDF.
-    #[error("{at}: {entry}: {source}")]
-    ArmEntry {
-        /// `file:line` of the entry, or `--set` when the command line gave it.
-        at: String,
-        /// The entry.
-        entry: &'static str,
-        /// What the URDF says to it.
-        source: Box<DescriptionError>,
-    },
-    /// The config, an event or the arm fails the checks made before the run starts.
-    #[error(transparent)]
-    Preflight(#[from] PreflightError),
-    /// No run folder could be made.
-    #[error(transparent)]
-    Folder(#[from] RunFolderError),
-    /// The learner could not be built or failed.
-    #[error(transparent)]
-    Learner(#[from] LearnError),
-    /// A learner's name that cannot name a folder (letters, digits, `_` and `-` only).
-    #[error("a learner's name must be letters, digits, `_` or `-`, not `{0}`")]
-    LearnerName(String),
-    /// An event the robot cannot undergo.
-    #[error("event {event}: {source}")]
-    Event {
-        /// The event.
-        event: Event,
-        /// Why it failed.
-        source: RobotError,
-    },
-    /// Writing the run's files failed; what was written before stays.
-    #[error("writing the run's files: {0}")]
-    Io(#[from] io::Error),
-    /// The run's plot could not be drawn; its data files are complete.
-    #[error(transparent)]
-    Plot(#[from] PlotError),
-}
-
-/// A finished run: where its files are, and its summary.
-#[derive(Debug, Clone)]
-pub struct RunResult {
-    /// The run folder.
-    pub folder: PathBuf,
-    /// What `summary.json` says.
-    pub summary: RunSummary,
-    /// The failed trials by reason.
-    pub failures: FailureTally,
-}
 
 /// Runs every trial of a run of the config's learner (or those before a stop request) and
 /// fills its folder (`<data>/<method>/<id>/`). The config, events and arm are checked
@@ -177,38 +74,16 @@ fn run_folder(options: &RunOptions, name: &str) -> Result<PathBuf, RunFolderErro
     }
 }
 
-impl RunOptions {
-    /// The run these options ask for, put together: the arm its URDF and the config's arm
-    /// entries give, the reach space, the config's events and the options', once all of
-    /// them pass the checks made before a run starts.
-    pub fn setup(&self) -> Result<RunSetup, RunError> {
-        let events = Event::of_run(&self.config, &self.events);
-        let urdf = self.urdf.as_deref();
-        RunSetup::new(self.config.clone(), urdf, events, &self.sources)
-    }
-
-    /// [`setup`](RunOptions::setup), its URDF's warnings printed to stderr.
-    pub fn warned_setup(&self) -> Result<RunSetup, RunError> {
-        let setup = self.setup()?;
-        for warning in &setup.warnings {
-            eprintln!("eyehand: warning: {warning}");
-        }
-        Ok(setup)
-    }
-}
-
 /// Drives `learner` through the run's trials and events, filling `folder`.
 fn drive(
     options: &RunOptions,
     setup: RunSetup,
     folder: PathBuf,
-    mut learner: Box<dyn Learner>,
+    learner: Box<dyn Learner>,
 ) -> Result<RunResult, RunError> {
     let config = &setup.config;
-    let events = &setup.events;
     write_info_header(&folder, options, &setup)?;
 
-    let mut trials = setup.trial_loop();
     let mut files = DataFiles::create(&folder)?;
     let mut figures = StepFigures::new(config.trials, config.feedback_steps);
     let mut failures = FailureTally::default();
@@ -218,34 +93,26 @@ fn drive(
     let mut tree_lines = TreeLines::new(&folder, options.progress);
     let long = LongTrialWatch::start(progress.printer(), config.method);
     let started = Instant::now();
-    let mut model_events = Vec::new();
     let mut root_merges = 0;
-    learner.start_trial(0);
-    trials.prelearn(learner.as_mut())?;
+    let mut driver = TrialDriver::start(setup.trial_loop(), learner, setup.events.clone())?;
     for trial in 1..=config.trials {
         if options.stop.signal().is_some() {
             break;
         }
         long.trial_begins(trial);
-        let outcome = next_trial(
-            &mut trials,
-            learner.as_mut(),
-            events,
-            trial,
-            &mut long.observer(),
-        )?;
+        let outcome = driver.next(trial, &mut long.observer())?;
         long.trial_begins(0);
-        learner.drain_events(&mut model_events);
-        files.record_model_events(trial, &model_events)?;
+        let model_events = driver.model_events();
+        files.record_model_events(trial, model_events)?;
         root_merges += model_events.iter().filter(|e| e.is_root_merge()).count();
-        model_events.clear();
         if let Some(failure) = outcome.failure {
             failures.count(failure);
         }
-        watch.trial_done(trial, &outcome, trials.path(), config.minimal_joint_move);
+        let path = driver.trials().path();
+        watch.trial_done(trial, &outcome, path, config.minimal_joint_move);
         let to_epsilon = outcome.reached.then_some(outcome.seconds);
         figures.record(trial, &outcome.distances_mm, to_epsilon);
-        let stats = learner.stats();
+        let stats = driver.learner().stats();
         files.record_trial(trial, &outcome, &stats)?;
         progress.trial_done(trial, &outcome.distances_mm, stats.nodes);
         if trial % config.depth_info == 0 || trial == config.trials {
@@ -260,8 +127,9 @@ fn drive(
     tree_lines.flush()?;
     progress.finish();
     let wall_seconds = started.elapsed().as_secs_f64();
+    let learner = driver.learner();
     let stats = learner.stats();
-    let work = trials.sim().work();
+    let work = driver.trials().sim().work();
     let per_trial = |v: f64| v / config.trials as f64;
     let (mean_final_distance_mm, median_final_distance_mm) = figures.final_distance();
     let (reached_epsilon, mean_seconds_to_epsilon) = figures.reaching();
@@ -295,8 +163,10 @@ fn drive(
         settle_timeouts: work.settle_timeouts,
         stopped_by_contact: work.contact_stops,
         moves: work.moves,
+        speed_faults: work.speed_faults,
+        worst_speed_fault: work.worst_speed_fault.map(Into::into),
         root_merges,
-        events: events.iter().map(Event::to_string).collect(),
+        events: setup.events.iter().map(Event::to_string).collect(),
         obstacles: config
             .obstacle
             .iter()
@@ -325,113 +195,4 @@ fn drive(
         summary,
         failures,
     })
-}
-
-/// Trial `trial` of a run: the events due before it applied, the learner told, pre-learning
-/// repeated if the learner asks, then the trial run and learned (`observer` told of every
-/// feedback step and of the learning: see [`TrialLoop::run_trial_observed`]). A replay of a run goes
-/// through the same steps, so it reproduces the run exactly.
-pub(crate) fn next_trial(
-    trials: &mut TrialLoop,
-    learner: &mut dyn Learner,
-    events: &[Event],
-    trial: usize,
-    observer: &mut dyn TrialObserver,
-) -> Result<TrialOutcome, RunError> {
-    for event in events.iter().filter(|e| e.trial() == trial) {
-        event
-            .apply(trials.sim_mut())
-            .map_err(|source| RunError::Event {
-                event: *event,
-                source,
-            })?;
-    }
-    learner.start_trial(trial);
-    if learner.take_relearn_request() {
-        trials.prelearn(learner)?;
-    }
-    Ok(trials.run_trial_observed(learner, observer)?)
-}
-
-fn host_name() -> String {
-    std::fs::read_to_string("/proc/sys/kernel/hostname")
-        .map(|h| h.trim().to_string())
-        .unwrap_or_else(|_| "unknown".into())
-}
-
-fn write_info_header(folder: &Path, options: &RunOptions, setup: &RunSetup) -> io::Result<()> {
-    let mut info = std::fs::File::create(folder.join("info"))?;
-    writeln!(info, "# eyehand {} run", env!("CARGO_PKG_VERSION"))?;
-    writeln!(info, "host {}", host_name())?;
-    writeln!(info, "config_file {}", options.config_name)?;
-    let urdf = setup
-        .config
-        .urdf
-        .path()
-        .map_or(crate::robot::DEFAULT_URDF_NAME.to_string(), |p| {
-            p.display().to_string()
-        });
-    writeln!(info, "urdf {urdf}")?;
-    for event in &setup.events {
-        writeln!(info, "event {event}")?;
-    }
-    writeln!(info, "\n# config")?;
-    info.write_all(setup.config.explained_text(&setup.sources).as_bytes())
-}
-
-fn write_info_tail(folder: &Path, summary: &RunSummary, stats: &LearnerStats) -> io::Result<()> {
-    let mut info = std::fs::OpenOptions::new()
-        .append(true)
-        .open(folder.join("info"))?;
-    writeln!(info, "\n# result")?;
-    writeln!(info, "wall_seconds {:.3}", summary.wall_seconds)?;
-    writeln!(
-        info,
-        "trials_per_hour {:.0}",
-        summary.trials_per_second * 3600.0
-    )?;
-    writeln!(info, "failures {}", summary.failures)?;
-    if let Some(not_learned) = &summary.not_learned {
-        writeln!(info, "not_learned {}", not_learned.reason)?;
-    }
-    if summary.interrupted {
-        writeln!(info, "interrupted after trial {}", summary.trials)?;
-    }
-    writeln!(
-        info,
-        "physics_steps_per_trial {:.1}",
-        summary.physics_steps_per_trial
-    )?;
-    writeln!(
-        info,
-        "simulated_seconds_per_trial {:.4}",
-        summary.simulated_seconds_per_trial
-    )?;
-    writeln!(info, "settle_timeouts {}", summary.settle_timeouts)?;
-    writeln!(info, "stopped_by_contact {}", summary.stopped_by_contact)?;
-    let figure = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.4}"));
-    writeln!(
-        info,
-        "final_distance_mm mean {} median {}",
-        figure(summary.mean_final_distance_mm),
-        figure(summary.median_final_distance_mm)
-    )?;
-    writeln!(
-        info,
-        "reached_epsilon {} of {} (mean {} simulated s)",
-        summary.reached_epsilon,
-        summary.window,
-        figure(summary.mean_seconds_to_epsilon)
-    )?;
-    writeln!(info, "peak_rss_kb {}", summary.peak_rss_kb)?;
-    writeln!(info, "\n# tree per level: depth nodes bins patterns error")?;
-    for (depth, level) in stats.levels.iter().enumerate() {
-        let error = level.error.map_or("-".to_string(), |e| format!("{e:.6e}"));
-        writeln!(
-            info,
-            "{depth} {} {} {} {error}",
-            level.nodes, level.bins, level.patterns
-        )?;
-    }
-    Ok(())
 }

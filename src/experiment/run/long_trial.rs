@@ -74,7 +74,7 @@ impl LongTrialWatch {
             learning_since: None,
             started: now,
             last_said: now,
-            learner_entries: slow_entries(method).to_string(),
+            learner_entries: method.facts().slow_entries.to_string(),
         }));
         let done = Arc::new(AtomicBool::new(false));
         let thread = {
@@ -135,18 +135,6 @@ impl Drop for LongTrialWatch {
         if let Some(thread) = self.thread.take() {
             let _ = thread.join();
         }
-    }
-}
-
-/// The entries that make a trial's learning long under `method`, for a long trial's line.
-fn slow_entries(method: Method) -> &'static str {
-    match method {
-        Method::Mlp => "mlp_steps_per_trial, mlp_batch, mlp_hidden",
-        Method::Ffn => "ffn_cg_iterations, ffn_window, ffn_hidden_units",
-        Method::Nnw => "hidden_units, nnw_train_limit, feedback_steps",
-        Method::Issgp => "issgp_features, feedback_steps",
-        Method::Lwpr => "init_D, w_gen, feedback_steps",
-        _ => "feedback_steps, bin_size, max_stored_patterns",
     }
 }
 

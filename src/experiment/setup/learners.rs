@@ -219,8 +219,10 @@ mod tests {
     use crate::experiment::setup::dynamic_settings;
     use crate::robot::DynamicSettings;
 
-    /// Each learner's `Settings::default` is what the config's declared defaults give, so
-    /// the two ways to build a learner cannot drift apart.
+    /// Each learner's settings from the declared defaults are its `Settings::default`
+    /// (which the declarations take their defaults from): every entry reaches the field it
+    /// names, and a default shared by two learners (`wrange`, `norm_out`) is the same in
+    /// both.
     #[test]
     fn every_settings_default_is_the_declared_defaults() {
         let config = Config::defaults();

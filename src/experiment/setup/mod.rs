@@ -144,12 +144,8 @@ pub fn build_learner(
         Method::Mlp => Box::new(Mlp::new(mlp_settings(config), input_bounds(config))),
         Method::Broyden => Box::new(Broyden::new(broyden_settings(config))),
     };
-    let single_model = matches!(
-        config.method,
-        Method::Ffn | Method::Kohonen | Method::Lwpr | Method::Issgp | Method::Mlp
-    );
     Ok(match correction_settings(config) {
-        Some(change) if single_model => Box::new(CorrectedLearner::new(
+        Some(change) if config.method.facts().single_model => Box::new(CorrectedLearner::new(
             learner,
             &change,
             pattern_settings(config),

@@ -7,9 +7,8 @@ use super::replay_bar::ReplayBar;
 use super::tracer::{Look, SharedLog, WatchLog, WatchedCamera, WatchedSim};
 use super::{RecordedRun, ShowError};
 use crate::control::{Failure, TrialLoop, TrialOutcome};
-use crate::experiment::run::drive::next_trial;
+use crate::experiment::run::trial_driver::TrialDriver;
 use crate::experiment::Event;
-use crate::learn::ModelEvent;
 use crate::robot::{ArmModel, Joints};
 use std::path::Path;
 
@@ -51,32 +50,29 @@ pub fn replay(
     let log = SharedLog::default();
     let sim = WatchedSim::new(setup.simulator(), log.clone());
     let camera = WatchedCamera::new(setup.camera(), log.clone());
-    let mut learner = setup
+    let learner = setup
         .learner(Some(scratch))
         .map_err(crate::experiment::RunError::from)?;
-    let mut trials = setup.trial_loop_around(Box::new(sim), Box::new(camera));
-    let mut model_events: Vec<ModelEvent> = Vec::new();
+    let trials = setup.trial_loop_around(Box::new(sim), Box::new(camera));
     let mut bar = ReplayBar::new(last);
-    learner.start_trial(0);
-    trials
-        .prelearn(learner.as_mut())
-        .map_err(crate::experiment::RunError::from)?;
+    let mut driver = TrialDriver::start(trials, learner, setup.events.clone())?;
     for trial in 1..=last {
         log.borrow_mut().clear();
-        trials.sim_mut().keep_ticks(ticks && watched(trial));
-        let outcome = next_trial(
-            &mut trials,
-            learner.as_mut(),
-            &setup.events,
-            trial,
-            &mut |_: usize, _: f64| {},
-        )?;
+        driver
+            .trials_mut()
+            .sim_mut()
+            .keep_ticks(ticks && watched(trial));
+        let outcome = driver.next(trial, &mut |_: usize, _: f64| {})?;
         step_one.check(run, trial, outcome.distances_mm.first().copied())?;
-        learner.drain_events(&mut model_events);
-        model_events.clear();
         bar.done(trial);
         if watched(trial) {
-            on_trial(trace_of(trial, outcome, &log, &trials, &setup.events))?;
+            on_trial(trace_of(
+                trial,
+                outcome,
+                &log,
+                driver.trials(),
+                &setup.events,
+            ))?;
         }
     }
     Ok(())

@@ -6,7 +6,6 @@ use super::cells::{shell_quote, CellLauncher};
 use super::plan::{StudyFolder, StudyPlan};
 use super::StudyError;
 use crate::experiment::{Config, SimKind};
-use crate::learn::Method;
 use std::path::Path;
 
 /// What the job script asks Slurm for, beyond one CPU per task.
@@ -74,22 +73,12 @@ fn is_memory(value: &str) -> bool {
         && value.len() - digits.len() <= 1
 }
 
-/// A cell's peak memory class (MB): twice the estimate from measured peaks (docs/RESULTS.md:
-/// about 7 MB plus 2.1 kB per trial for lin5, 2.6 kB for lin8 and nnw; ffn, kohonen and ik stay
-/// under 9 MB, lwpr keeps no patterns and stayed under 12 MB in docs/LWPR.md; Rapier's multibody adds about 20 MB), rounded up to a power of two, at
-/// least 256 MB.
+/// A cell's peak memory class (MB): twice the estimate from measured peaks, rounded up to a
+/// power of two, at least 256 MB. The estimate is 9 MB, plus the method's stored patterns
+/// per trial (its facts' `kb_per_trial`: 2.1 kB for lin5, 2.6 kB for lin8 and nnw, none for
+/// the learners that keep no growing store), plus about 20 MB for Rapier's multibody.
 pub fn memory_class_mb(config: &Config) -> u64 {
-    let per_trial_kb = match config.method {
-        Method::Lin5 => 2.1,
-        Method::Lin8 | Method::Nnw => 2.6,
-        Method::Ffn
-        | Method::Kohonen
-        | Method::Ik
-        | Method::Lwpr
-        | Method::Issgp
-        | Method::Mlp
-        | Method::Broyden => 0.0,
-    };
+    let per_trial_kb = config.method.facts().kb_per_trial;
     let dynamic_mb = if config.sim == SimKind::Dynamic {
         20.0
     } else {
@@ -236,6 +225,7 @@ pub fn resubmit_line(script: &Path, indices: &[usize]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::learn::Method;
 
     #[test]
     fn resubmit_lines_name_exactly_the_given_cells() {

@@ -142,12 +142,12 @@ fn window_line(runs: &[CellResult]) -> String {
     )
 }
 
-/// True when the run's learner counts nodes (see [`Method::has_nodes`]).
+/// True when the run's learner counts nodes (see [`MethodFacts::counts_nodes`](crate::learn::MethodFacts::counts_nodes)).
 fn has_nodes(summary: &RunSummary) -> bool {
     summary
         .method
         .parse::<Method>()
-        .is_ok_and(Method::has_nodes)
+        .is_ok_and(|method: Method| method.facts().counts_nodes)
 }
 
 /// A figure with `digits` decimals, in scientific notation when below 1e-4 (but not 0),

@@ -3,7 +3,7 @@
 //! counts the root merges, so a file whose absolute merge fires on plain learning is
 //! caught before a run throws its tree away.
 
-use crate::experiment::run::drive::next_trial;
+use crate::experiment::run::trial_driver::TrialDriver;
 use crate::experiment::{RunError, RunSetup};
 use crate::learn::{Method, ModelEvent};
 
@@ -41,24 +41,19 @@ pub fn root_cuts_in_plain_learning(setup: &RunSetup) -> Result<Option<RootCuts>,
         .map_or(config.trials, |t| t.saturating_sub(1))
         .min(config.trials)
         .min(most);
-    let mut learner = setup.learner(None)?;
-    let mut loop_ = setup.trial_loop();
-    learner.start_trial(0);
-    loop_.prelearn(learner.as_mut())?;
+    let mut driver = TrialDriver::start(setup.trial_loop(), setup.learner(None)?, Vec::new())?;
     let mut probe = RootCuts {
         trials,
         cuts: 0,
         first: None,
     };
-    let mut events = Vec::new();
     for trial in 1..=trials {
-        next_trial(&mut loop_, learner.as_mut(), &[], trial, &mut |_, _| {})?;
-        learner.drain_events(&mut events);
+        driver.next(trial, &mut |_, _| {})?;
+        let events = driver.model_events();
         if events.iter().any(ModelEvent::is_root_merge) {
             probe.first.get_or_insert(trial);
         }
         probe.cuts += events.iter().filter(|e| e.is_root_merge()).count();
-        events.clear();
     }
     Ok(Some(probe))
 }

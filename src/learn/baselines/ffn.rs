@@ -4,6 +4,7 @@
 //! by conjugate-gradient back-propagation on that window after every trial.
 
 use super::net::{minimize, BatchLoss, DenseNet, InputScaling};
+use crate::learn::MethodFacts;
 use crate::learn::{adjusted_pattern, Observation, PatternSettings, Query};
 use crate::learn::{LearnError, Learner, LearnerStats, Method};
 use nalgebra::{SVector, Vector3};
@@ -113,3 +114,15 @@ impl Learner for FfnLearner {
         }
     }
 }
+
+/// What the program knows of `ffn` besides its learner (see [`Method::facts`](crate::learn::Method::facts)).
+pub(crate) const FFN_FACTS: MethodFacts = MethodFacts {
+    name: "ffn",
+    size: |_| String::new(),
+    counts_nodes: false,
+    kb_per_trial: 0.0,
+    bounded: true,
+    watches_changes: true,
+    single_model: true,
+    slow_entries: "ffn_cg_iterations, ffn_window, ffn_hidden_units",
+};

@@ -5,6 +5,7 @@
 //! stretched or the camera turned.
 
 use crate::camera::{Camera, CameraModel, ProjectionCamera};
+use crate::learn::MethodFacts;
 use crate::learn::{LearnError, Learner, LearnerStats, Method};
 use crate::learn::{Observation, Query};
 use crate::robot::{ArmModel, Controlled};
@@ -61,3 +62,15 @@ impl Learner for IkLearner {
         LearnerStats::default()
     }
 }
+
+/// What the program knows of `ik` besides its learner (see [`Method::facts`](crate::learn::Method::facts)).
+pub(crate) const IK_FACTS: MethodFacts = MethodFacts {
+    name: "ik",
+    size: |_| String::new(),
+    counts_nodes: false,
+    kb_per_trial: 0.0,
+    bounded: false,
+    watches_changes: false,
+    single_model: false,
+    slow_entries: "feedback_steps, bin_size, max_stored_patterns",
+};

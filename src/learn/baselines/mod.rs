@@ -9,7 +9,11 @@ mod ik;
 mod kohonen;
 pub mod net;
 
+pub(crate) use broyden::BROYDEN_FACTS;
 pub use broyden::{Broyden, BroydenSettings, BroydenUpdate, ImageJacobian};
+pub(crate) use ffn::FFN_FACTS;
 pub use ffn::{FfnLearner, FfnSettings};
 pub use ik::IkLearner;
+pub(crate) use ik::IK_FACTS;
+pub(crate) use kohonen::KOHONEN_FACTS;
 pub use kohonen::{KohonenLearner, KohonenSettings, Lattice, Neighbourhood};

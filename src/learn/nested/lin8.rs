@@ -14,6 +14,8 @@
 use super::lin5::FIVE_INPUT_BOUNDS;
 use super::perceptron::{Perceptron, PerceptronSettings};
 use super::tree::{Narrowing, NestedLearner, NestedSettings, Region};
+use crate::learn::nested::tree::tree_size;
+use crate::learn::MethodFacts;
 use crate::learn::{unadjusted_pattern, LearnError, Method, Query};
 use nalgebra::SVector;
 use std::path::PathBuf;
@@ -97,6 +99,18 @@ fn lin8_input(query: &Query) -> SVector<f64, 8> {
         0.0,
     ])
 }
+
+/// What the program knows of `lin8` besides its learner (see [`Method::facts`](crate::learn::Method::facts)).
+pub(crate) const LIN8_FACTS: MethodFacts = MethodFacts {
+    name: "lin8",
+    size: tree_size,
+    counts_nodes: true,
+    kb_per_trial: 2.6,
+    bounded: true,
+    watches_changes: true,
+    single_model: false,
+    slow_entries: "feedback_steps, bin_size, max_stored_patterns",
+};
 
 #[cfg(test)]
 mod tests {

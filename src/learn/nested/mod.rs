@@ -8,9 +8,12 @@ mod nnw;
 mod perceptron;
 pub(crate) mod tree;
 
+pub(crate) use lin5::LIN5_FACTS;
 pub use lin5::{Lin5, Lin5Settings};
+pub(crate) use lin8::LIN8_FACTS;
 pub use lin8::{Lin8, Lin8Settings};
 pub use merge_strategy::MergeStrategy;
+pub(crate) use nnw::NNW_FACTS;
 pub use nnw::{Nnw, NnwSettings};
 pub use perceptron::PerceptronSettings;
 pub use tree::{NestedLearner, NestedSettings, TreeSettings};

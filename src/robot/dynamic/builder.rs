@@ -69,6 +69,11 @@ impl Arm {
         world.gravity = Vector::new(0.0, 0.0, -GRAVITY);
         world.integration_parameters.dt = settings.dt;
         world.integration_parameters.num_solver_iterations = settings.solver_iterations;
+        // Every contact found anew at every step: Rapier would otherwise keep a pair's
+        // contact points, normal and distance while the pair moves less than 5 cm from where
+        // they were found, and a link striking something at speed would be stopped at stale
+        // points along a stale normal (it whipped the wrist of a camera struck on the base).
+        world.integration_parameters.contact_recycling = false;
         let dof = model.dof();
         let frames = model.link_frames(&Joints::zeros(dof));
         let mut bodies = Vec::with_capacity(dof + 1);

@@ -2,12 +2,13 @@
 //! shared rule lets touch (not neighbours in the chain, apart at the zero pose:
 //! robot/clearance.rs). The plan already stops a move where the kinematic rule finds
 //! contact; a link that still digs into the floor, an obstacle or another link stops a
-//! move, as a joint limit does.
+//! move, as a joint limit does, and so does a contact that holds the arm back from its
+//! set-point.
 
 use super::builder::Arm;
 use crate::robot::contact::clearance::contact_pairs;
 use crate::robot::contact::collision::body_elements;
-use crate::robot::{ArmModel, Obstacle, MAX_JOINTS};
+use crate::robot::{ArmModel, Joints, Obstacle, MAX_JOINTS};
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::parry::bounding_volume::{Aabb, BoundingVolume};
 use rapier3d_f64::prelude::nalgebra::Unit;
@@ -18,6 +19,13 @@ use rapier3d_f64::prelude::{
 /// A contact deeper than this (m) stops a move; shallower ones are the servo's error
 /// around a pose that just touches.
 pub(super) const CONTACT_DEPTH: f64 = 5e-4;
+/// A link this close (m) to something touches it (Rapier's contacts may stop a struck link
+/// short of the surface by a fraction of a millimetre).
+const TOUCH: f64 = 1e-3;
+/// How far (rad) a joint may lag its set-point while a link touches something before the
+/// contact counts as holding the arm back: far above the servos' lag on a free path
+/// (under 0.02° on either engine), below one tick of a move's top speed.
+const HELD_BACK: f64 = 0.1 * std::f64::consts::PI / 180.0;
 /// The floor's interaction group (bodies take groups 0 to [`MAX_JOINTS`]).
 const FLOOR: u32 = MAX_JOINTS as u32 + 1;
 /// Room (m) around each body's bounding box within which Rapier looks for contacts: more
@@ -128,9 +136,20 @@ impl Arm {
         }
     }
 
-    /// True when a link digs deeper than [`CONTACT_DEPTH`] into the floor or another link.
-    pub(super) fn in_contact(&self) -> bool {
-        self.depth > CONTACT_DEPTH
+    /// True when a contact stops a move whose servos are sent to `set_point` (rad): a
+    /// link digs deeper than [`CONTACT_DEPTH`] into something, or touches something while
+    /// a joint lags its set-point by more than [`HELD_BACK`] — the contact holds the arm
+    /// back, and servos pushing on toward a set-point beyond it would press the arm into
+    /// it with their whole effort, the strongest joints turning the weakest about the
+    /// point of contact (a camera struck against the base whips the wrist).
+    pub(super) fn stopped_by_contact(&self, set_point: &Joints) -> bool {
+        self.depth > CONTACT_DEPTH || self.held_back(set_point)
+    }
+
+    /// True when a link touches something (by the last contacts Rapier found) while a
+    /// joint lags `set_point` (rad) by more than [`HELD_BACK`].
+    pub(super) fn held_back(&self, set_point: &Joints) -> bool {
+        self.depth > -TOUCH && (*set_point - self.joints()).amax() > HELD_BACK
     }
 
     /// How deep (m) the deepest contact Rapier found last is; negative infinity for none.

@@ -19,8 +19,8 @@ pub enum Drive {
     /// The servos move every joint from the start pose to these angles (rad) along the
     /// straight joint-space line, under the trapezoidal profile of the settings' speed
     /// and acceleration for the joint with the farthest to go (as a step move does, with
-    /// its velocity and acceleration fed forward), then hold them. A contact deeper than
-    /// 0.5 mm stops the move where the arm is, which the servos then hold (as the dynamic
+    /// its velocity and acceleration fed forward), then hold them. A contact that holds the
+    /// arm back stops the move where the arm is, which the servos then hold (as the dynamic
     /// simulator stops a move).
     MoveTo(Joints),
 }
@@ -118,8 +118,8 @@ impl FreeArm {
         self.arm
             .step(&self.model, set_point.as_ref(), &self.settings);
         self.steps += 1;
-        if matches!(self.drive, Drive::MoveTo(_)) && self.stopped.is_none() && self.arm.in_contact()
-        {
+        let moving = matches!(self.drive, Drive::MoveTo(_)) && self.stopped.is_none();
+        if moving && set_point.is_some_and(|s| self.arm.stopped_by_contact(&s.angles)) {
             self.stopped = Some((self.time(), self.joints()));
         }
         let fault = self.arm.speed_fault(&self.model);

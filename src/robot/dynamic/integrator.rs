@@ -5,8 +5,10 @@
 //! them (for the camera), and Rapier looks for contacts where a bounding box comes near
 //! something (contacts.rs). Where a joint has dry friction, Rapier steps the tick itself
 //! under the same torques (to first order: its friction constraints act there); while a
-//! link touches something, Rapier steps it in sub-ticks of at most 1 ms, the servo law
-//! run at each (its contact constraints act there).
+//! link is near something, Rapier steps it in sub-ticks of at most 1 ms with at least 4
+//! solver iterations, the servo law run at each (its contact constraints act there), the
+//! servos holding the arm where it is for the rest of the tick once a contact holds it
+//! back from its set-point.
 
 use super::builder::Arm;
 use super::convert::to_vector;
@@ -18,9 +20,18 @@ use crate::robot::{ArmModel, Joints};
 /// The largest rate × step a damped joint's relaxation may have in one Runge–Kutta step
 /// (the scheme is stable below 2.78; this also keeps its decay close).
 const STABLE_RATE_STEP: f64 = 1.5;
-/// The longest step (s) Rapier takes while a link touches something on the `rk4` engine: a
-/// tick is cut into sub-ticks no longer than this.
+/// The longest step (s) Rapier takes while a link is near something: a tick is cut into
+/// sub-ticks no longer than this.
 const CONTACT_STEP: f64 = 1e-3;
+/// Rapier's constraint solver iterations, at least, while a link is near something: with
+/// one, a struck link's contacts and the servos holding the arm against them do not
+/// agree, and the arm chatters where it rests on something.
+pub(super) const CONTACT_ITERATIONS: usize = 4;
+
+/// Rapier steps in a tick of `dt` while a link is near something.
+pub(super) fn contact_substeps(dt: f64) -> usize {
+    (dt / CONTACT_STEP).ceil().max(1.0) as usize
+}
 
 impl Arm {
     /// Steps the arm one tick of `settings.dt` on the settings' engine, its servos sent to
@@ -91,27 +102,42 @@ impl Arm {
         set_point: Option<&SetPoint>,
         settings: &DynamicSettings,
     ) {
-        let (dt, n) = (settings.dt, (settings.dt / CONTACT_STEP).ceil().max(1.0));
+        let (dt, n) = (settings.dt, contact_substeps(settings.dt));
         let fine = DynamicSettings {
-            dt: dt / n,
+            dt: dt / n as f64,
             ..*settings
         };
         self.world.integration_parameters.dt = fine.dt;
+        self.world.integration_parameters.num_solver_iterations =
+            settings.solver_iterations.max(CONTACT_ITERATIONS);
         self.refresh_bodies();
-        for j in 1..=n as usize {
+        let mut held = None;
+        for j in 1..=n {
             let (q, v) = (self.joints(), self.speeds());
-            let tau = match (self.joint_space(model, &q, &v), set_point) {
-                (Some(space), Some(set_point)) => {
-                    let along = set_point.at(j as f64 * fine.dt, dt);
+            let along =
+                set_point.map(|set_point| held.unwrap_or(set_point.at(j as f64 * fine.dt, dt)));
+            let tau = match (self.joint_space(model, &q, &v), along) {
+                (Some(space), Some(along)) => {
                     self.servo_torques(model, &space, &along, &q, &v, &fine)
                 }
                 _ => Joints::zeros(self.dof),
             };
             self.apply_joint_torques(model, &tau);
             self.world.step();
+            self.depth = self.deepest_contact();
+            held = held.or_else(|| self.hold_if_held_back(along.as_ref()));
         }
         self.world.integration_parameters.dt = dt;
-        self.depth = self.deepest_contact();
+        self.world.integration_parameters.num_solver_iterations = settings.solver_iterations;
+    }
+
+    /// Where the servos hold the arm for the rest of a tick once a contact holds it back
+    /// from `set_point` within the tick ([`Arm::held_back`]): at rest where it is, so that
+    /// they do not press it on into the contact; none while it is not held back.
+    pub(super) fn hold_if_held_back(&self, set_point: Option<&SetPoint>) -> Option<SetPoint> {
+        set_point
+            .filter(|set_point| self.held_back(&set_point.angles))
+            .map(|_| SetPoint::at_rest(self.joints()))
     }
 
     /// The angles and speeds after `dt` from `q`, `v` under torques `tau`, where the

@@ -5,9 +5,13 @@
 //! the set-point's inverse dynamics (weight, Coriolis and centrifugal torques, the joints'
 //! damping, the path's acceleration) fed forward as joint torques. Rapier's joint limits,
 //! contacts and joint friction act in its step. A tick is `rapier_substeps` Rapier steps,
-//! the motors' targets moved along the set-point's path at each.
+//! the motors' targets moved along the set-point's path at each; a tick that begins with a
+//! link near something takes steps of at most 1 ms with at least 4 solver iterations, the
+//! motors holding the arm where it is for the rest of the tick once a contact holds it back
+//! from its set-point.
 
 use super::builder::Arm;
+use super::integrator::{contact_substeps, CONTACT_ITERATIONS};
 use super::servo_law::SetPoint;
 use super::settings::DynamicSettings;
 use crate::robot::{ArmModel, Joints};
@@ -32,17 +36,33 @@ impl Arm {
         set_point: Option<&SetPoint>,
         settings: &DynamicSettings,
     ) {
-        let substeps = settings.rapier_substeps.max(1);
-        let (dt, h) = (settings.dt, settings.dt / substeps as f64);
+        let dt = settings.dt;
+        let touching = self.depth > f64::NEG_INFINITY;
+        let substeps = match touching {
+            true => settings.rapier_substeps.max(contact_substeps(dt)),
+            false => settings.rapier_substeps.max(1),
+        };
+        let h = dt / substeps as f64;
         self.world.integration_parameters.dt = h;
+        if touching {
+            self.world.integration_parameters.num_solver_iterations =
+                settings.solver_iterations.max(CONTACT_ITERATIONS);
+        }
         let path = set_point.map(|set_point| (set_point.tick_start(dt), set_point.accelerations));
+        let mut held: Option<SetPoint> = None;
         for j in 0..substeps {
-            let tau = match &path {
-                Some(((start, speed), accel)) => {
-                    let target = *start + *speed * (j as f64 * h);
-                    let held = self.feed_forward(model, &target, speed, accel);
-                    self.drive_motors(model, &target, speed, &held, settings);
-                    held
+            let aim = match (&path, held) {
+                (_, Some(held)) => Some((held.angles, held.speeds, held.accelerations)),
+                (Some(((start, speed), accel)), None) => {
+                    Some((*start + *speed * (j as f64 * h), *speed, *accel))
+                }
+                (None, None) => None,
+            };
+            let tau = match &aim {
+                Some((target, speed, accel)) => {
+                    let fed = self.feed_forward(model, target, speed, accel);
+                    self.drive_motors(model, target, speed, &fed, settings);
+                    fed
                 }
                 None => {
                     self.motors_off();
@@ -51,9 +71,12 @@ impl Arm {
             };
             self.apply_joint_torques(model, &tau);
             self.world.step();
+            self.depth = self.deepest_contact();
+            let along = aim.map(|(angles, ..)| SetPoint::at_rest(angles));
+            held = held.or_else(|| self.hold_if_held_back(along.as_ref()));
         }
         self.world.integration_parameters.dt = dt;
-        self.depth = self.deepest_contact();
+        self.world.integration_parameters.num_solver_iterations = settings.solver_iterations;
     }
 
     /// The torques (N·m) that move the arm along its set-point's path at angles `q`,

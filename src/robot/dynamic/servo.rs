@@ -85,7 +85,7 @@ impl DynamicSim {
         let next = self.full_set_point(&next_theta, &last);
         let after = self.full_set_point(&ahead.point(), &next);
         self.tick(&SetPoint::between(&last, &next, &after, dt));
-        if !self.arm.in_contact() {
+        if !self.arm.stopped_by_contact(&next) {
             return false;
         }
         let moving = !self.tracker().is_at_rest();

@@ -1,6 +1,7 @@
 //! Stepping the arm: following a move's set-point profile tick by tick, then stepping until
 //! the joints are close to their set-points and nearly still.
 
+use super::faults::SpeedFault;
 use super::servo_law::SetPoint;
 use super::sim::{DynamicSim, SimCounters};
 use crate::robot::{Controlled, Joints, Simulator, TrapezoidProfile};
@@ -11,8 +12,9 @@ impl DynamicSim {
         self.arm
             .step(self.plan.model(), Some(set_point), &self.settings);
         SimCounters::count(&self.counters.steps);
-        if self.arm.speed_fault(self.plan.model()).is_some() {
+        if let Some(fault) = self.arm.speed_fault(self.plan.model()) {
             SimCounters::count(&self.counters.speed_faults);
+            self.worst_speed_fault = SpeedFault::worse(self.worst_speed_fault, Some(fault));
         }
         if let Some(ticks) = &mut self.kept_ticks {
             ticks.push(self.arm.joints());
@@ -69,7 +71,7 @@ impl DynamicSim {
         for k in 0..ticks {
             let after = self.set_point(&from, delta, at(k + 2), &next);
             self.tick(&SetPoint::between(&now, &next, &after, dt));
-            if self.arm.in_contact() {
+            if self.arm.stopped_by_contact(&next) {
                 return (k + 1, true);
             }
             (now, next) = (next, after);

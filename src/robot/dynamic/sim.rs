@@ -21,9 +21,10 @@
 //!   joints' URDF efforts and held over the tick. Each tick integrates the arm's
 //!   joint-space equations (joint_space.rs) by one classical fourth-order Runge–Kutta step
 //!   (integrator.rs); Rapier places the bodies and looks for contacts. While a link
-//!   touches something, or when a joint has dry friction, Rapier steps the tick itself
+//!   is near something, or when a joint has dry friction, Rapier steps the tick itself
 //!   under the same torques, its contact and friction constraints acting (first order,
-//!   `solver_iterations` iterations). `rapier` (motors.rs): Rapier's multibody integrator
+//!   `solver_iterations` iterations; near a contact in 1 ms sub-ticks with at least 4,
+//!   Rapier's contacts found anew at every step). `rapier` (motors.rs): Rapier's multibody integrator
 //!   steps every tick (`rapier_substeps` steps of it), each joint driven by a Rapier joint
 //!   motor toward the set-point with the same gains, the set-point's inverse dynamics fed
 //!   forward as joint torques; Rapier's joint limits and contacts act.
@@ -42,7 +43,9 @@
 //! - The world: a floor at `floor_z` and contacts between links that are neither
 //!   neighbours nor touching at the zero pose (`contacts.rs`). The plan already stops a
 //!   move where a link or the camera would go below the floor (the kinematic rule); a
-//!   contact deeper than 0.5 mm during a move stops it where the arm is, reported and
+//!   contact deeper than 0.5 mm during a move, or one that holds the arm back from its
+//!   set-point (a link within 1 mm of something, a joint 0.1° behind), stops it where the
+//!   arm is, reported and
 //!   counted. Each body has one massless compound collider of its URDF shapes, which
 //!   follows a stretched link; the camera sees a body's collision meshes as their own
 //!   triangles (built with the arm), the contacts as their hulls. The camera link is merged into the last body; turning the
@@ -52,6 +55,7 @@ use super::body_parts::body_parts;
 use super::builder::{joint_frame, Arm};
 use super::colliders::contact_compound;
 use super::convert::{to_isometry, to_pose};
+use super::faults::SpeedFault;
 use super::inertia::Inertial;
 use super::seen::compound;
 use super::settings::DynamicSettings;
@@ -126,6 +130,8 @@ pub struct DynamicSim {
     pub(super) move_ticks: Option<Vec<Joints>>,
     /// The set-point of continuous servoing, while it goes on.
     pub(super) tracker: Option<SetPointTracker>,
+    /// The joint furthest beyond its URDF velocity limit after any tick so far.
+    pub(super) worst_speed_fault: Option<SpeedFault>,
 }
 
 impl DynamicSim {
@@ -143,6 +149,7 @@ impl DynamicSim {
             kept_ticks: None,
             move_ticks: None,
             tracker: None,
+            worst_speed_fault: None,
         };
         let start = sim.plan.joints();
         sim.arm.teleport(&start);
@@ -265,6 +272,8 @@ impl Simulator for DynamicSim {
             simulated_seconds: c.steps() as f64 * self.settings.dt,
             settle_timeouts: c.settle_timeouts(),
             contact_stops: c.contact_stops(),
+            speed_faults: c.speed_faults(),
+            worst_speed_fault: self.worst_speed_fault,
         }
     }
 

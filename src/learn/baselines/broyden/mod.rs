@@ -32,4 +32,5 @@ mod settings;
 
 pub use jacobian::ImageJacobian;
 pub use learner::Broyden;
+pub(crate) use settings::BROYDEN_FACTS;
 pub use settings::{BroydenSettings, BroydenUpdate};

@@ -1,5 +1,7 @@
 //! Settings of the `broyden` controller.
 
+use crate::learn::MethodFacts;
+
 /// How the image Jacobian follows each move (the config's `broyden_update`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum BroydenUpdate {
@@ -42,3 +44,15 @@ impl Default for BroydenSettings {
         }
     }
 }
+
+/// What the program knows of `broyden` besides its learner (see [`Method::facts`](crate::learn::Method::facts)).
+pub(crate) const BROYDEN_FACTS: MethodFacts = MethodFacts {
+    name: "broyden",
+    size: |_| "one 3×3 image Jacobian; ".to_string(),
+    counts_nodes: false,
+    kb_per_trial: 0.0,
+    bounded: false,
+    watches_changes: false,
+    single_model: false,
+    slow_entries: "feedback_steps, bin_size, max_stored_patterns",
+};

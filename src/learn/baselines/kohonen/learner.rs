@@ -6,6 +6,7 @@
 
 use super::Lattice;
 use crate::learn::baselines::net::InputScaling;
+use crate::learn::MethodFacts;
 use crate::learn::{adjusted_pattern, Observation, PatternSettings, Query};
 use crate::learn::{LearnError, Learner, LearnerStats, Method};
 use nalgebra::{SMatrix, SVector, Vector3};
@@ -146,3 +147,15 @@ impl Learner for KohonenLearner {
         }
     }
 }
+
+/// What the program knows of `kohonen` besides its learner (see [`Method::facts`](crate::learn::Method::facts)).
+pub(crate) const KOHONEN_FACTS: MethodFacts = MethodFacts {
+    name: "kohonen",
+    size: |stats| format!("map: {} cells; ", stats.nodes),
+    counts_nodes: true,
+    kb_per_trial: 0.0,
+    bounded: true,
+    watches_changes: true,
+    single_model: true,
+    slow_entries: "feedback_steps, bin_size, max_stored_patterns",
+};

@@ -7,4 +7,5 @@ mod lattice;
 mod learner;
 
 pub use lattice::{Lattice, Neighbourhood};
+pub(crate) use learner::KOHONEN_FACTS;
 pub use learner::{KohonenLearner, KohonenSettings};

@@ -21,6 +21,7 @@ use std::path::PathBuf;
 
 pub use settings::Lin5Settings;
 pub(crate) use settings::FIVE_INPUT_BOUNDS;
+pub(crate) use settings::LIN5_FACTS;
 
 /// The stream of the run's seed that lin5's own draws (known patterns) come from, apart
 /// from the trial loop's.

@@ -1,7 +1,9 @@
 //! What a `lin5` learner is set up by.
 
 use crate::learn::nested::perceptron::PerceptronSettings;
+use crate::learn::nested::tree::tree_size;
 use crate::learn::nested::tree::NestedSettings;
+use crate::learn::MethodFacts;
 
 /// The input box of the 5-input learners in the shipped configs: (θ2, θ3) in degrees,
 /// (cx, cy) in pixels, cz in the area measure (`boundary_0` … `boundary_4`).
@@ -36,3 +38,15 @@ impl Default for Lin5Settings {
         }
     }
 }
+
+/// What the program knows of `lin5` besides its learner (see [`Method::facts`](crate::learn::Method::facts)).
+pub(crate) const LIN5_FACTS: MethodFacts = MethodFacts {
+    name: "lin5",
+    size: tree_size,
+    counts_nodes: true,
+    kb_per_trial: 2.1,
+    bounded: true,
+    watches_changes: true,
+    single_model: false,
+    slow_entries: "feedback_steps, bin_size, max_stored_patterns",
+};

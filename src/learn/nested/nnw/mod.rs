@@ -15,6 +15,8 @@ mod net_model;
 
 use super::lin5::FIVE_INPUT_BOUNDS;
 use super::tree::{Halving, NestedLearner, NestedSettings, Region};
+use crate::learn::nested::tree::tree_size;
+use crate::learn::MethodFacts;
 use crate::learn::{adjusted_pattern, LearnError, Method, Query};
 use nalgebra::SVector;
 use net_model::NetModel;
@@ -76,6 +78,18 @@ impl Nnw {
         )
     }
 }
+
+/// What the program knows of `nnw` besides its learner (see [`Method::facts`](crate::learn::Method::facts)).
+pub(crate) const NNW_FACTS: MethodFacts = MethodFacts {
+    name: "nnw",
+    size: tree_size,
+    counts_nodes: true,
+    kb_per_trial: 2.6,
+    bounded: true,
+    watches_changes: true,
+    single_model: false,
+    slow_entries: "hidden_units, nnw_train_limit, feedback_steps",
+};
 
 #[cfg(test)]
 mod tests {

@@ -29,10 +29,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             if let Some(at) = at {
                 node.bins.remove(at);
             }
-            node.patterns -= patterns;
-            if let Some(branch) = key.branch(node.depth + 1) {
-                node.box_patterns[usize::from(branch)] -= patterns;
-            }
+            node.patterns_removed(key.branch(node.depth + 1), patterns);
             self.levels.bin_removed(node.depth, patterns);
             evicted += 1;
         }

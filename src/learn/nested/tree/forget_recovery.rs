@@ -197,15 +197,13 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// Drops the patterns numbered below `cutoff` from the bins of node `id`.
     fn drop_stored_before(&mut self, id: u32, cutoff: u64) {
         let node = &mut self.nodes[id as usize];
-        for &bin in &node.bins {
+        for at in 0..node.bins.len() {
+            let bin = node.bins[at];
             let dropped = self.bins.drop_before(bin, cutoff);
             if dropped == 0 {
                 continue;
             }
-            node.patterns -= dropped;
-            if let Some(branch) = self.bins.key(bin).branch(node.depth + 1) {
-                node.box_patterns[usize::from(branch)] -= dropped;
-            }
+            node.patterns_removed(self.bins.key(bin).branch(node.depth + 1), dropped);
             self.levels.patterns_removed(node.depth, dropped);
         }
     }

@@ -86,16 +86,15 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             stack.extend(node.children.iter().copied().filter(|&c| c != NONE));
             self.levels.node_removed(node.depth);
             self.levels
-                .bins_moved(node.depth, parent_depth, node.bins.len(), node.patterns);
+                .bins_moved(node.depth, parent_depth, node.bins.len(), node.patterns());
             bins.append(&mut node.bins);
-            patterns += node.patterns;
+            patterns += node.patterns();
             self.release(x);
         }
         self.scratch = stack;
         let p = &mut self.nodes[parent as usize];
         p.bins = bins;
-        p.patterns += patterns;
-        p.box_patterns[usize::from(branch)] += patterns;
+        p.patterns_added(Some(branch), patterns);
         p.children[usize::from(branch)] = NONE;
         // Evidence for splitting this sub-box again must be fresh.
         p.clear_box_errors(branch);

@@ -91,6 +91,7 @@ pub(crate) use forget_recovery::StaleVerdict;
 pub(crate) use levels::Levels;
 pub(crate) use monitor::Monitor;
 pub(crate) use narrowing::Narrowing;
+pub(crate) use nested_learner::tree_size;
 pub use nested_learner::NestedLearner;
 pub(crate) use nested_tree::{NestedTree, TreeEvent};
 pub(crate) use node::{Node, NONE};

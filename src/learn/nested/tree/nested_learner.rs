@@ -56,6 +56,15 @@ pub struct NestedLearner<A, R, const N: usize> {
     failed: Option<LearnError>,
 }
 
+/// The size of a nested learner in the one-screen report: its tree's nodes, bins and
+/// stored patterns.
+pub(crate) fn tree_size(stats: &LearnerStats) -> String {
+    format!(
+        "tree: {} nodes, {} bins, {} patterns; ",
+        stats.nodes, stats.bins, stats.patterns
+    )
+}
+
 // The node models and branching rules are the crate's own: users build the three forms
 // (`Lin5::new`, `Lin8::new`, `Nnw::new`), not their own trees.
 #[allow(private_bounds)]

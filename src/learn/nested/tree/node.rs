@@ -37,10 +37,10 @@ pub(crate) struct Node<A, const N: usize> {
     box_slots: [u8; BRANCHES],
     /// The bins hanging on this node: those whose deepest existing node it is.
     pub(super) bins: Vec<u32>,
-    /// Patterns kept in those bins.
-    pub(super) patterns: usize,
+    /// Patterns kept in those bins (changed only through the methods below).
+    patterns: usize,
     /// Of those, the patterns in each sub-box.
-    pub(super) box_patterns: [usize; BRANCHES],
+    box_patterns: [usize; BRANCHES],
     /// Patterns taken in since the model was last re-trained (re-trained models only).
     pub(super) fresh: usize,
     /// The number of the first pattern trained to the tree after this node was made.
@@ -187,6 +187,40 @@ impl<A: Approximator<N>, const N: usize> Node<A, N> {
     /// Starts measuring every sub-box anew.
     pub(super) fn clear_all_box_errors(&mut self) {
         self.box_errors.iter_mut().for_each(Monitor::clear);
+    }
+
+    /// Patterns kept in the bins hanging on this node.
+    pub(super) fn patterns(&self) -> usize {
+        self.patterns
+    }
+
+    /// Of those, the patterns in each sub-box.
+    pub(super) fn box_patterns(&self) -> [usize; BRANCHES] {
+        self.box_patterns
+    }
+
+    /// `n` patterns came into this node's bins, in sub-box `branch` (`None`: at the
+    /// deepest depth, where there are no sub-boxes).
+    pub(super) fn patterns_added(&mut self, branch: Option<u8>, n: usize) {
+        self.patterns += n;
+        if let Some(branch) = branch {
+            self.box_patterns[usize::from(branch)] += n;
+        }
+    }
+
+    /// `n` patterns left this node's bins, from sub-box `branch` (`None` as above).
+    pub(super) fn patterns_removed(&mut self, branch: Option<u8>, n: usize) {
+        self.patterns -= n;
+        if let Some(branch) = branch {
+            self.box_patterns[usize::from(branch)] -= n;
+        }
+    }
+
+    /// Sub-box `branch`'s bins, holding `n` patterns, went down to a new child.
+    pub(super) fn box_split_off(&mut self, branch: u8, n: usize) {
+        debug_assert_eq!(self.box_patterns[usize::from(branch)], n);
+        self.patterns -= n;
+        self.box_patterns[usize::from(branch)] = 0;
     }
 
     /// Starts measuring sub-box `branch` anew.

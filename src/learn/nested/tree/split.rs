@@ -23,7 +23,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             return Ok(false);
         };
         let s = &self.settings;
-        let due = node.box_patterns[usize::from(branch)] >= s.min_pats_for_split
+        let due = node.box_patterns()[usize::from(branch)] >= s.min_pats_for_split
             && node.box_errors(branch).is_some_and(|errors| {
                 errors.len() >= s.split_evidence()
                     && errors.mean_square().is_some_and(|e2| e2 > s.split_error)
@@ -56,24 +56,20 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         });
         let mut patterns = 0;
         let node = &mut self.nodes[child as usize];
+        debug_assert_eq!(node.patterns(), 0, "a new child holds no patterns");
         for &bin in &sunk {
             let n = self.bins.len(bin);
             patterns += n;
-            if let Some(b) = self.bins.key(bin).branch(depth + 1) {
-                node.box_patterns[usize::from(b)] += n;
-            }
+            node.patterns_added(self.bins.key(bin).branch(depth + 1), n);
         }
-        node.patterns = patterns;
         let moved_bins = sunk.len();
         node.bins = sunk;
         self.levels
             .bins_moved(depth - 1, depth, moved_bins, patterns);
 
         let p = &mut self.nodes[parent as usize];
-        debug_assert_eq!(p.box_patterns[usize::from(branch)], patterns);
         p.bins = kept;
-        p.patterns -= patterns;
-        p.box_patterns[usize::from(branch)] = 0;
+        p.box_split_off(branch, patterns);
         // From now on this measures the parent on its child's box (relative merge).
         p.clear_box_errors(branch);
 

@@ -138,10 +138,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             self.levels.bin_added(node.depth);
         }
         if self.bins.store(bin, pattern, seq)? {
-            node.patterns += 1;
-            if let Some(branch) = key.branch(node.depth + 1) {
-                node.box_patterns[usize::from(branch)] += 1;
-            }
+            node.patterns_added(key.branch(node.depth + 1), 1);
             self.levels.pattern_added(node.depth);
         }
         self.evict_over_cap();

@@ -36,6 +36,7 @@ mod settings;
 
 pub use learner::Issgp;
 pub use settings::IssgpSettings;
+pub(crate) use settings::ISSGP_FACTS;
 
 #[cfg(test)]
 mod tests;

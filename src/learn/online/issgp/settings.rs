@@ -1,6 +1,7 @@
 //! Settings of the `issgp` learner.
 
 use crate::learn::change::ChangeSettings;
+use crate::learn::MethodFacts;
 use crate::learn::PatternSettings;
 
 /// Settings of the `issgp` learner. Inputs are measured in their boundary ranges and
@@ -51,3 +52,15 @@ impl Default for IssgpSettings {
         }
     }
 }
+
+/// What the program knows of `issgp` besides its learner (see [`Method::facts`](crate::learn::Method::facts)).
+pub(crate) const ISSGP_FACTS: MethodFacts = MethodFacts {
+    name: "issgp",
+    size: |stats| format!("{} random features; ", stats.nodes),
+    counts_nodes: false,
+    kb_per_trial: 0.0,
+    bounded: true,
+    watches_changes: true,
+    single_model: true,
+    slow_entries: "issgp_features, feedback_steps",
+};

@@ -56,6 +56,7 @@ mod settings;
 
 pub use learner::Lwpr;
 pub use settings::LwprSettings;
+pub(crate) use settings::LWPR_FACTS;
 
 #[cfg(test)]
 mod reference_replay;

@@ -1,6 +1,7 @@
 //! Settings of the `lwpr` learner, with the usual names and defaults of LWPR.
 
 use crate::learn::change::ChangeSettings;
+use crate::learn::MethodFacts;
 use crate::learn::PatternSettings;
 
 /// Settings of the `lwpr` learner. Inputs are normalised to [0, 1] by the input boundaries
@@ -68,3 +69,15 @@ impl Default for LwprSettings {
         }
     }
 }
+
+/// What the program knows of `lwpr` besides its learner (see [`Method::facts`](crate::learn::Method::facts)).
+pub(crate) const LWPR_FACTS: MethodFacts = MethodFacts {
+    name: "lwpr",
+    size: |stats| format!("{} receptive fields; ", stats.nodes),
+    counts_nodes: true,
+    kb_per_trial: 0.0,
+    bounded: true,
+    watches_changes: true,
+    single_model: true,
+    slow_entries: "init_D, w_gen, feedback_steps",
+};

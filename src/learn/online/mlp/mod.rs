@@ -30,6 +30,7 @@ mod settings;
 
 pub use learner::Mlp;
 pub use settings::MlpSettings;
+pub(crate) use settings::MLP_FACTS;
 
 #[cfg(test)]
 mod tests;

@@ -1,6 +1,7 @@
 //! Settings of the `mlp` learner.
 
 use crate::learn::change::ChangeSettings;
+use crate::learn::MethodFacts;
 use crate::learn::PatternSettings;
 
 /// Settings of the `mlp` learner. Inputs are scaled onto [−1, 1] by their boundaries and
@@ -48,3 +49,15 @@ impl Default for MlpSettings {
         }
     }
 }
+
+/// What the program knows of `mlp` besides its learner (see [`Method::facts`](crate::learn::Method::facts)).
+pub(crate) const MLP_FACTS: MethodFacts = MethodFacts {
+    name: "mlp",
+    size: |stats| format!("replay buffer: {} patterns; ", stats.patterns),
+    counts_nodes: false,
+    kb_per_trial: 0.0,
+    bounded: true,
+    watches_changes: true,
+    single_model: true,
+    slow_entries: "mlp_steps_per_trial, mlp_batch, mlp_hidden",
+};

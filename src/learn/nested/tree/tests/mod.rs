@@ -111,8 +111,8 @@ fn recount<A: Approximator<N>, R: BranchRule<N>, const N: usize>(
                 per_box[usize::from(b)] += n;
             }
         }
-        assert_eq!(node.patterns, patterns);
-        assert_eq!(node.box_patterns, per_box);
+        assert_eq!(node.patterns(), patterns);
+        assert_eq!(node.box_patterns(), per_box);
         let c = &mut counts[node.depth];
         *c = (c.0 + 1, c.1 + node.bins.len(), c.2 + patterns);
         seen_bins += node.bins.len();

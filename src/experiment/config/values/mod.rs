@@ -1,11 +1,15 @@
-//! Typed values of config entries: how each kind is parsed and written back.
+//! Typed values of config entries: how each kind is parsed and written back. Numbers,
+//! lists and names are here; `choices.rs` holds the named choices, `obstacle.rs` an
+//! obstacle box.
+
+mod choices;
+mod obstacle;
+
+pub use choices::{CameraKind, SimKind};
+pub use obstacle::ObstacleBox;
 
 use super::ValueError;
-use crate::control::ServoMode;
-use crate::learn::change::ChangeRecovery;
-use crate::learn::{BroydenUpdate, MergeStrategy, Method};
-use crate::robot::{BaseLink, CameraLink, Engine, LearnedJoints};
-use std::fmt;
+use crate::robot::{BaseLink, CameraLink, LearnedJoints};
 use std::str::FromStr;
 
 /// A value a config entry can hold.
@@ -72,30 +76,6 @@ impl ConfigValue for f64 {
         Some(*self)
     }
 }
-
-macro_rules! named_value {
-    ($($t:ty),*) => {$(
-        impl ConfigValue for $t {
-            const KIND: &'static str = "choice";
-            fn parse_value(raw: &str) -> Result<Self, ValueError> {
-                raw.parse().map_err(ValueError::UnknownChoice)
-            }
-            fn render(&self) -> String {
-                self.to_string()
-            }
-        }
-    )*};
-}
-named_value!(
-    Method,
-    SimKind,
-    CameraKind,
-    MergeStrategy,
-    ChangeRecovery,
-    ServoMode,
-    BroydenUpdate,
-    Engine
-);
 
 /// `parts` comma-separated items of `raw`, each parsed by `item`; `expected` names the form.
 fn list<T, const N: usize>(
@@ -273,137 +253,6 @@ impl ConfigValue for ReachSetting {
     }
 }
 
-/// Which simulator moves the arm.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum SimKind {
-    /// Forward kinematics straight from the URDF, no dynamics.
-    Kinematic,
-    /// The URDF as a multibody under gravity, its joints servoed, stepped by the `engine`.
-    Dynamic,
-}
-
-/// How the camera produces its reading.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum CameraKind {
-    /// Exact analytic projection of the sphere.
-    Projection,
-    /// Rays through every pixel against the object's collider.
-    Raycast,
-}
-
-/// An `obstacle` line: a box standing in the world, sides along the axes.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ObstacleBox {
-    /// The box's centre (cm, world frame).
-    pub centre_cm: [f64; 3],
-    /// Its side lengths along x, y and z (cm), each above zero.
-    pub size_cm: [f64; 3],
-}
-
-/// The farthest an obstacle's centre may lie from the world's origin on an axis (cm): 100 m.
-pub(super) const OBSTACLE_REACH_CM: f64 = 1e4;
-/// The thinnest and the longest side of an obstacle (cm): 0.1 mm and 100 m.
-pub(super) const OBSTACLE_SIDE_CM: (f64, f64) = (0.01, 1e4);
-
-impl ObstacleBox {
-    /// `[x, y, z, sx, sy, sz]`: its centre and side lengths (cm), as the config line and
-    /// `summary.json` give them.
-    pub fn centre_and_size(&self) -> [f64; 6] {
-        let ([x, y, z], [sx, sy, sz]) = (self.centre_cm, self.size_cm);
-        [x, y, z, sx, sy, sz]
-    }
-
-    /// The box in the simulators' units (m).
-    pub fn obstacle(&self) -> crate::robot::Obstacle {
-        let m = |v: [f64; 3]| nalgebra::Vector3::from(v) * crate::units::M_PER_CM;
-        crate::robot::Obstacle {
-            centre: m(self.centre_cm).into(),
-            size: m(self.size_cm),
-        }
-    }
-}
-
-impl ConfigValue for ObstacleBox {
-    const KIND: &'static str = "x,y,z,sx,sy,sz";
-    fn parse_value(raw: &str) -> Result<Self, ValueError> {
-        let bad = |reason: &str| ValueError::NotObstacle {
-            text: raw.to_string(),
-            reason: reason.to_string(),
-        };
-        let parts: Vec<&str> = raw.split(',').collect();
-        if parts.len() != 6 {
-            return Err(bad(&format!("{} numbers, not 6", parts.len())));
-        }
-        let mut values = [0.0; 6];
-        for (value, part) in values.iter_mut().zip(&parts) {
-            *value = f64::parse_value(part.trim())
-                .map_err(|_| bad(&format!("`{part}` is not a finite number")))?;
-        }
-        let (centre, size) = values.split_at(3);
-        if size.iter().any(|&side| side <= 0.0) {
-            return Err(bad("every side must be above 0"));
-        }
-        if centre.iter().any(|c| c.abs() > OBSTACLE_REACH_CM) {
-            return Err(bad(&format!(
-                "its centre must be within {OBSTACLE_REACH_CM} cm of the world's origin on each axis"
-            )));
-        }
-        if size
-            .iter()
-            .any(|side| !(OBSTACLE_SIDE_CM.0..=OBSTACLE_SIDE_CM.1).contains(side))
-        {
-            return Err(bad(&format!(
-                "every side must be from {} to {} cm",
-                OBSTACLE_SIDE_CM.0, OBSTACLE_SIDE_CM.1
-            )));
-        }
-        Ok(ObstacleBox {
-            centre_cm: [centre[0], centre[1], centre[2]],
-            size_cm: [size[0], size[1], size[2]],
-        })
-    }
-
-    fn render(&self) -> String {
-        let all: Vec<String> = self
-            .centre_cm
-            .iter()
-            .chain(&self.size_cm)
-            .map(f64::render)
-            .collect();
-        all.join(",")
-    }
-}
-
-macro_rules! choice_names {
-    ($t:ty, $what:literal, $($variant:ident => $name:literal),*) => {
-        impl fmt::Display for $t {
-            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str(match self { $(Self::$variant => $name),* })
-            }
-        }
-        impl FromStr for $t {
-            type Err = String;
-            fn from_str(s: &str) -> Result<Self, String> {
-                match s {
-                    $($name => Ok(Self::$variant),)*
-                    _ => Err(format!(
-                        concat!("unknown ", $what, " `{}` (expected one of {})"),
-                        s,
-                        [$($name),*].join(", ")
-                    )),
-                }
-            }
-        }
-    };
-}
-choice_names!(SimKind, "simulator", Kinematic => "kinematic", Dynamic => "dynamic");
-choice_names!(CameraKind, "camera", Projection => "projection", Raycast => "raycast");
-choice_names!(MergeStrategy, "merge strategy", Thesis => "thesis", ChangeDetection => "change_detection");
-choice_names!(ChangeRecovery, "change recovery", Correct => "correct", Forget => "forget");
-choice_names!(BroydenUpdate, "broyden update", Broyden => "broyden", Rls => "rls");
-choice_names!(ServoMode, "servo mode", Step => "step", Continuous => "continuous");
-choice_names!(Engine, "engine", Rk4 => "rk4", Rapier => "rapier");
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -440,28 +289,6 @@ mod tests {
     }
 
     #[test]
-    fn obstacles_round_trip_and_need_six_numbers_and_positive_sides() {
-        let box_ = ObstacleBox::parse_value("60,-10.5,0,20,20,40").unwrap();
-        assert_eq!(box_.size_cm, [20.0, 20.0, 40.0]);
-        assert_eq!(ObstacleBox::parse_value(&box_.render()), Ok(box_));
-        for bad in [
-            "1,2,3,4,5",
-            "1,2,3,4,5,0",
-            "1,2,3,4,-5,6",
-            "1,2,x,4,5,6",
-            "1,2,3,4,5,nan",
-        ] {
-            assert!(
-                matches!(
-                    ObstacleBox::parse_value(bad),
-                    Err(ValueError::NotObstacle { .. })
-                ),
-                "{bad}"
-            );
-        }
-    }
-
-    #[test]
     fn lists_parse_their_items_and_say_what_they_take() {
         assert_eq!(<[f64; 3]>::parse_value("1,-2.5, 3"), Ok([1.0, -2.5, 3.0]));
         assert!(matches!(
@@ -477,19 +304,5 @@ mod tests {
         let given = ReachSetting::parse_value("46,93,0,52").unwrap();
         assert_eq!(ReachSetting::parse_value(&given.render()), Ok(given));
         assert!(ReachSetting::parse_value("46,93,nan,52").is_err());
-    }
-
-    #[test]
-    fn choices_parse_their_names_only() {
-        assert_eq!("dynamic".parse::<SimKind>(), Ok(SimKind::Dynamic));
-        assert_eq!(CameraKind::Raycast.render(), "raycast");
-        assert!("Projection"
-            .parse::<CameraKind>()
-            .unwrap_err()
-            .contains("projection, raycast"));
-        assert!(matches!(
-            CameraKind::parse_value("x"),
-            Err(ValueError::UnknownChoice(_))
-        ));
     }
 }

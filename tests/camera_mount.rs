@@ -28,6 +28,12 @@ fn robot(urdf: &str) -> RobotDescription {
         .unwrap_or_else(|e| panic!("{urdf}: {e}"))
 }
 
+/// The arm settings of a config giving only `camera_mount MOUNT`.
+fn mounted(mount: &str) -> ArmSettings {
+    let config = Config::parse(&format!("camera_mount {mount}\n"), "test.conf").unwrap();
+    arm_settings(&config)
+}
+
 /// The shoulder–elbow poses of a 5 × 5 grid 10° inside the limits (base yaw at 0) at which
 /// the wrist looks down inside its limits, and the image x axis' angle from the radial
 /// direction at each (rad).
@@ -130,11 +136,7 @@ fn a_camera_no_wrist_pose_turns_down_is_refused_before_any_sampling() {
     // stands 2.8° off square to the wrist's flex axis: along that axis the camera never
     // looks exactly down. Tilted 2.8° on the link, it does.
     let description = robot("so_arm_description/urdf/so101.urdf");
-    let settings = |mount: &str| {
-        let config = Config::parse(&format!("camera_mount {mount}\n"), "test.conf").unwrap();
-        arm_settings(&config)
-    };
-    let error = ArmModel::from_description(&description, &settings("0,0,0,180,0,0")).unwrap_err();
+    let error = ArmModel::from_description(&description, &mounted("0,0,0,180,0,0")).unwrap_err();
     let text = error.to_string();
     assert!(
         text.contains("the camera on `gripper_link` cannot look down")
@@ -142,7 +144,7 @@ fn a_camera_no_wrist_pose_turns_down_is_refused_before_any_sampling() {
             && text.contains("camera_mount"),
         "{text}"
     );
-    let tilted = ArmModel::from_description(&description, &settings("0,0,0,180,2.789,0"));
+    let tilted = ArmModel::from_description(&description, &mounted("0,0,0,180,2.789,0"));
     assert!(tilted.is_ok(), "{:?}", tilted.err());
 }
 
@@ -186,17 +188,13 @@ fn a_camera_looking_back_into_its_arm_is_refused_before_any_trial() {
     // The Kinova's link 6 has its z axis along joint 6 back into the wrist: looking down,
     // the camera saw link 5 10 cm below it at every start. Turned, it looks along the hand.
     let description = robot("kinova_description/robots/kinova.urdf");
-    let settings = |mount: &str| {
-        let config = Config::parse(&format!("camera_mount {mount}\n"), "test.conf").unwrap();
-        arm_settings(&config)
-    };
-    let error = ArmModel::from_description(&description, &settings("0,0,0,0,0,0")).unwrap_err();
+    let error = ArmModel::from_description(&description, &mounted("0,0,0,0,0,0")).unwrap_err();
     assert!(
         error
             .to_string()
             .contains("the camera on `j2s6s200_link_6` looks back into the arm"),
         "{error}"
     );
-    let turned = ArmModel::from_description(&description, &settings("0,0,0,180,0,0"));
+    let turned = ArmModel::from_description(&description, &mounted("0,0,0,180,0,0"));
     assert!(turned.is_ok(), "{:?}", turned.err());
 }

@@ -32,7 +32,7 @@ pub const UR_STYLE: TestArm = TestArm {
     file: "ur_style.urdf",
     camera_link: "tool0",
     learned: ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint"],
-    boundaries: [-99.0, -20.0, 48.0, 138.0],
+    boundaries: [-161.0, -64.0, -151.0, -27.0],
 };
 
 impl TestArm {

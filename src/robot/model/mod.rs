@@ -11,7 +11,8 @@ mod joint;
 mod joint_vector;
 mod wrist;
 
-pub use branch::{Branch, PoseGrid};
+pub(crate) use branch::side_of;
+pub use branch::{Branch, Centres, PoseGrid};
 pub use build::{ArmSettings, BaseLink, CameraLink, LearnedJoints};
 pub use frames::Frames;
 pub use wrist::Wrist;

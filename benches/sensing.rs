@@ -177,6 +177,7 @@ fn panda_at_rest() -> KinematicSim {
         camera_link: "panda_hand".into(),
         camera_offset: Vector3::zeros(),
         learned_joints: ["panda_joint1", "panda_joint2", "panda_joint4"].into(),
+        ..ArmSettings::default()
     };
     let mut arm = ArmModel::from_description(&description, &settings).expect("the Panda's arm");
     let fit = ReachSpace::fit(&arm, -0.22, 0.22).expect("a reach space");

@@ -6,7 +6,8 @@
 # into a virtual environment (target/python-venv) and its pytest suite (python/tests).
 #
 # Needs python3 (≥ 3.9, with venv); installs example-robot-data (the arms of
-# tests/corpus.rs, named by EYEHAND_ROBOT_DATA), maturin, gymnasium, numpy, scikit-learn and
+# tests/corpus.rs, named by EYEHAND_ROBOT_DATA), xacro (tests/xacro.rs, its folder named by
+# EYEHAND_XACRO_DIR), maturin, gymnasium, numpy, scikit-learn and
 # pytest from PyPI into the environment. The package is built in cargo's `dev` profile so
 # that it reuses the dependencies `cargo test` just compiled (`pip install ./python` builds
 # the release wheel a user installs).
@@ -15,10 +16,14 @@ cd "$(dirname "$0")/.."
 
 venv=target/python-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
-# The public robot collection tests/corpus.rs runs its arms from (data only, hence no deps).
-"$venv/bin/pip" install --quiet --disable-pip-version-check --no-deps example-robot-data==6.0.0
+# The public robot collection tests/corpus.rs runs its arms from (data only, hence no deps),
+# and the xacro program tests/xacro.rs expands xacro files with (pure Python; YAML, which
+# only its load_yaml needs, left out).
+"$venv/bin/pip" install --quiet --disable-pip-version-check --no-deps \
+    example-robot-data==6.0.0 xacro==2.1.1
 purelib=$("$venv/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
 export EYEHAND_ROBOT_DATA="$purelib/cmeel.prefix/share/example-robot-data"
+export EYEHAND_XACRO_DIR="$PWD/$venv/bin"
 
 cargo test --locked
 cargo test --locked --features rerun --profile recording --test show recording

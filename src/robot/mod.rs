@@ -24,8 +24,8 @@ pub use dynamic::{
 pub use error::RobotError;
 pub use kinematic::{limit_stop_fraction, KinematicSim, SetPointTracker, TrapezoidProfile};
 pub use model::{
-    ArmModel, ArmPose, ArmSettings, Branch, CameraLink, Controlled, Frames, Joints, LearnedJoints,
-    LinkBody, PoseGrid, RevoluteJoint, Wrist, MAX_JOINTS,
+    ArmModel, ArmPose, ArmSettings, BaseLink, Branch, CameraLink, Centres, Controlled, Frames,
+    Joints, LearnedJoints, LinkBody, PoseGrid, RevoluteJoint, Wrist, MAX_JOINTS,
 };
 pub use reach::{ReachFit, ReachFitFailure, ReachSpace};
 pub use simulator::{MoveReport, MoveSettings, SimWork, Simulator};

@@ -24,7 +24,7 @@ pub const PANDA: TestArm = TestArm {
     file: "panda/panda.urdf",
     camera_link: "panda_hand",
     learned: ["panda_joint1", "panda_joint2", "panda_joint4"],
-    boundaries: [-39.0, 84.0, -170.0, -50.0],
+    boundaries: [-48.0, 58.0, -175.0, -54.0],
 };
 
 /// The UR-style arm, its camera on `tool0`.
@@ -32,7 +32,7 @@ pub const UR_STYLE: TestArm = TestArm {
     file: "ur_style.urdf",
     camera_link: "tool0",
     learned: ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint"],
-    boundaries: [-99.0, -20.0, 48.0, 138.0],
+    boundaries: [-161.0, -64.0, -151.0, -27.0],
 };
 
 impl TestArm {
@@ -51,6 +51,7 @@ impl TestArm {
             camera_link: self.camera_link.into(),
             camera_offset: Vector3::zeros(),
             learned_joints: self.learned.into(),
+            ..ArmSettings::default()
         };
         ArmModel::from_description(&description, &settings).unwrap()
     }

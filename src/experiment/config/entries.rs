@@ -10,7 +10,7 @@ use super::scope::{
     PERCEPTRONS, RAYCAST, REGRESSORS, WATCHING,
 };
 use super::urdf_file::UrdfFile;
-use super::values::{CameraKind, ConfigValue, ObstacleBox, ReachSetting, SimKind};
+use super::values::{CameraKind, CameraMount, ConfigValue, ObstacleBox, ReachSetting, SimKind};
 use super::{ConfigErrorKind, Rule};
 use crate::control::ServoMode;
 use crate::learn::change::{ChangeRecovery, ChangeSettings};
@@ -19,7 +19,7 @@ use crate::learn::{
     Lin8Settings, LwprSettings, MergeStrategy, Method, MlpSettings, NestedSettings, NnwSettings,
     PatternSettings, PerceptronSettings, TreeSettings,
 };
-use crate::robot::{CameraLink, Engine, LearnedJoints};
+use crate::robot::{BaseLink, CameraLink, Engine, LearnedJoints};
 
 use Rule::{AtLeast, NonNegative, OpenUnit, Positive, PositiveUpTo, UnitBelowOne, Within};
 use Scope::{All, Unused};
@@ -143,11 +143,18 @@ config_entries! {
     /// The arm's URDF file (a relative one is taken from the config file's folder), or
     /// `shipped` for the OSCAR-6 built in; `--urdf` overrides it.
     urdf: UrdfFile = UrdfFile::default(), "", All, Rule::Any;
-    /// The link the camera is fixed to, the chain from the URDF's root to it the arm; `auto`:
+    /// The link the arm stands on (its frame the world's; one arm of a bigger robot), or
+    /// `root`: the root of the URDF's tree.
+    base_link: BaseLink = BaseLink::Root, "", All, Rule::Any;
+    /// The link the camera is fixed to, the chain from base_link to it the arm; `auto`:
     /// the link named camera_link, else where the chain ends (tool0, a hand, the last link).
     camera_link: CameraLink = CameraLink::Auto, "", All, Rule::Any;
     /// The camera centre x,y,z in the camera link's frame (its z axis the optical axis).
     camera_offset: [f64; 3] = [0.0; 3], "cm", All, Rule::Any;
+    /// The camera on its link: offset x,y,z (m, in the link's frame) and turn roll,pitch,yaw
+    /// (° about the link's x, y, z axes, as a URDF origin's rpy); 0,0,0,0,0,0: at the link's
+    /// origin looking along its z axis (a camera on a flange that faces along -z: 0,0,0,180,0,0).
+    camera_mount: CameraMount = CameraMount::default(), "m, °", All, Rule::Any;
     /// The three learned joints (base yaw, shoulder, elbow) by URDF name, a,b,c; `auto`: the
     /// first joint turning about the vertical, then the two that move the camera most.
     learned_joints: LearnedJoints = LearnedJoints::Auto, "", All, Rule::Any;

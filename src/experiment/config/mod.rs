@@ -30,7 +30,7 @@ pub use rule::Rule;
 pub use scope::Scope;
 pub use source::{Source, Sources};
 pub use urdf_file::UrdfFile;
-pub use values::{CameraKind, ObstacleBox, ReachSetting, SimKind};
+pub use values::{CameraKind, CameraMount, ObstacleBox, ReachSetting, SimKind};
 
 use std::fmt;
 use std::path::Path;

@@ -59,6 +59,21 @@ impl Config {
             &self.camera_offset,
             "must be within 1000 cm of the camera link's origin on each axis",
         )?;
+        let mount = &self.camera_mount;
+        rule(
+            mount.offset_m.iter().all(|v| v.abs() <= 10.0)
+                && mount.rpy_deg.iter().all(|v| v.abs() <= 360.0),
+            "camera_mount",
+            mount,
+            "must lie within 10 m of the camera link's origin on each axis and turn at most 360° \
+             about each",
+        )?;
+        rule(
+            mount.offset_m == [0.0; 3] || self.camera_offset == [0.0; 3],
+            "camera_mount",
+            mount,
+            "gives the camera's offset while camera_offset gives it too: give it in one of them",
+        )?;
         if let LearnedJoints::Named([a, b, c]) = &self.learned_joints {
             rule(
                 a != b && b != c && a != c,

@@ -5,10 +5,7 @@
 use super::json::{base64_f32, base64_u32, pose_json};
 use crate::experiment::setup::{arm_settings, load_description};
 use crate::experiment::show::RecordedRun;
-use crate::robot::description::{
-    auto_camera_link, Chain, GeometryElement, RobotDescription, Shape, TriangleMesh,
-};
-use crate::robot::CameraLink;
+use crate::robot::description::{GeometryElement, RobotDescription, Shape, TriangleMesh};
 use crate::robot::{ArmModel, DescriptionError, Joints};
 use nalgebra::Isometry3;
 use serde_json::{json, Value};
@@ -43,13 +40,7 @@ impl ArmScene {
     pub fn of(run: &RecordedRun) -> Result<ArmScene, DescriptionError> {
         let config = &run.setup.config;
         let description = load_description(config, run.urdf.as_deref())?;
-        let camera_link = match arm_settings(config).camera_link {
-            CameraLink::Auto => description.links[auto_camera_link(&description)]
-                .name
-                .clone(),
-            CameraLink::Named(name) => name,
-        };
-        let chain = Chain::new(&description, &camera_link)?;
+        let chain = arm_settings(config).chain(&description)?;
         let mut parts = Vec::new();
         for (body, chain_body) in chain.bodies.iter().enumerate() {
             for (link, pose) in &chain_body.links {

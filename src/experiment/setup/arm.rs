@@ -17,11 +17,15 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::path::{Path, PathBuf};
 
-/// The arm settings from `camera_link`, `camera_offset` (cm) and `learned_joints`.
+/// The arm settings from `base_link`, `camera_link`, `camera_offset` (cm), `camera_mount`
+/// and `learned_joints`.
 pub fn arm_settings(config: &Config) -> ArmSettings {
     ArmSettings {
+        base_link: config.base_link.clone(),
         camera_link: config.camera_link.clone(),
-        camera_offset: Vector3::from(config.camera_offset) * M_PER_CM,
+        camera_offset: Vector3::from(config.camera_offset) * M_PER_CM
+            + Vector3::from(config.camera_mount.offset_m),
+        camera_turn: config.camera_mount.turn(),
         learned_joints: config.learned_joints.clone(),
     }
 }
@@ -47,10 +51,11 @@ pub fn load_arm(config: &Config, urdf: Option<&Path>) -> Result<LoadedArm, Descr
     let options = DescriptionOptions {
         package_paths: config.package_paths.0.clone(),
     };
-    let model = ArmModel::from_description(&description, &arm_settings(config))?;
+    let settings = arm_settings(config);
+    let model = ArmModel::from_description(&description, &settings)?;
     let camera = match &config.camera_link {
         CameraLink::Auto => {
-            let choice = camera_choice(&description);
+            let choice = camera_choice(&description, settings.base(&description)?);
             let name = &description.links[choice.link].name;
             format!("`{name}` (camera_link auto: {})", choice.reason)
         }
@@ -136,6 +141,8 @@ pub fn arm_entry(error: &DescriptionError) -> Option<&'static str> {
         Kind::UnknownLink { .. } | Kind::NoMovingJoint { .. } | Kind::PrismaticOnChain { .. } => {
             Some("camera_link")
         }
+        Kind::CannotLookDown { .. } => Some("camera_mount"),
+        Kind::UnknownBaseLink { .. } | Kind::CameraNotBelowBase { .. } => Some("base_link"),
         Kind::UnknownJoint { .. }
         | Kind::LearnedJointFixed { .. }
         | Kind::LearnedJointOffChain { .. }

@@ -325,6 +325,7 @@ mod tests {
             camera_link: "panda_hand".into(),
             camera_offset: Vector3::zeros(),
             learned_joints: ["panda_joint1", "panda_joint2", "panda_joint4"].into(),
+            ..ArmSettings::default()
         };
         let model = ArmModel::from_description(&description, &settings).unwrap();
         let geometry = ArmGeometry::new(&model);

@@ -26,27 +26,23 @@ pub struct CameraChoice {
     pub reason: String,
 }
 
-/// The camera link of `camera_link auto` ([`camera_choice`]).
-pub fn auto_camera_link(description: &RobotDescription) -> usize {
-    camera_choice(description).link
-}
-
 /// The camera link of `camera_link auto`: the link named `camera_link` where there is one,
-/// else the link where the chain from the root ends: followed through every single child,
+/// else the link where the chain from link `base` (an index; the root for a whole robot)
+/// ends: followed through every single child,
 /// and at a branch into the child whose subtree turns most joints, it stops at a leaf or
 /// where no child turns a joint any more (a hand whose fingers slide: the hand), or at the
 /// link that carries a gripper joint (the hand). It never passes a gripper joint — a moving joint whose name says gripper, finger, jaw, claw,
 /// knuckle or thumb, or that mimics or is mimicked by another — so the camera never rides
 /// on a part that moves relative to the flange; and where the chain ends in `tool0` (the
 /// flange frame of ROS-Industrial descriptions) among fixed children, it is that.
-pub fn camera_choice(description: &RobotDescription) -> CameraChoice {
+pub fn camera_choice(description: &RobotDescription, base: usize) -> CameraChoice {
     if let Some(link) = description.link_index(NAMED_CAMERA_LINK) {
         return CameraChoice {
             link,
             reason: format!("the link named `{NAMED_CAMERA_LINK}`"),
         };
     }
-    let mut at = description.root;
+    let mut at = base;
     let mut gripper = None;
     loop {
         let children: Vec<usize> = description.links[at]

@@ -73,12 +73,29 @@ impl Chain {
         description: &RobotDescription,
         camera_link: &str,
     ) -> Result<Chain, DescriptionError> {
+        Chain::below(description, description.root, camera_link)
+    }
+
+    /// The chain from link `base` (an index; its frame the world's) to the link named
+    /// `camera_link`, which must lie below it; the moving joints off the chain below `base`
+    /// are held.
+    pub fn below(
+        description: &RobotDescription,
+        base: usize,
+        camera_link: &str,
+    ) -> Result<Chain, DescriptionError> {
         let camera = description.link_index(camera_link).ok_or_else(|| {
             description.error(Kind::UnknownLink {
                 link: camera_link.to_string(),
             })
         })?;
-        let moving: Vec<usize> = path_to(description, camera)
+        let path = path_to(description, base, camera).ok_or_else(|| {
+            description.error(Kind::CameraNotBelowBase {
+                camera_link: camera_link.to_string(),
+                base_link: description.links[base].name.clone(),
+            })
+        })?;
+        let moving: Vec<usize> = path
             .into_iter()
             .filter(|&j| description.joints[j].kind.moves())
             .collect();
@@ -96,8 +113,8 @@ impl Chain {
                 leader: mimic.joint.clone(),
             }));
         }
-        let seeds = std::iter::once(description.root)
-            .chain(moving.iter().map(|&j| description.joints[j].child));
+        let seeds =
+            std::iter::once(base).chain(moving.iter().map(|&j| description.joints[j].child));
         let bodies: Vec<ChainBody> = seeds
             .map(|seed| ChainBody::rooted_at(description, seed))
             .collect();
@@ -127,11 +144,14 @@ impl Chain {
             .expect("a body per moving joint and the root's");
         let camera_in_body =
             pose_in(last, camera).expect("no moving joint after the last one on the path");
+        let below = links_below(description, base);
         let held = description
             .joints
             .iter()
             .enumerate()
-            .filter(|(j, joint)| joint.kind.moves() && !moving.contains(j))
+            .filter(|(j, joint)| {
+                joint.kind.moves() && !moving.contains(j) && below.contains(&joint.parent)
+            })
             .map(|(j, joint)| {
                 Ok(HeldJoint {
                     joint: j,
@@ -190,16 +210,34 @@ impl Chain {
     }
 }
 
-/// The joints from the root to `link`, root first.
-fn path_to(description: &RobotDescription, link: usize) -> Vec<usize> {
+/// The joints from `base` down to `link`, nearest `base` first; `None` when `link` does
+/// not lie below `base` (or is it: then there are no joints).
+fn path_to(description: &RobotDescription, base: usize, link: usize) -> Option<Vec<usize>> {
     let mut path = Vec::new();
     let mut at = link;
-    while let Some(j) = description.links[at].parent_joint {
+    while at != base {
+        let j = description.links[at].parent_joint?;
         path.push(j);
         at = description.joints[j].parent;
     }
     path.reverse();
-    path
+    Some(path)
+}
+
+/// Link `base` and every link below it.
+fn links_below(description: &RobotDescription, base: usize) -> Vec<usize> {
+    let mut links = vec![base];
+    let mut next = 0;
+    while let Some(&link) = links.get(next) {
+        links.extend(
+            description.links[link]
+                .child_joints
+                .iter()
+                .map(|&j| description.joints[j].child),
+        );
+        next += 1;
+    }
+    links
 }
 
 impl ChainBody {

@@ -22,6 +22,22 @@ pub enum DescriptionErrorKind {
         /// The operating system's reason.
         reason: String,
     },
+    /// A `.xacro` file, and no `xacro` program on the PATH to expand it.
+    #[error(
+        "is a xacro file and the `xacro` program that expands it is not on the PATH: install \
+         it (`pip install xacro`, or ROS's xacro package) or expand the file yourself \
+         (`xacro FILE > FILE.urdf`) and name the URDF"
+    )]
+    XacroMissing,
+    /// The `xacro` program failed on the file.
+    #[error("`xacro` could not expand it (exit status {}): {reason}",
+        .status.map_or("none".to_string(), |s| s.to_string()))]
+    XacroFailed {
+        /// Its exit status (`None`: it was not run, or a signal ended it).
+        status: Option<i32>,
+        /// What it said (the end of its error output).
+        reason: String,
+    },
     /// Not XML, or not a URDF urdf-rs can read.
     #[error("not a valid URDF: {reason}")]
     NotUrdf {
@@ -213,6 +229,20 @@ pub enum DescriptionErrorKind {
         /// The name asked for.
         link: String,
     },
+    /// A base link that is not a link of the robot.
+    #[error("base link `{link}` is not a link of the robot")]
+    UnknownBaseLink {
+        /// The name asked for.
+        link: String,
+    },
+    /// A camera link that does not hang below the base link.
+    #[error("camera link `{camera_link}` does not lie below base link `{base_link}`: the arm is the chain from the base link down to the camera link")]
+    CameraNotBelowBase {
+        /// The camera link.
+        camera_link: String,
+        /// The base link.
+        base_link: String,
+    },
     /// A moving joint on the chain that follows another (`<mimic>`): the arm's joints
     /// are moved one by one.
     #[error(
@@ -288,6 +318,42 @@ pub enum DescriptionErrorKind {
     TooFewJointsToLearn {
         /// Moving joints after the base yaw.
         after_base: usize,
+    },
+    /// A camera that no pose of the wrist turns to look straight down.
+    #[error(
+        "the camera on `{camera_link}` cannot look down: {}; if the camera looks along \
+         another axis of its link, say how it is mounted with camera_mount (roll,pitch,yaw \
+         turn the link's z axis onto the optical axis)",
+        if .wrist.is_empty() {
+            "no joint is left after the three learned ones to turn it".to_string()
+        } else {
+            format!("the joints after the learned ones ({}) turn the optical axis (the link's \
+                     z axis as camera_mount turns it) straight down inside their limits at \
+                     none of {} shoulder-elbow poses tried", .wrist.join(", "), .tried)
+        }
+    )]
+    CannotLookDown {
+        /// The camera link.
+        camera_link: String,
+        /// The joints that are not learned, nearest the base first.
+        wrist: Vec<String>,
+        /// The shoulder–elbow poses tried.
+        tried: usize,
+    },
+    /// A camera that looks back into its own arm: a joint of the chain lies on its optical
+    /// axis in front of it when it looks down.
+    #[error(
+        "the camera on `{camera_link}` looks back into the arm: joint `{joint}` lies {distance_cm:.1} cm \
+         in front of it on its optical axis (the link's z axis) when it looks down; turn it to \
+         look away from the arm with camera_mount (0,0,0,180,0,0 looks along the link's -z)"
+    )]
+    CameraFacesArm {
+        /// The camera link.
+        camera_link: String,
+        /// The joint in front of the camera.
+        joint: String,
+        /// How far in front (cm).
+        distance_cm: f64,
     },
     /// A chain with more moving joints than an arm model holds.
     #[error("the chain has {found} moving joints; an arm may have at most {max}")]

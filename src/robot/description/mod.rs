@@ -1,5 +1,6 @@
-//! Any robot from its URDF: links and joints as a tree, meshes read from disk, the serial
-//! chain from the root to a camera link, and its forward kinematics.
+//! Any robot from its URDF (or a xacro file, expanded): links and joints as a tree, meshes
+//! read from disk, the serial chain from the root to a camera link, and its forward
+//! kinematics.
 
 mod auto_arm;
 mod chain;
@@ -17,8 +18,9 @@ mod resolve;
 mod robot;
 mod tree;
 mod warning;
+mod xacro;
 
-pub use auto_arm::{auto_camera_link, camera_choice, CameraChoice};
+pub use auto_arm::{camera_choice, CameraChoice};
 pub use chain::{Chain, ChainBody, ChainJoint, HeldJoint};
 pub use error::{DescriptionError, DescriptionErrorKind};
 pub use geometry::{GeometryElement, MeshGeometry, Shape};

@@ -5,6 +5,7 @@ use super::geometry::GeometryReader;
 use super::joint::Joint;
 use super::link::Link;
 use super::tree::tree_shape;
+use super::xacro;
 use super::{DescriptionError, DescriptionErrorKind as Kind, DescriptionWarning};
 use nalgebra::Point3;
 use std::path::{Path, PathBuf};
@@ -35,16 +36,25 @@ pub struct RobotDescription {
 }
 
 impl RobotDescription {
-    /// Reads a URDF file; meshes are looked up relative to its folder.
+    /// Reads a URDF file, or a xacro file (`.xacro`) expanded by the `xacro` program;
+    /// meshes are looked up relative to its folder.
     pub fn load(path: &Path, options: &DescriptionOptions) -> Result<Self, DescriptionError> {
         let file = path.display().to_string();
         let limit = crate::files::MAX_URDF_BYTES;
-        let text = crate::files::read_text(path, limit).map_err(|e| DescriptionError {
+        let fail = |kind| DescriptionError {
             file: file.clone(),
-            kind: Kind::Unreadable {
+            kind,
+        };
+        let text = crate::files::read_text(path, limit).map_err(|e| {
+            fail(Kind::Unreadable {
                 reason: e.to_string(),
-            },
+            })
         })?;
+        let text = if xacro::is_xacro(path) {
+            xacro::expand(path, limit).map_err(fail)?
+        } else {
+            text
+        };
         let folder = path.parent().unwrap_or(Path::new("."));
         Self::parse(&text, &file, folder, options)
     }

@@ -1,11 +1,15 @@
 //! The branch of an arm's solutions its inverse kinematics keeps to: one connected region
 //! of shoulder–elbow poses over which the camera's distance from the base axis and its
 //! height turn the same way (the sign of ∂(r, z)/∂(θ2, θ3), the wrist following, never
-//! changes). Crossing its edge — the elbow passing straight, the camera passing over the
-//! base axis — changes the sign, so a camera position reached on the branch is reached by
-//! one shoulder–elbow pose on it: the mapping the learners learn has one value.
+//! changes) and the camera stays on one side of the base axis. Crossing its edge — the
+//! elbow passing straight, the camera passing over the base axis — changes the sign, so a
+//! camera position reached on the branch is reached by one shoulder–elbow pose on it: the
+//! mapping the learners learn has one value. Where the two edges cross (the straight arm
+//! over the base axis) the regions of the elbow bent one way on one side and the other way
+//! on the other side have the same sign and touch; the side keeps them apart.
 
 use super::{ArmModel, ArmPose, Controlled, Joints};
+use nalgebra::Vector3;
 use std::f64::consts::TAU;
 
 /// How far (degrees) sampled shoulder and elbow angles stay inside limits that do not go
@@ -139,12 +143,13 @@ impl PoseGrid {
     }
 
     /// The connected sets of cells (four-neighbours, round full turns) of one non-zero
-    /// sign in `signs`, largest first.
-    pub fn components(&self, signs: &[i8]) -> Vec<Vec<usize>> {
+    /// sign in `signs` and one side of the base axis in `sides` (see [`side_of`]), largest
+    /// first.
+    pub fn components(&self, signs: &[i8], sides: &[i8]) -> Vec<Vec<usize>> {
         let mut seen = vec![false; signs.len()];
         let mut found = Vec::new();
         for start in 0..signs.len() {
-            if seen[start] || signs[start] == 0 {
+            if seen[start] || signs[start] == 0 || sides[start] == 0 {
                 continue;
             }
             seen[start] = true;
@@ -154,7 +159,7 @@ impl PoseGrid {
                 let (i, k) = (cell / self.steps, cell % self.steps);
                 for (a, b) in self.neighbours(i, k) {
                     let next = self.index(a, b);
-                    if !seen[next] && signs[next] == signs[start] {
+                    if !seen[next] && signs[next] == signs[start] && sides[next] == sides[start] {
                         seen[next] = true;
                         stack.push(next);
                     }
@@ -166,21 +171,21 @@ impl PoseGrid {
         found
     }
 
-    /// The camera centres (r, z; m) of the grid's poses of `model` whose wrist keeps the
-    /// camera looking down inside its limits (`None` elsewhere), each wrist solved from its
-    /// neighbour's, outwards from the rest pose, so that the whole grid keeps the rest
-    /// pose's wrist branch. `visit` sees every pose with its cell's index and whether its
-    /// wrist fits.
+    /// The camera centres of the grid's poses of `model` whose wrist keeps the camera
+    /// looking down inside its limits, each wrist solved from its neighbour's, outwards
+    /// from the rest pose, so that the whole grid keeps the rest pose's wrist branch.
+    /// `visit` sees every pose with its cell's index and whether its wrist fits.
     pub fn centres(
         &self,
         model: &ArmModel,
         mut visit: impl FnMut(usize, &ArmPose, bool),
-    ) -> Vec<Option<(f64, f64)>> {
+    ) -> Centres {
         let steps = self.steps;
         let [yaw, s, e] = model.learned();
         let rest = model.rest();
         let (i_rest, k_rest) = (self.step_of(0, rest[s]), self.step_of(1, rest[e]));
         let mut centres = vec![None; steps * steps];
+        let mut sides = vec![0; steps * steps];
         let mut row_starts: Vec<Joints> = vec![rest; steps];
         for (i, from_row) in outward(i_rest, steps) {
             let start = from_row.map_or(rest, |f| row_starts[f]);
@@ -196,11 +201,43 @@ impl PoseGrid {
                     row[k] = pose.joints;
                     let p = pose.camera.translation.vector;
                     centres[self.index(i, k)] = Some((p.x.hypot(p.y), p.z));
+                    sides[self.index(i, k)] = side_of(model, &pose);
                 }
             }
             row_starts[i] = row[k_rest];
         }
-        centres
+        Centres {
+            points: centres,
+            sides,
+        }
+    }
+}
+
+/// The camera centres of a [`PoseGrid`]'s poses and the side of the base axis each lies on.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Centres {
+    /// `points[grid.index(i, k)]`: the camera centre (r, z; m) of shoulder step i, elbow
+    /// step k, where its wrist looks down inside its limits (`None` elsewhere).
+    pub points: Vec<Option<(f64, f64)>>,
+    /// The side of the base axis ([`side_of`]) of each cell with a centre, 0 elsewhere.
+    pub sides: Vec<i8>,
+}
+
+/// The side of the base axis the camera of `pose` lies on: the sign (+1 or −1) of its
+/// distance along the horizontal line across the shoulder's axis (the line the shoulder
+/// swings it along), 0 on the axis; +1 when the shoulder's axis is vertical.
+pub(crate) fn side_of(model: &ArmModel, pose: &ArmPose) -> i8 {
+    let shoulder = model.learned()[1];
+    let axis = pose.frames[shoulder].rotation * model.joints()[shoulder].axis.into_inner();
+    let across = Vector3::z().cross(&axis);
+    if across.norm() < 1e-9 {
+        return 1;
+    }
+    let along = across.dot(&pose.camera.translation.vector);
+    if along == 0.0 {
+        0
+    } else {
+        along.signum() as i8
     }
 }
 
@@ -212,14 +249,15 @@ fn outward(centre: usize, steps: usize) -> impl Iterator<Item = (usize, Option<u
     std::iter::once((centre, None)).chain(up).chain(down)
 }
 
-/// The branch of an arm's solutions: the cells of a [`PoseGrid`] it holds, and the sign of
-/// ∂(r, z)/∂(θ2, θ3) over them.
+/// The branch of an arm's solutions: the cells of a [`PoseGrid`] it holds, the sign of
+/// ∂(r, z)/∂(θ2, θ3) over them and the side of the base axis ([`side_of`]) they lie on.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Branch {
     grid: PoseGrid,
     /// `cells[grid.index(i, k)]`: whether shoulder step i, elbow step k is on the branch.
     cells: Vec<bool>,
     sign: f64,
+    side: i8,
     /// The shoulder's and the elbow's angle (rad) at the middle of the branch: a joint
     /// that turns all the way round answers within half a turn of it.
     middle: [f64; 2],
@@ -227,8 +265,8 @@ pub struct Branch {
 
 impl Branch {
     /// The branch of `grid` made of `cells` (indices), over which ∂(r, z)/∂(θ2, θ3) has
-    /// sign `sign`.
-    pub fn new(grid: PoseGrid, cells: &[usize], sign: i8) -> Branch {
+    /// sign `sign` and the camera lies on side `side` of the base axis.
+    pub fn new(grid: PoseGrid, cells: &[usize], sign: i8, side: i8) -> Branch {
         let mut on = vec![false; grid.steps * grid.steps];
         for &cell in cells {
             on[cell] = true;
@@ -246,6 +284,7 @@ impl Branch {
             grid,
             cells: on,
             sign: f64::from(sign),
+            side,
             middle,
         }
     }
@@ -267,10 +306,11 @@ impl Branch {
     /// its limits (contacts not looked at).
     pub(super) fn kinematic(model: &ArmModel) -> Option<Branch> {
         let grid = PoseGrid::of(model, KINEMATIC_STEPS);
-        let signs = grid.signs(&grid.centres(model, |_, _, _| {}));
-        let largest = grid.components(&signs).into_iter().next()?;
-        let sign = signs[largest[0]];
-        Some(Branch::new(grid, &largest, sign))
+        let centres = grid.centres(model, |_, _, _| {});
+        let signs = grid.signs(&centres.points);
+        let largest = grid.components(&signs, &centres.sides).into_iter().next()?;
+        let (sign, side) = (signs[largest[0]], centres.sides[largest[0]]);
+        Some(Branch::new(grid, &largest, sign, side))
     }
 
     /// True when the shoulder at `theta2` and the elbow at `theta3` (rad) lie on the branch:
@@ -285,9 +325,9 @@ impl Branch {
     }
 
     /// True when a pose at `theta2`, `theta3` whose ∂(r, z)/∂(θ2, θ3) has determinant `det`
-    /// lies on the branch.
-    pub fn holds_with(&self, theta2: f64, theta3: f64, det: f64) -> bool {
-        det * self.sign > 0.0 && self.holds(theta2, theta3)
+    /// and whose camera lies on side `side` of the base axis lies on the branch.
+    pub fn holds_with(&self, theta2: f64, theta3: f64, det: f64, side: i8) -> bool {
+        det * self.sign > 0.0 && side == self.side && self.holds(theta2, theta3)
     }
 }
 
@@ -330,7 +370,7 @@ mod tests {
             })
             .collect();
         let signs = grid.signs(&centres);
-        let components = grid.components(&signs);
+        let components = grid.components(&signs, &vec![1; 36 * 36]);
         let elbow_sign = |k: usize| signs[grid.index(5, k)];
         assert_ne!(elbow_sign(9), elbow_sign(27), "elbow one way and the other");
         // The hand's r is kept away from the axis, so only the elbow splits the grid.
@@ -340,10 +380,12 @@ mod tests {
             "{:?}",
             components.iter().map(Vec::len).collect::<Vec<_>>()
         );
-        let branch = Branch::new(grid.clone(), &components[0], signs[components[0][0]]);
+        let branch = Branch::new(grid.clone(), &components[0], signs[components[0][0]], 1);
         let cell = components[0][components[0].len() / 2];
         let (s, e) = (grid.angle(0, cell / 36), grid.angle(1, cell % 36));
         assert!(branch.holds(s, e) && branch.holds(s + TAU, e - TAU));
-        assert!(!branch.holds_with(s, e, -f64::from(signs[cell])));
+        let det = f64::from(signs[cell]);
+        assert!(!branch.holds_with(s, e, -det, 1));
+        assert!(branch.holds_with(s, e, det, 1) && !branch.holds_with(s, e, det, -1));
     }
 }

@@ -269,7 +269,7 @@ impl ArmModel {
         let out = Vector3::new(here.x / radius, here.y / radius, 0.0);
         let (dr2, dr3) = (out.dot(&jacobian.column(1)), out.dot(&jacobian.column(2)));
         let det = dr2 * jacobian[(2, 2)] - jacobian[(2, 1)] * dr3;
-        branch.holds_with(theta.y, theta.z, det)
+        branch.holds_with(theta.y, theta.z, det, super::side_of(self, pose))
     }
 
     /// A closed-form guess for a Puma-like arm: yaw towards the target, then the

@@ -11,8 +11,9 @@ mod joint;
 mod joint_vector;
 mod wrist;
 
-pub use branch::{Branch, PoseGrid};
-pub use build::{ArmSettings, CameraLink, LearnedJoints};
+pub(crate) use branch::side_of;
+pub use branch::{Branch, Centres, PoseGrid};
+pub use build::{ArmSettings, BaseLink, CameraLink, LearnedJoints};
 pub use frames::Frames;
 pub use wrist::Wrist;
 
@@ -39,8 +40,8 @@ pub struct ArmPose {
     pub level_frames: Frames,
     /// The joint frames of `joints` (as [`ArmModel::link_frames`] gives them).
     pub frames: Frames,
-    /// False when no wrist angles keep the camera vertical with the image x axis radial
-    /// (the pose is then outside the arm's reach; `joints` holds the last attempt).
+    /// False when no wrist angles turn the optical axis straight down (the pose is then
+    /// outside the arm's reach; `joints` holds the last attempt).
     pub wrist_found: bool,
 }
 
@@ -121,8 +122,7 @@ impl ArmModel {
             seeds: IkSeeds::default(),
             branch: None,
         };
-        model.wrist = Wrist::choose(&model);
-        model.rest = model.wrist.held_rest(&model);
+        (model.wrist, model.rest) = Wrist::choose(&model);
         model.update_derived();
         if !model.is_oscar6_form() {
             model.branch = Branch::kinematic(&model);

@@ -4,7 +4,7 @@
 //! the arm's solutions — with a margin.
 
 use crate::robot::contact::contact_free::{ContactRule, Touch};
-use crate::robot::model::{Branch, PoseGrid};
+use crate::robot::model::{Branch, Centres, PoseGrid};
 use crate::robot::{ArmModel, ReachSpace};
 
 /// Grid cell of the reached (r, z) set (m).
@@ -164,7 +164,7 @@ impl ReachSpace {
         let free: Vec<i8> = (0..signs.len())
             .map(|cell| if samples.free[cell] { signs[cell] } else { 0 })
             .collect();
-        let branches = samples.grid.components(&free);
+        let branches = samples.grid.components(&free, &samples.sides);
         let free_poses = samples.free.iter().filter(|f| **f).count();
         let on = |cells: &[usize]| {
             let mut points = vec![None; samples.points.len()];
@@ -174,6 +174,7 @@ impl ReachSpace {
             Samples {
                 grid: samples.grid.clone(),
                 points,
+                sides: Vec::new(),
                 free: Vec::new(),
             }
         };
@@ -192,7 +193,12 @@ impl ReachSpace {
             area_share,
             sampled: tally.sampled,
             usable: cells.len(),
-            branch: Branch::new(samples.grid.clone(), cells, signs[cells[0]]),
+            branch: Branch::new(
+                samples.grid.clone(),
+                cells,
+                signs[cells[0]],
+                samples.sides[cells[0]],
+            ),
         })
     }
 }
@@ -259,6 +265,8 @@ struct Samples {
     grid: PoseGrid,
     /// `points[grid.index(i, k)]`: shoulder step i, elbow step k.
     points: Vec<Option<(f64, f64)>>,
+    /// The side of the base axis each reached point lies on (see [`Centres`]).
+    sides: Vec<i8>,
     /// Whether each pose is free of contact.
     free: Vec<bool>,
 }
@@ -328,7 +336,7 @@ fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) 
     };
     let contact = ContactRule::new(model, floor_z);
     let mut free = vec![false; STEPS * STEPS];
-    let points = grid.centres(model, |cell, pose, fits| {
+    let Centres { points, sides } = grid.centres(model, |cell, pose, fits| {
         if !fits {
             tally.no_wrist += 1;
             return;
@@ -339,5 +347,13 @@ fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) 
             None => free[cell] = true,
         }
     });
-    (Samples { grid, points, free }, tally)
+    (
+        Samples {
+            grid,
+            points,
+            sides,
+            free,
+        },
+        tally,
+    )
 }

@@ -9,7 +9,7 @@ pub use choices::{CameraKind, SimKind};
 pub use obstacle::ObstacleBox;
 
 use super::ValueError;
-use crate::robot::{CameraLink, LearnedJoints};
+use crate::robot::{BaseLink, CameraLink, LearnedJoints};
 use std::str::FromStr;
 
 /// A value a config entry can hold.
@@ -132,6 +132,60 @@ impl ConfigValue for [f64; 5] {
     }
     fn render(&self) -> String {
         self.map(|v| format!("{v:?}")).join(",")
+    }
+}
+
+/// The camera's pose on its link: `x,y,z,roll,pitch,yaw`.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct CameraMount {
+    /// The camera centre's offset from the camera link's origin, in its frame (m).
+    pub offset_m: [f64; 3],
+    /// The camera's turn: roll, pitch and yaw about the link's x, y and z axes, in that
+    /// order (as a URDF origin's rpy, in degrees).
+    pub rpy_deg: [f64; 3],
+}
+
+impl CameraMount {
+    /// The turn as a quaternion.
+    pub fn turn(&self) -> nalgebra::UnitQuaternion<f64> {
+        let [roll, pitch, yaw] = self.rpy_deg.map(f64::to_radians);
+        nalgebra::UnitQuaternion::from_euler_angles(roll, pitch, yaw)
+    }
+}
+
+impl ConfigValue for CameraMount {
+    const KIND: &'static str = "x,y,z,roll,pitch,yaw";
+    fn parse_value(raw: &str) -> Result<Self, ValueError> {
+        let [x, y, z, roll, pitch, yaw] =
+            list(raw, "six real numbers x,y,z,roll,pitch,yaw", finite)?;
+        Ok(CameraMount {
+            offset_m: [x, y, z],
+            rpy_deg: [roll, pitch, yaw],
+        })
+    }
+    fn render(&self) -> String {
+        let [x, y, z] = self.offset_m;
+        let [roll, pitch, yaw] = self.rpy_deg;
+        [x, y, z, roll, pitch, yaw]
+            .map(|v| format!("{v:?}"))
+            .join(",")
+    }
+}
+
+/// `root`, or a link's name.
+impl ConfigValue for BaseLink {
+    const KIND: &'static str = "root or a link";
+    fn parse_value(raw: &str) -> Result<Self, ValueError> {
+        Ok(match raw {
+            "root" => BaseLink::Root,
+            name => BaseLink::Named(name.to_string()),
+        })
+    }
+    fn render(&self) -> String {
+        match self {
+            BaseLink::Root => "root".to_string(),
+            BaseLink::Named(name) => name.clone(),
+        }
     }
 }
 

@@ -143,7 +143,7 @@ impl PoseGrid {
     }
 
     /// The connected sets of cells (four-neighbours, round full turns) of one non-zero
-    /// sign in `signs` and one side of the base axis in `sides` (see [`side_of`]), largest
+    /// sign in `signs` and one side of the base axis in `sides` (see `side_of`), largest
     /// first.
     pub fn components(&self, signs: &[i8], sides: &[i8]) -> Vec<Vec<usize>> {
         let mut seen = vec![false; signs.len()];
@@ -219,7 +219,7 @@ pub struct Centres {
     /// `points[grid.index(i, k)]`: the camera centre (r, z; m) of shoulder step i, elbow
     /// step k, where its wrist looks down inside its limits (`None` elsewhere).
     pub points: Vec<Option<(f64, f64)>>,
-    /// The side of the base axis ([`side_of`]) of each cell with a centre, 0 elsewhere.
+    /// The side of the base axis (`side_of`) of each cell with a centre, 0 elsewhere.
     pub sides: Vec<i8>,
 }
 
@@ -250,7 +250,7 @@ fn outward(centre: usize, steps: usize) -> impl Iterator<Item = (usize, Option<u
 }
 
 /// The branch of an arm's solutions: the cells of a [`PoseGrid`] it holds, the sign of
-/// ∂(r, z)/∂(θ2, θ3) over them and the side of the base axis ([`side_of`]) they lie on.
+/// ∂(r, z)/∂(θ2, θ3) over them and the side of the base axis (`side_of`) they lie on.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Branch {
     grid: PoseGrid,

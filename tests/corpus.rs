@@ -14,8 +14,9 @@ use rand_chacha::ChaCha8Rng;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-/// The variable naming the collection's `share/example-robot-data` folder.
-const ROBOT_DATA: &str = "EYEHAND_ROBOT_DATA";
+#[path = "common/robot_data.rs"]
+mod robot_data;
+use robot_data::{robot_data, ROBOT_DATA};
 
 /// What an arm does with nothing but `--urdf`.
 #[derive(Debug, Clone, Copy)]
@@ -85,14 +86,7 @@ const ARMS: &[Arm] = &[
 ];
 
 fn robots() -> PathBuf {
-    let folder = std::env::var_os(ROBOT_DATA).unwrap_or_else(|| {
-        panic!(
-            "{ROBOT_DATA} is not set: install the collection (`pip install --no-deps \
-             example-robot-data==6.0.0`, as scripts/test-all.sh does) and set it to its \
-             share/example-robot-data folder"
-        )
-    });
-    let robots = PathBuf::from(folder).join("robots");
+    let robots = robot_data().join("robots");
     assert!(
         robots.is_dir(),
         "{ROBOT_DATA}: no folder {}",

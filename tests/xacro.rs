@@ -8,21 +8,11 @@ use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-/// The variable naming the collection's `share/example-robot-data` folder.
-const ROBOT_DATA: &str = "EYEHAND_ROBOT_DATA";
+#[path = "common/robot_data.rs"]
+mod robot_data;
+use robot_data::robot_data;
 /// The variable naming a folder that holds the `xacro` program.
 const XACRO_DIR: &str = "EYEHAND_XACRO_DIR";
-
-fn robot_data() -> PathBuf {
-    let folder = std::env::var_os(ROBOT_DATA).unwrap_or_else(|| {
-        panic!(
-            "{ROBOT_DATA} is not set: install the collection (`pip install --no-deps \
-             example-robot-data==6.0.0`, as scripts/test-all.sh does) and set it to its \
-             share/example-robot-data folder"
-        )
-    });
-    PathBuf::from(folder)
-}
 
 /// A PATH on which the `xacro` program is found.
 fn path_with_xacro() -> OsString {

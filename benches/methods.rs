@@ -6,9 +6,16 @@
 //! 1,000; averaged over the seeds), per seed the trials until the 4-step mean over the last
 //! 200 trials is at most 1 mm and 0.1 mm (as `compare`), the trials per second of that run
 //! (mean over the seeds), and per seed the trials to recover (the 4-step mean over the last
-//! 50 trials within 1.5× its level over the 500 before: `FourStepTrace::recovered_after`;
-//! "never": not by the last trial) after a 30° camera turn and after link 2 +10 cm and
-//! −10 cm at a quarter of the trials.
+//! 50 trials within 1.5× its level over the 500 before: `FourStepTrace::recovered_after`)
+//! after a 30° camera turn and after link 2 +10 cm and −10 cm at a quarter of the trials.
+//! A run with an event ends [`RECOVERY_SPAN`] trials after it (or with the run without one,
+//! if that is sooner): "never" means not within those trials.
+//!
+//! The runs (method × seed × {no event, three events}) are seeded and independent; they run
+//! as separate processes, as many at once as the machine has cores (`--jobs N` to say
+//! otherwise), and the rows are printed in the order of the methods asked for, each as soon
+//! as its runs and those of the rows above are done: the table is the one a run after
+//! another would print.
 //!
 //! `cargo bench --bench methods` (20,000 trials, the events at 5,000); `cargo bench --bench
 //! methods -- broyden lin5` runs only those methods; `-- --trials N` runs N trials each
@@ -19,10 +26,13 @@ mod common;
 use common::run_cli;
 use eyehand::experiment::FourStepTrace;
 use eyehand::learn::Method;
-use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::mpsc;
 
 /// Trials per run unless `--trials` says otherwise.
 const TRIALS: usize = 20_000;
+/// Trials a run with an event goes on after it: its recovery is decided within them.
+const RECOVERY_SPAN: usize = 3_000;
 const SEEDS: [u64; 3] = [1, 2, 3];
 /// The events, as a table column and as `--event` with the trial left for `{}`.
 const EVENTS: [(&str, &str); 3] = [
@@ -30,6 +40,8 @@ const EVENTS: [(&str, &str); 3] = [
     ("link 2 +10 cm", "elongate:{}:2:10"),
     ("link 2 −10 cm", "elongate:{}:2:-10"),
 ];
+/// Runs per method and seed: one without an event, one per event.
+const RUNS_PER_SEED: usize = 1 + EVENTS.len();
 /// Trials in the running 4-step mean whose first reach of 1 mm and 0.1 mm is counted.
 const TRIALS_TO_WINDOW: usize = 200;
 /// Feedback steps whose mean distance is tabulated (the shipped `feedback_steps`).
@@ -40,51 +52,107 @@ fn watches(method: Method) -> bool {
     !matches!(method, Method::Ik | Method::Broyden)
 }
 
+/// One run of the table: a method, a seed, and the index in [`EVENTS`] of its event
+/// (`None`: the run without one).
+struct Cell {
+    method: Method,
+    seed: u64,
+    event: Option<usize>,
+}
+
+/// What one run gave.
+enum Outcome {
+    /// The run without an event.
+    Plain {
+        by_step: Vec<Option<f64>>,
+        to_1mm: Option<usize>,
+        to_01mm: Option<usize>,
+        trials_per_second: f64,
+    },
+    /// A run with an event: the trials to recover from it.
+    Recovered(Option<usize>),
+}
+
+/// Runs `cell` (`trials` trials without an event; with one, until [`RECOVERY_SPAN`] trials
+/// after it) in a data folder of its own.
+fn run_cell(cell: &Cell, trials: usize) -> Outcome {
+    let config = format!(
+        "{}/configs/{}.conf",
+        env!("CARGO_MANIFEST_DIR"),
+        cell.method
+    );
+    let event_trial = trials / 4;
+    let length = match cell.event {
+        None => trials,
+        Some(_) => trials.min(event_trial + RECOVERY_SPAN),
+    };
+    let (length_text, seed_text) = (length.to_string(), cell.seed.to_string());
+    let mut args = vec![
+        "--config",
+        &config,
+        "--trials",
+        &length_text,
+        "--seed",
+        &seed_text,
+    ];
+    if watches(cell.method) {
+        args.extend(["--set", "merge_strategy=change_detection"]);
+    }
+    let event = cell
+        .event
+        .map(|e| EVENTS[e].1.replace("{}", &event_trial.to_string()));
+    if let Some(event) = &event {
+        args.extend(["--event", event]);
+    }
+    let data = tempfile::tempdir().expect("a temporary data folder");
+    let run = run_cli(data.path(), &args);
+    let trace = FourStepTrace::read(&run.folder).expect("4step");
+    match cell.event {
+        None => Outcome::Plain {
+            by_step: run.summary.mean_distance_by_step_mm.clone(),
+            to_1mm: trace.first_within(1.0, TRIALS_TO_WINDOW),
+            to_01mm: trace.first_within(0.1, TRIALS_TO_WINDOW),
+            trials_per_second: run.summary.trials_per_second,
+        },
+        Some(_) => Outcome::Recovered(trace.recovered_after(event_trial)),
+    }
+}
+
 /// What one seed's runs gave.
-struct SeedFigures {
-    by_step: Vec<Option<f64>>,
+struct SeedFigures<'a> {
+    by_step: &'a [Option<f64>],
     to_1mm: Option<usize>,
     to_01mm: Option<usize>,
     trials_per_second: f64,
     recovered: Vec<Option<usize>>,
 }
 
-/// Runs `method` with `seed` for `trials` trials: once without an event, once per event.
-fn seed_figures(method: Method, seed: u64, trials: usize, data: &Path) -> SeedFigures {
-    let config = format!("{}/configs/{method}.conf", env!("CARGO_MANIFEST_DIR"));
-    let (trials_text, seed_text) = (trials.to_string(), seed.to_string());
-    let mut base = vec![
-        "--config",
-        &config,
-        "--trials",
-        &trials_text,
-        "--seed",
-        &seed_text,
-    ];
-    if watches(method) {
-        base.extend(["--set", "merge_strategy=change_detection"]);
-    }
-    let plain = run_cli(data, &base);
-    let trace = FourStepTrace::read(&plain.folder).expect("4step");
-    let event_trial = trials / 4;
-    let recovered = EVENTS
-        .iter()
-        .map(|(_, event)| {
-            let event = event.replace("{}", &event_trial.to_string());
-            let mut args = base.clone();
-            args.extend(["--event", &event]);
-            let folder = run_cli(data, &args).folder;
-            FourStepTrace::read(&folder)
-                .expect("4step")
-                .recovered_after(event_trial)
-        })
-        .collect();
-    SeedFigures {
-        by_step: plain.summary.mean_distance_by_step_mm.clone(),
-        to_1mm: trace.first_within(1.0, TRIALS_TO_WINDOW),
-        to_01mm: trace.first_within(0.1, TRIALS_TO_WINDOW),
-        trials_per_second: plain.summary.trials_per_second,
-        recovered,
+impl<'a> SeedFigures<'a> {
+    /// Gathers a seed's [`RUNS_PER_SEED`] outcomes, the run without an event first.
+    fn gather(outcomes: &'a [Outcome]) -> SeedFigures<'a> {
+        let Outcome::Plain {
+            by_step,
+            to_1mm,
+            to_01mm,
+            trials_per_second,
+        } = &outcomes[0]
+        else {
+            unreachable!("a seed's first run is the one without an event")
+        };
+        let recovered = outcomes[1..]
+            .iter()
+            .map(|o| match o {
+                Outcome::Recovered(trials) => *trials,
+                Outcome::Plain { .. } => unreachable!("a seed's later runs have an event"),
+            })
+            .collect();
+        SeedFigures {
+            by_step,
+            to_1mm: *to_1mm,
+            to_01mm: *to_01mm,
+            trials_per_second: *trials_per_second,
+            recovered,
+        }
     }
 }
 
@@ -126,46 +194,107 @@ fn row(method: Method, seeds: &[SeedFigures]) -> String {
     row
 }
 
-/// The methods named on the command line (none: all), and `--trials N`.
-fn arguments() -> (Vec<Method>, usize) {
+/// What the command line asks for.
+struct Arguments {
+    /// The methods named (none: all).
+    methods: Vec<Method>,
+    /// `--trials N`.
+    trials: usize,
+    /// `--jobs N`: runs at once (default: the machine's cores).
+    jobs: usize,
+}
+
+/// Reads the command line.
+fn arguments() -> Arguments {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let trials = args
-        .iter()
-        .position(|a| a == "--trials")
-        .and_then(|i| args.get(i + 1)?.parse().ok())
-        .unwrap_or(TRIALS);
-    let named: Vec<Method> = args.iter().filter_map(|a| a.parse().ok()).collect();
-    let methods = if named.is_empty() {
-        Method::ALL.to_vec()
-    } else {
-        named
+    let number_after = |flag: &str| {
+        args.iter()
+            .position(|a| a == flag)
+            .and_then(|i| args.get(i + 1)?.parse::<usize>().ok())
     };
-    (methods, trials)
+    let named: Vec<Method> = args.iter().filter_map(|a| a.parse().ok()).collect();
+    Arguments {
+        methods: if named.is_empty() {
+            Method::ALL.to_vec()
+        } else {
+            named
+        },
+        trials: number_after("--trials").unwrap_or(TRIALS),
+        jobs: number_after("--jobs")
+            .or_else(|| std::thread::available_parallelism().ok().map(|n| n.get()))
+            .unwrap_or(1)
+            .max(1),
+    }
+}
+
+/// The table's header lines.
+fn header(trials: usize) -> String {
+    let mut columns = String::from("| method |");
+    for step in 1..=STEPS {
+        columns += &format!(" {step} |");
+    }
+    columns += " trials to 1 mm (seeds 1 / 2 / 3) | to 0.1 mm | trials/s |";
+    for (name, _) in EVENTS {
+        columns += &format!(" recover after {name} |");
+    }
+    let event_trial = trials / 4;
+    format!(
+        "{trials} trials, events at trial {event_trial} (runs with one end at trial {}); \
+         distances in mm\n{columns}\n|---{}",
+        trials.min(event_trial + RECOVERY_SPAN),
+        "|---".repeat(STEPS + 3 + EVENTS.len()) + "|"
+    )
 }
 
 fn main() {
-    let (methods, trials) = arguments();
-    let mut header = String::from("| method |");
-    for step in 1..=STEPS {
-        header += &format!(" {step} |");
-    }
-    header += " trials to 1 mm (seeds 1 / 2 / 3) | to 0.1 mm | trials/s |";
-    for (name, _) in EVENTS {
-        header += &format!(" recover after {name} |");
-    }
-    println!(
-        "{trials} trials, events at trial {}; distances in mm",
-        trials / 4
-    );
-    println!("{header}");
-    println!("|---{}", "|---".repeat(STEPS + 3 + EVENTS.len()) + "|");
-    for method in methods {
-        // (A data folder per method: a method's folder holds at most 36 runs.)
-        let data = tempfile::tempdir().expect("a temporary data folder");
-        let seeds: Vec<SeedFigures> = SEEDS
-            .iter()
-            .map(|&seed| seed_figures(method, seed, trials, data.path()))
-            .collect();
-        println!("{}", row(method, &seeds));
-    }
+    let Arguments {
+        methods,
+        trials,
+        jobs,
+    } = arguments();
+    println!("{}", header(trials));
+    let cells: Vec<Cell> = methods
+        .iter()
+        .flat_map(|&method| {
+            SEEDS.iter().flat_map(move |&seed| {
+                (0..RUNS_PER_SEED).map(move |run| Cell {
+                    method,
+                    seed,
+                    event: run.checked_sub(1),
+                })
+            })
+        })
+        .collect();
+    let runs_per_method = SEEDS.len() * RUNS_PER_SEED;
+    let next = AtomicUsize::new(0);
+    let (sender, receiver) = mpsc::channel();
+    std::thread::scope(|scope| {
+        for _ in 0..jobs.min(cells.len()) {
+            let (sender, cells, next) = (sender.clone(), &cells, &next);
+            scope.spawn(move || loop {
+                let index = next.fetch_add(1, Ordering::Relaxed);
+                let Some(cell) = cells.get(index) else { break };
+                sender.send((index, run_cell(cell, trials))).expect("sent");
+            });
+        }
+        drop(sender);
+        let mut outcomes: Vec<Option<Outcome>> = cells.iter().map(|_| None).collect();
+        let mut printed = 0;
+        for (index, outcome) in receiver {
+            outcomes[index] = Some(outcome);
+            while printed < methods.len() {
+                let runs = &mut outcomes[printed * runs_per_method..][..runs_per_method];
+                if runs.iter().any(Option::is_none) {
+                    break;
+                }
+                let runs: Vec<Outcome> = runs.iter_mut().filter_map(Option::take).collect();
+                let seeds: Vec<SeedFigures> = runs
+                    .chunks(RUNS_PER_SEED)
+                    .map(SeedFigures::gather)
+                    .collect();
+                println!("{}", row(methods[printed], &seeds));
+                printed += 1;
+            }
+        }
+    });
 }

@@ -1,5 +1,5 @@
-//! A study's results: the markdown tables (compare: mean ± s.d. over seeds per method,
-//! then each seed's trials to two 4-step levels and to recover after each event; sweep:
+//! A study's results: the markdown tables (compare: mean ± s.d. over seeds per method of
+//! the distance after each feedback step, then each seed's trials to two 4-step levels and to recover after each event; sweep:
 //! one row per cell), each under a line saying which trials its figures cover, and the
 //! distance curves, from its finished cells.
 
@@ -64,7 +64,8 @@ fn by_label(runs: &[CellResult]) -> Vec<(&str, Vec<&CellResult>)> {
     groups
 }
 
-/// The comparison's markdown table: one row per method, mean ± s.d. over seeds, then per
+/// The comparison's markdown table: one row per method, mean ± s.d. over seeds of the
+/// distance after every feedback step some run took ([`steps_taken`]), then per
 /// seed (in cell order) the trials to a [`TRIALS_TO_WINDOW`]-trial 4-step mean of each of
 /// [`TRIALS_TO_LEVELS_MM`] and the trials to recover after each event
 /// ([`FourStepTrace::recovered_after`]); `never` where a seed did not.
@@ -74,9 +75,19 @@ pub fn compare_table(runs: &[CellResult]) -> String {
         .map(|r| r.cell.request.events.clone())
         .unwrap_or_default();
     events.sort_by_key(|e| e.trial());
+    let steps = steps_taken(runs);
     let mut table = window_line(runs);
-    table += "| method | seeds | 1 step (mm) | 2 steps | 3 steps | 4 steps | 5 steps | trials/s | memory (MB) | nodes |";
-    let mut rule = String::from("|---|---|---|---|---|---|---|---|---|---|");
+    table += "| method | seeds |";
+    let mut rule = String::from("|---|---|");
+    for step in 1..=steps {
+        table += &match step {
+            1 => " 1 step (mm) |".to_string(),
+            _ => format!(" {step} steps |"),
+        };
+        rule += "---|";
+    }
+    table += " trials/s | memory (MB) | nodes |";
+    rule += "---|---|---|";
     for level in TRIALS_TO_LEVELS_MM {
         table += &format!(" trials to {level} mm |");
         rule += "---|";
@@ -95,10 +106,10 @@ pub fn compare_table(runs: &[CellResult]) -> String {
     };
     for (label, group) in by_label(runs) {
         let mut row = format!("| {label} | {} |", group.len());
-        for step in 0..5 {
+        for step in 0..steps {
             let values = group
                 .iter()
-                .filter_map(|r| r.summary.mean_distance_mm[step])
+                .filter_map(|r| r.summary.mean_distance_by_step_mm.get(step).copied()?)
                 .collect();
             row += &format!(" {} |", cell(values, 4));
         }
@@ -124,6 +135,18 @@ pub fn compare_table(runs: &[CellResult]) -> String {
         table += "\n";
     }
     table
+}
+
+/// The feedback steps the compare table has a column for: up to the last step after which
+/// some run has a mean distance (at least 1).
+fn steps_taken(runs: &[CellResult]) -> usize {
+    runs.iter()
+        .filter_map(|r| {
+            let by_step = &r.summary.mean_distance_by_step_mm;
+            by_step.iter().rposition(Option::is_some)
+        })
+        .max()
+        .map_or(1, |last| last + 1)
 }
 
 /// The line above a table saying which trials its distances cover: the last `window`
@@ -247,6 +270,10 @@ mod tests {
         let mut summary = summary.clone();
         summary.method = method.to_string();
         summary.mean_distance_mm[4] = Some(step5);
+        // Seven of eight steps taken: the table's step columns end at the seventh.
+        summary.mean_distance_by_step_mm = vec![Some(9.0); 8];
+        summary.mean_distance_by_step_mm[4] = Some(step5);
+        summary.mean_distance_by_step_mm[7] = None;
         let points = (1..=600).map(|t| (f64::from(t), if t % 300 < 20 { 50.0 } else { 1.0 }));
         CellResult {
             index: 0,
@@ -282,6 +309,11 @@ mod tests {
         let lines: Vec<&str> = table.lines().collect();
         assert!(
             lines[0].starts_with("Distances: mean over the last 2 trials of each run"),
+            "{table}"
+        );
+        assert!(
+            lines[2].starts_with("| method | seeds | 1 step (mm) | 2 steps |")
+                && lines[2].contains("| 7 steps | trials/s |"),
             "{table}"
         );
         assert!(lines[2].ends_with(

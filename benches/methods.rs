@@ -239,8 +239,8 @@ fn header(trials: usize) -> String {
     }
     let event_trial = trials / 4;
     format!(
-        "{trials} trials, events at trial {event_trial} (runs with one end at trial {}); \
-         distances in mm\n{columns}\n|---{}",
+        "{trials} trials, events at trial {event_trial} (a run with one ends at trial {}: \
+         \"never\" is not by then); distances in mm\n{columns}\n|---{}",
         trials.min(event_trial + RECOVERY_SPAN),
         "|---".repeat(STEPS + 3 + EVENTS.len()) + "|"
     )

@@ -91,16 +91,12 @@ fn moves_end_where_the_kinematic_model_ends_them() {
     // Eight moves to seeded targets of the fitted reach space: the dynamic arm settles
     // where the kinematic model puts the camera within 0.05 mm, the OSCAR-6's contract
     // (tests/dynamic_contract.rs); measured at most 0.005 mm (Panda), 0.004 mm (UR-style).
-    // The UR-style arm's base yaw has dry friction (0.1 N m), which the servo law does not
-    // feed forward: near a vertical upper arm its wrist then rests up to 0.0006° from its
-    // set-point, beyond the default settle tolerance of 0.0005°, so it settles at 0.002°.
-    for (mut model, settle_deg) in [(panda(), 0.0005), (ur_style(), 0.002)] {
+    // The UR-style arm's base yaw has dry friction (0.1 N m), fed forward by the servos:
+    // it settles within the default tolerance of 0.0005° like the frictionless Panda.
+    for mut model in [panda(), ur_style()] {
         let space = reach(&mut model);
         let mut rng = ChaCha8Rng::seed_from_u64(5);
-        let settings = DynamicSettings {
-            settle_position_tol: f64::to_radians(settle_deg),
-            ..DynamicSettings::default()
-        };
+        let settings = DynamicSettings::default();
         let mut kinematic = KinematicSim::new(model.clone(), settings.moves);
         let mut dynamic = DynamicSim::new(model.clone(), settings);
         let start = model

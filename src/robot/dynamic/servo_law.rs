@@ -8,6 +8,7 @@
 //! (tools/mujoco_reference.py).
 
 use super::builder::Arm;
+use super::dry_friction::dry_friction_torques;
 use super::joint_space::JointSpace;
 use super::settings::DynamicSettings;
 use crate::robot::{ArmModel, Joints};
@@ -119,26 +120,6 @@ impl Arm {
         });
         held + servo * scale
     }
-}
-
-/// The joints' dry friction fed forward (N·m): each joint's URDF `friction` in the
-/// direction `turning` (rad/s) says it turns at the end of the tick, none where it stays
-/// still. The physics resists a turning joint's motion with exactly its friction, as an
-/// impulse of at most friction × step on a zero-speed constraint at the step's end
-/// (Rapier's joint friction): pushed by the same torque the way the servos turn the joint,
-/// the constraint gives its whole bound back against it and the arm moves as a frictionless
-/// one would, where without it the servos' spring stalls against the friction short of the
-/// set-point (error friction / stiffness, spread over every joint the friction's joint
-/// couples to through the mass matrix).
-pub(super) fn dry_friction_torques(model: &ArmModel, turning: &Joints) -> Joints {
-    Joints::from_fn(turning.len(), |i| {
-        let friction = model.joints()[i].friction;
-        match turning[i] {
-            speed if speed > 0.0 => friction,
-            speed if speed < 0.0 => -friction,
-            _ => 0.0,
-        }
-    })
 }
 
 #[cfg(test)]

@@ -121,7 +121,7 @@ config_entries! {
     /// Physics and servo time step (0.005: a 200 Hz control loop).
     dt: f64 = 0.005, "s", DYNAMIC, Within(1e-5, 0.1);
     /// Rapier's constraint solver iterations: every tick on the rapier engine, on rk4 the
-    /// ticks Rapier steps (a link touching, dry friction).
+    /// ticks Rapier steps (a link touching).
     solver_iterations: usize = 1, "", DYNAMIC, Within(1.0, 100.0);
     /// Rapier steps per tick on the rapier engine, each of dt divided by this.
     rapier_substeps: usize = 1, "", DYNAMIC, Within(1.0, 100.0);

@@ -3,8 +3,8 @@
 //! fourth-order Runge–Kutta scheme under joint torques held over it (the servos', or none),
 //! the joint limits as stops; the bodies are then placed where the model's kinematics puts
 //! them (for the camera), and Rapier looks for contacts where a bounding box comes near
-//! something (contacts.rs). Where a joint has dry friction, Rapier steps the tick itself
-//! under the same torques (to first order: its friction constraints act there); while a
+//! something (contacts.rs). Where a joint has dry friction, the tick is integrated again
+//! under the friction the joints' equations give it (dry_friction.rs); while a
 //! link is near something, Rapier steps it in sub-ticks of at most 1 ms with at least 4
 //! solver iterations, the servo law run at each (its contact constraints act there), the
 //! servos holding the arm where it is for the rest of the tick once a contact holds it

@@ -290,6 +290,12 @@ fn run_method_lin8_without_a_config_records_lin8s_values() {
         .unwrap();
     assert!(shrink.starts_with("error_area_shrink 0.5 "), "{shrink}");
     assert!(shrink.ends_with("# default"), "{shrink}");
+    let fit = info
+        .lines()
+        .find(|l| l.starts_with("change_fit_patterns "))
+        .unwrap();
+    assert!(fit.starts_with("change_fit_patterns 600 "), "{fit}");
+    assert!(fit.ends_with("# lin8's default"), "{fit}");
     let compared = Config::from_file(&Path::new(ROOT).join("configs/lin8.conf")).unwrap();
     assert_eq!(
         compared.error_area_shrink, 0.5,

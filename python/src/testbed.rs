@@ -5,7 +5,7 @@ use crate::convert::{path_array, query_array, run_options, run_request, value_er
 use crate::learner::{BuiltinLearner, ErrorSlot, PyLearner};
 use crate::view::EpisodeView;
 use eyehand::control::{Failure, StepError, TrialEnd, TrialLoop};
-use eyehand::experiment::{CameraKind, RunRequest, RunSetup};
+use eyehand::experiment::{start_learning, CameraKind, RunRequest, RunSetup};
 use eyehand::learn::{LearnError, Learner};
 use eyehand::robot::Controlled;
 use eyehand::units::{MM_PER_M, M_PER_CM};
@@ -214,11 +214,12 @@ impl Testbed {
         with_learner(learner, |l| trials.finish_trial(l))
     }
 
-    /// Pre-learning: the 8 fixed moves a run makes before its first trial, learned by
-    /// `learner`. Ends any trial going on unlearned.
+    /// Pre-learning: `learner` started as a run starts its learner before the first
+    /// trial (told trial 0 begins, then the 8 fixed moves made and learned). Ends any
+    /// trial going on unlearned.
     fn prelearn(&mut self, learner: &Bound<'_, PyAny>) -> PyResult<()> {
         let trials = &mut self.trials;
-        with_learner(learner, |l| trials.prelearn(l))
+        with_learner(learner, |l| start_learning(trials, l))
     }
 
     /// Stretches (positive) or shortens link 1, 2 or 3 by `cm`.

@@ -41,6 +41,31 @@ def test_a_testbed_loop_gives_the_cli_run_byte_for_byte(repo, cli, tmp_path, met
         assert len(recorded[0]) == trials, "ik's first step keeps it in view in every trial"
 
 
+def test_a_testbed_learner_finds_a_camera_turn_as_the_run_does(repo, cli, tmp_path):
+    """Each trial begins for the learner as a run begins it, so its change watch dates the
+    turn and recovers on the same trials, byte for byte."""
+    trials, turn = 300, 250
+    cli("run", "--config", "configs/lin5.conf", "--trials", trials, "--seed", 1,
+        "--set", "merge_strategy=change_detection", "--event", f"rotate:{turn}:90",
+        "--data", tmp_path, "--quiet", "--no-plot")
+    folder = tmp_path / "lin5" / "0"
+    assert (folder / "changes").read_text().split()[1] == str(turn), "the run finds the turn"
+    testbed = eyehand.Testbed(config=repo / "configs" / "lin5.conf", seed=1)
+    learner = eyehand.Learner("lin5", merge_strategy="change_detection")
+    testbed.prelearn(learner)
+    first_step = []
+    for trial in range(1, trials + 1):
+        if trial == turn:
+            testbed.rotate_camera(90.0)
+        testbed.reset()
+        while not testbed.done:
+            _reading, _joints, distance, seen = testbed.step(learner.propose(testbed.observation))
+            if seen and testbed.steps == 1:
+                first_step.append((trial, distance))
+        testbed.learn(learner)
+    assert step_lines(first_step) == strip_minutes(folder / "1step")
+
+
 def test_a_trial_ends_as_the_trial_loop_ends_it():
     testbed = eyehand.Testbed(seed=3)
     start = testbed.reset()

@@ -4,7 +4,7 @@
 //! the arm's solutions — with a margin.
 
 use crate::robot::contact::contact_free::{ContactRule, Touch};
-use crate::robot::model::{Branch, Centres, PoseGrid};
+use crate::robot::model::{Branch, Centre, PoseGrid};
 use crate::robot::{ArmModel, ReachSpace};
 
 /// Grid cell of the reached (r, z) set (m).
@@ -97,7 +97,7 @@ impl Grid {
     /// The cells the sampled poses reach: each cell holding a sample, and each cell whose
     /// centre lies in a triangle of neighbouring samples (the reached set between them).
     fn new(samples: &Samples) -> Option<Grid> {
-        let points = || samples.points.iter().flatten();
+        let points = || samples.centres.iter().flatten().map(|c| c.point);
         let z_low = points().map(|p| p.1).fold(f64::INFINITY, f64::min);
         let z_high = points().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
         let r_high = points().map(|p| p.0).fold(0.0, f64::max);
@@ -108,7 +108,7 @@ impl Grid {
         let cols = (r_high / CELL) as usize + 1;
         let mut hit = vec![false; rows * cols];
         let cell = |(r, z): (f64, f64)| ((z - z_low) / CELL) as usize * cols + (r / CELL) as usize;
-        for &point in points() {
+        for point in points() {
             hit[cell(point)] = true;
         }
         for triangle in samples.triangles() {
@@ -160,21 +160,20 @@ impl ReachSpace {
     /// sampled poses each of the conditions turned away.
     pub fn fit(model: &ArmModel, floor_z: f64, below: f64) -> Result<ReachFit, ReachFitFailure> {
         let (samples, mut tally) = reached_points(model, floor_z);
-        let signs = samples.grid.signs(&samples.points);
+        let signs = samples.grid.signs(&samples.centres);
         let free: Vec<i8> = (0..signs.len())
             .map(|cell| if samples.free[cell] { signs[cell] } else { 0 })
             .collect();
-        let branches = samples.grid.components(&free, &samples.sides);
+        let branches = samples.grid.components(&free, &samples.centres);
         let free_poses = samples.free.iter().filter(|f| **f).count();
         let on = |cells: &[usize]| {
-            let mut points = vec![None; samples.points.len()];
+            let mut centres = vec![None; samples.centres.len()];
             for &cell in cells {
-                points[cell] = samples.points[cell];
+                centres[cell] = samples.centres[cell];
             }
             Samples {
                 grid: samples.grid.clone(),
-                points,
-                sides: Vec::new(),
+                centres,
                 free: Vec::new(),
             }
         };
@@ -197,7 +196,7 @@ impl ReachSpace {
                 samples.grid.clone(),
                 cells,
                 signs[cells[0]],
-                samples.sides[cells[0]],
+                samples.centres[cells[0]].map_or(0, |c| c.side),
             ),
         })
     }
@@ -259,14 +258,12 @@ fn place(grid: &Grid, scale: f64, lowest: f64) -> Option<ReachSpace> {
     })
 }
 
-/// The camera centres (r, z) of the shoulder–elbow poses of a [`PoseGrid`] whose wrist
-/// looks down inside its limits (`None` elsewhere), and which of them are free of contact.
+/// The camera centres of the shoulder–elbow poses of a [`PoseGrid`] whose wrist looks
+/// down inside its limits (`None` elsewhere), and which of them are free of contact.
 struct Samples {
     grid: PoseGrid,
-    /// `points[grid.index(i, k)]`: shoulder step i, elbow step k.
-    points: Vec<Option<(f64, f64)>>,
-    /// The side of the base axis each reached point lies on (see [`Centres`]).
-    sides: Vec<i8>,
+    /// `centres[grid.index(i, k)]`: shoulder step i, elbow step k (see [`Centre`]).
+    centres: Vec<Option<Centre>>,
     /// Whether each pose is free of contact.
     free: Vec<bool>,
 }
@@ -279,7 +276,7 @@ impl Samples {
         let squares = (0..grid.steps).flat_map(move |i| (0..grid.steps).map(move |k| (i, k)));
         squares.flat_map(move |(i, k)| {
             let corners = grid.next(0, i).zip(grid.next(1, k)).and_then(|(i1, k1)| {
-                let at = |i: usize, k: usize| self.points[grid.index(i, k)];
+                let at = |i: usize, k: usize| self.centres[grid.index(i, k)].map(|c| c.point);
                 Some([at(i, k)?, at(i1, k)?, at(i1, k1)?, at(i, k1)?])
             });
             let near = |c: &[(f64, f64); 4]| {
@@ -336,7 +333,7 @@ fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) 
     };
     let contact = ContactRule::new(model, floor_z);
     let mut free = vec![false; STEPS * STEPS];
-    let Centres { points, sides } = grid.centres(model, |cell, pose, fits| {
+    let centres = grid.centres(model, |cell, pose, fits| {
         if !fits {
             tally.no_wrist += 1;
             return;
@@ -350,8 +347,7 @@ fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) 
     (
         Samples {
             grid,
-            points,
-            sides,
+            centres,
             free,
         },
         tally,

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Prints docs/ARMS.md's table of the public corpus: for every serial arm of PyPI's
 # example-robot-data (the arms of tests/corpus.rs), what `eyehand reach` chose with nothing
-# but `--urdf`, then one lin5 run of 20,000 kinematic trials (seed 1) — or the refusal.
+# but `--urdf` (one arm also with the camera_mount its refusal names), then one lin5 run of
+# 20,000 kinematic trials (seed 1) — or the refusal.
 # Usage: scripts/arms-corpus.sh [EYEHAND_BINARY]   (default: target/release/eyehand)
 # The collection's share/example-robot-data folder is EYEHAND_ROBOT_DATA; without it the
 # script installs the package into a virtual environment of its own.
@@ -27,22 +28,29 @@ arms=(
     ur_description/urdf/ur10_robot.urdf
     z1_description/urdf/z1.urdf
     so_arm_description/urdf/so100.urdf
+    "z1_description/urdf/z1.urdf camera_mount=0,0,0,180,0,0"
     so_arm_description/urdf/so101.urdf
     talos_data/robots/talos_left_arm.urdf
 )
 
 echo "| arm | camera link | reach space r, z (cm) | lin5 mean distance after steps 1..5 (mm) | contact stops per 1,000 moves | trials/s |"
 echo "|---|---|---|---|---|---|"
-for arm in "${arms[@]}"; do
+for entry in "${arms[@]}"; do
+    # An arm's URDF, then the config entries set for it (none: nothing but --urdf).
+    read -r arm entries <<<"$entry"
+    sets=()
+    for set in $entries; do sets+=(--set "$set"); done
     data="$work/data"
     rm -rf "$data"
-    "$eyehand" reach --urdf "$robots/$arm" >"$work/reach" 2>"$work/reach-err" || true
-    "$eyehand" run --urdf "$robots/$arm" --trials 20000 --seed 1 --data "$data" --quiet \
-        --no-plot >/dev/null 2>"$work/run-err" || true
-    python3 - "$arm" "$work/reach" "$work/run-err" "$data/lin5/0/summary.json" <<'EOF'
+    "$eyehand" reach --urdf "$robots/$arm" "${sets[@]}" >"$work/reach" 2>"$work/reach-err" || true
+    "$eyehand" run --urdf "$robots/$arm" "${sets[@]}" --trials 20000 --seed 1 --data "$data" \
+        --quiet --no-plot >/dev/null 2>"$work/run-err" || true
+    python3 - "$arm" "$entries" "$work/reach" "$work/run-err" "$data/lin5/0/summary.json" <<'EOF'
 import json, os, re, sys
-arm, reach, err, summary = sys.argv[1:]
+arm, entries, reach, err, summary = sys.argv[1:]
 name = os.path.basename(arm).removesuffix(".urdf")
+if entries:
+    name += " (" + entries.replace("=", " ") + ")"
 text = open(reach).read()
 line = lambda key: next((l for l in text.splitlines() if l.startswith(key)), "")
 camera = re.search(r"`([^`]+)`", line("camera link"))
@@ -57,7 +65,7 @@ if os.path.exists(summary):
 else:
     why = [l for l in open(err).read().splitlines() if not l.startswith("eyehand: warning")]
     why = why[-1].removeprefix("eyehand: ") if why else "?"
-    why = re.sub(r" \(closer than.*", "", why)
+    why = re.sub(r" \(closer than.*?usable ones", "", why)
     print(f"| {name} | `{camera}` | refused: {why} | - | - | - |")
 EOF
 done

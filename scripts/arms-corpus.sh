@@ -65,7 +65,7 @@ if os.path.exists(summary):
 else:
     why = [l for l in open(err).read().splitlines() if not l.startswith("eyehand: warning")]
     why = why[-1].removeprefix("eyehand: ") if why else "?"
-    why = re.sub(r" \(closer than.*?usable ones", "", why)
+    why = re.sub(r" \(closer than.*?in area\)", "", why)
     print(f"| {name} | `{camera}` | refused: {why} | - | - | - |")
 EOF
 done

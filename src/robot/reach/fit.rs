@@ -57,7 +57,7 @@ pub struct ReachFitFailure {
     pub below_floor: usize,
     /// Poses in which two links that may touch are less than [`CONTACT_MARGIN`](crate::robot::CONTACT_MARGIN) apart.
     pub in_contact: usize,
-    /// Poses left, in which no half annulus of the study's shape fits.
+    /// Poses left, in which no half annulus fits.
     pub usable: usize,
 }
 
@@ -70,8 +70,9 @@ impl std::fmt::Display for ReachFitFailure {
              a link was at the floor at {:.0}%, the links touched each other at {:.0}% \
              (closer than 1 cm counts; the shoulder and elbow were sampled 10° inside their \
              limits) and {:.0}% lay on other branches of the arm's solutions than the \
-             largest; no half annulus of the study's shape reaching at least a quarter as far \
-             as the arm fits in the {} usable ones",
+             largest; no half annulus fits in the {} usable ones (of the study's shape, \
+             reaching at least a quarter as far as the arm; of others, neither side over four \
+             times the other, as large in area)",
             self.sampled,
             share(self.no_wrist),
             share(self.below_floor),

@@ -24,7 +24,7 @@ pub use dynamic::{
 pub use error::RobotError;
 pub use kinematic::{limit_stop_fraction, KinematicSim, SetPointTracker, TrapezoidProfile};
 pub use model::{
-    ArmModel, ArmPose, ArmSettings, BaseLink, Branch, CameraLink, Centres, Controlled, Frames,
+    ArmModel, ArmPose, ArmSettings, BaseLink, Branch, CameraLink, Centre, Controlled, Frames,
     Joints, LearnedJoints, LinkBody, PoseGrid, RevoluteJoint, Wrist, MAX_JOINTS,
 };
 pub use reach::{ReachFit, ReachFitFailure, ReachSpace};

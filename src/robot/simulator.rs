@@ -34,6 +34,14 @@ impl MoveSettings {
     }
 }
 
+impl Default for MoveSettings {
+    /// The shipped configs' moves: 90°/s top speed, 180°/s² acceleration, the default
+    /// floor.
+    fn default() -> Self {
+        MoveSettings::from_degrees(90.0, 180.0)
+    }
+}
+
 /// What happened during a commanded move.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MoveReport {

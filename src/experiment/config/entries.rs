@@ -1,7 +1,9 @@
 //! Every config entry, declared once: its doc line, name, kind, default, unit, what it
 //! applies to and the rule its value must meet on its own. A learner's entries take their
-//! defaults from its settings' `Default`, written once in the learner's folder. The parser, the defaults,
-//! `info`, `config defaults`, the error messages and docs/CONFIG.md all come from here.
+//! defaults from its settings' `Default`, written once in the learner's folder; the move and
+//! dynamic simulator entries theirs from `DynamicSettings`' `Default`. The parser, the
+//! defaults, `info`, `config defaults`, the error messages and docs/CONFIG.md all come from
+//! here.
 
 use super::declaration::{bad_value, meets_rule, one_line, Declaration};
 use super::package_paths::PackagePaths;
@@ -19,7 +21,8 @@ use crate::learn::{
     Lin8Settings, LwprSettings, MergeStrategy, Method, MlpSettings, NestedSettings, NnwSettings,
     PatternSettings, PerceptronSettings, TreeSettings,
 };
-use crate::robot::{BaseLink, CameraLink, Engine, LearnedJoints};
+use crate::robot::{BaseLink, CameraLink, DynamicSettings, Engine, LearnedJoints};
+use crate::units::M_PER_CM;
 
 use Rule::{AtLeast, NonNegative, OpenUnit, Positive, PositiveUpTo, UnitBelowOne, Within};
 use Scope::{All, Unused};
@@ -55,6 +58,13 @@ fn mlp() -> MlpSettings {
 
 fn broyden() -> BroydenSettings {
     BroydenSettings::default()
+}
+
+// And the simulators' settings, whose `Default` the move and dynamic entries take theirs
+// from (in the entries' units).
+
+fn dynamic() -> DynamicSettings {
+    DynamicSettings::default()
 }
 
 config_entries! {
@@ -112,34 +122,34 @@ config_entries! {
     /// A pose pair is a learning pattern only if at least one joint moved this much.
     minimal_joint_move: f64 = PatternSettings::default().minimal_joint_move, "°", All, Within(0.0, 10.0);
     /// Top joint speed of a move's trapezoidal profile.
-    robot_speed: f64 = 90.0, "°/s", All, Within(0.1, 3600.0);
+    robot_speed: f64 = dynamic().moves.speed.to_degrees(), "°/s", All, Within(0.1, 3600.0);
     /// Joint acceleration of a move's trapezoidal profile.
-    robot_accel: f64 = 180.0, "°/s²", All, Within(1.0, 100_000.0);
+    robot_accel: f64 = dynamic().moves.accel.to_degrees(), "°/s²", All, Within(1.0, 100_000.0);
     /// What steps the dynamic arm: rk4 (its joint-space equations, fourth order, under
     /// eyehand's servo law) or rapier (Rapier's multibody integrator and joint motors).
-    engine: Engine = Engine::Rk4, "", DYNAMIC, Rule::Any;
+    engine: Engine = dynamic().engine, "", DYNAMIC, Rule::Any;
     /// Physics and servo time step (0.005: a 200 Hz control loop).
-    dt: f64 = 0.005, "s", DYNAMIC, Within(1e-5, 0.1);
+    dt: f64 = dynamic().dt, "s", DYNAMIC, Within(1e-5, 0.1);
     /// Rapier's constraint solver iterations: every tick on the rapier engine, on rk4 the
     /// ticks Rapier steps (a link touching, dry friction).
-    solver_iterations: usize = 1, "", DYNAMIC, Within(1.0, 100.0);
+    solver_iterations: usize = dynamic().solver_iterations, "", DYNAMIC, Within(1.0, 100.0);
     /// Rapier steps per tick on the rapier engine, each of dt divided by this.
-    rapier_substeps: usize = 1, "", DYNAMIC, Within(1.0, 100.0);
+    rapier_substeps: usize = dynamic().rapier_substeps, "", DYNAMIC, Within(1.0, 100.0);
     /// Joint servo position gain, scaled by the arm's mass matrix (400000 with motor_damping
     /// 1265: a critically damped 100 Hz servo).
-    motor_stiffness: f64 = 400000.0, "1/s²", DYNAMIC, PositiveUpTo(1e9);
+    motor_stiffness: f64 = dynamic().motor_stiffness, "1/s²", DYNAMIC, PositiveUpTo(1e9);
     /// Joint servo velocity gain, scaled by the arm's mass matrix.
-    motor_damping: f64 = 1265.0, "1/s", DYNAMIC, PositiveUpTo(1e6);
+    motor_damping: f64 = dynamic().motor_damping, "1/s", DYNAMIC, PositiveUpTo(1e6);
     /// A move has settled once every joint is this close to its set-point …
-    settle_position_tol: f64 = 0.0005, "°", DYNAMIC, PositiveUpTo(10.0);
+    settle_position_tol: f64 = dynamic().settle_position_tol.to_degrees(), "°", DYNAMIC, PositiveUpTo(10.0);
     /// … and turns slower than this.
-    settle_speed_tol: f64 = 0.05, "°/s", DYNAMIC, PositiveUpTo(1000.0);
+    settle_speed_tol: f64 = dynamic().settle_speed_tol.to_degrees(), "°/s", DYNAMIC, PositiveUpTo(1000.0);
     /// A move still unsettled this long after its profile ended is counted as not settled
     /// (at least dt, at most 60 s).
-    settle_timeout: f64 = 2.0, "s", DYNAMIC, Rule::Any;
+    settle_timeout: f64 = dynamic().settle_timeout, "s", DYNAMIC, Rule::Any;
     /// Height of the floor (world frame; −22 is the lowest target's bottom): a move stops
     /// where a link or the camera would go below it.
-    floor_z: f64 = -22.0, "cm", All, Within(-1000.0, 0.0);
+    floor_z: f64 = dynamic().moves.floor_z / M_PER_CM, "cm", All, Within(-1000.0, 0.0);
     /// The arm's URDF file (a relative one is taken from the config file's folder), or
     /// `shipped` for the OSCAR-6 built in; `--urdf` overrides it.
     urdf: UrdfFile = UrdfFile::default(), "", All, Rule::Any;

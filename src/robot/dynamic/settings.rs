@@ -56,7 +56,7 @@ pub struct DynamicSettings {
 impl Default for DynamicSettings {
     fn default() -> Self {
         DynamicSettings {
-            moves: MoveSettings::from_degrees(90.0, 180.0),
+            moves: MoveSettings::default(),
             engine: Engine::Rk4,
             dt: 0.005,
             solver_iterations: 1,

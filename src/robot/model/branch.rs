@@ -105,18 +105,19 @@ impl PoseGrid {
         shoulder.into_iter().chain(elbow).flatten()
     }
 
-    /// The sign of ∂(r, z)/∂(θ2, θ3) at every cell from the camera centres (r, z) of the
-    /// cells where the wrist was found (`None` elsewhere), by differences with the
-    /// neighbouring cells: +1 or −1, 0 where it is singular or cannot be told.
-    pub fn signs(&self, centres: &[Option<(f64, f64)>]) -> Vec<i8> {
+    /// The sign of ∂(r, z)/∂(θ2, θ3) at every cell from the camera centres of the cells
+    /// where the wrist was found (`None` elsewhere), by differences with the neighbouring
+    /// cells: +1 or −1, 0 where it is singular or cannot be told.
+    pub fn signs(&self, centres: &[Option<Centre>]) -> Vec<i8> {
+        let point = |cell: usize| centres[cell].map(|c| c.point);
         let derivative = |joint: usize, i: usize, k: usize| {
             let step = |n: Option<usize>| {
                 n.and_then(|n| match joint {
-                    0 => centres[self.index(n, k)],
-                    _ => centres[self.index(i, n)],
+                    0 => point(self.index(n, k)),
+                    _ => point(self.index(i, n)),
                 })
             };
-            let here = centres[self.index(i, k)]?;
+            let here = point(self.index(i, k))?;
             let n = [i, k][joint];
             let (after, before) = (step(self.next(joint, n)), step(self.previous(joint, n)));
             let (a, b, steps) = match (before, after) {
@@ -143,9 +144,10 @@ impl PoseGrid {
     }
 
     /// The connected sets of cells (four-neighbours, round full turns) of one non-zero
-    /// sign in `signs` and one side of the base axis in `sides` (see `side_of`), largest
+    /// sign in `signs` and one side of the base axis (see `side_of`) in `centres`, largest
     /// first.
-    pub fn components(&self, signs: &[i8], sides: &[i8]) -> Vec<Vec<usize>> {
+    pub fn components(&self, signs: &[i8], centres: &[Option<Centre>]) -> Vec<Vec<usize>> {
+        let sides: Vec<i8> = centres.iter().map(|c| c.map_or(0, |c| c.side)).collect();
         let mut seen = vec![false; signs.len()];
         let mut found = Vec::new();
         for start in 0..signs.len() {
@@ -174,18 +176,18 @@ impl PoseGrid {
     /// The camera centres of the grid's poses of `model` whose wrist keeps the camera
     /// looking down inside its limits, each wrist solved from its neighbour's, outwards
     /// from the rest pose, so that the whole grid keeps the rest pose's wrist branch.
-    /// `visit` sees every pose with its cell's index and whether its wrist fits.
+    /// `visit` sees every pose with its cell's index and whether its wrist fits. Indexed
+    /// by [`index`](Self::index); `None` where the wrist does not fit.
     pub fn centres(
         &self,
         model: &ArmModel,
         mut visit: impl FnMut(usize, &ArmPose, bool),
-    ) -> Centres {
+    ) -> Vec<Option<Centre>> {
         let steps = self.steps;
         let [yaw, s, e] = model.learned();
         let rest = model.rest();
         let (i_rest, k_rest) = (self.step_of(0, rest[s]), self.step_of(1, rest[e]));
         let mut centres = vec![None; steps * steps];
-        let mut sides = vec![0; steps * steps];
         let mut row_starts: Vec<Joints> = vec![rest; steps];
         for (i, from_row) in outward(i_rest, steps) {
             let start = from_row.map_or(rest, |f| row_starts[f]);
@@ -200,27 +202,26 @@ impl PoseGrid {
                 if fits {
                     row[k] = pose.joints;
                     let p = pose.camera.translation.vector;
-                    centres[self.index(i, k)] = Some((p.x.hypot(p.y), p.z));
-                    sides[self.index(i, k)] = side_of(model, &pose);
+                    centres[self.index(i, k)] = Some(Centre {
+                        point: (p.x.hypot(p.y), p.z),
+                        side: side_of(model, &pose),
+                    });
                 }
             }
             row_starts[i] = row[k_rest];
         }
-        Centres {
-            points: centres,
-            sides,
-        }
+        centres
     }
 }
 
-/// The camera centres of a [`PoseGrid`]'s poses and the side of the base axis each lies on.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Centres {
-    /// `points[grid.index(i, k)]`: the camera centre (r, z; m) of shoulder step i, elbow
-    /// step k, where its wrist looks down inside its limits (`None` elsewhere).
-    pub points: Vec<Option<(f64, f64)>>,
-    /// The side of the base axis (`side_of`) of each cell with a centre, 0 elsewhere.
-    pub sides: Vec<i8>,
+/// The camera centre of a [`PoseGrid`] pose whose wrist looks down inside its limits, and
+/// the side of the base axis it lies on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Centre {
+    /// The camera centre (r, z; m).
+    pub point: (f64, f64),
+    /// The side of the base axis (`side_of`): +1 or −1, 0 on the axis.
+    pub side: i8,
 }
 
 /// The side of the base axis the camera of `pose` lies on: the sign (+1 or −1) of its
@@ -307,9 +308,10 @@ impl Branch {
     pub(super) fn kinematic(model: &ArmModel) -> Option<Branch> {
         let grid = PoseGrid::of(model, KINEMATIC_STEPS);
         let centres = grid.centres(model, |_, _, _| {});
-        let signs = grid.signs(&centres.points);
-        let largest = grid.components(&signs, &centres.sides).into_iter().next()?;
-        let (sign, side) = (signs[largest[0]], centres.sides[largest[0]]);
+        let signs = grid.signs(&centres);
+        let largest = grid.components(&signs, &centres).into_iter().next()?;
+        let side = centres[largest[0]].map_or(0, |c| c.side);
+        let sign = signs[largest[0]];
         Some(Branch::new(grid, &largest, sign, side))
     }
 
@@ -366,11 +368,12 @@ mod tests {
             .map(|cell| {
                 let (s, e) = (grid.angle(0, cell / 36), grid.angle(1, cell % 36));
                 let (r, z) = (s.cos() + 0.6 * (s + e).cos(), s.sin() + 0.6 * (s + e).sin());
-                Some((r.abs() + 2.0, z))
+                let point = (r.abs() + 2.0, z);
+                Some(Centre { point, side: 1 })
             })
             .collect();
         let signs = grid.signs(&centres);
-        let components = grid.components(&signs, &vec![1; 36 * 36]);
+        let components = grid.components(&signs, &centres);
         let elbow_sign = |k: usize| signs[grid.index(5, k)];
         assert_ne!(elbow_sign(9), elbow_sign(27), "elbow one way and the other");
         // The hand's r is kept away from the axis, so only the elbow splits the grid.

@@ -12,7 +12,7 @@ mod joint_vector;
 mod wrist;
 
 pub(crate) use branch::side_of;
-pub use branch::{Branch, Centres, PoseGrid};
+pub use branch::{Branch, Centre, PoseGrid};
 pub use build::{ArmSettings, BaseLink, CameraLink, LearnedJoints};
 pub use frames::Frames;
 pub use wrist::Wrist;

@@ -5,7 +5,7 @@
 //! other proportions that does.
 
 use crate::robot::contact::contact_free::{ContactRule, Touch};
-use crate::robot::model::{Branch, Centres, PoseGrid};
+use crate::robot::model::{Branch, Centre, PoseGrid};
 use crate::robot::{ArmModel, ReachSpace};
 
 use super::grid::{Grid, CELL};
@@ -91,21 +91,20 @@ impl ReachSpace {
     /// sampled poses each of the conditions turned away.
     pub fn fit(model: &ArmModel, floor_z: f64, below: f64) -> Result<ReachFit, ReachFitFailure> {
         let (samples, mut tally) = reached_points(model, floor_z);
-        let signs = samples.grid.signs(&samples.points);
+        let signs = samples.grid.signs(&samples.centres);
         let free: Vec<i8> = (0..signs.len())
             .map(|cell| if samples.free[cell] { signs[cell] } else { 0 })
             .collect();
-        let branches = samples.grid.components(&free, &samples.sides);
+        let branches = samples.grid.components(&free, &samples.centres);
         let free_poses = samples.free.iter().filter(|f| **f).count();
         let on = |cells: &[usize]| {
-            let mut points = vec![None; samples.points.len()];
+            let mut centres = vec![None; samples.centres.len()];
             for &cell in cells {
-                points[cell] = samples.points[cell];
+                centres[cell] = samples.centres[cell];
             }
             Samples {
                 grid: samples.grid.clone(),
-                points,
-                sides: Vec::new(),
+                centres,
                 free: Vec::new(),
             }
         };
@@ -132,7 +131,7 @@ impl ReachSpace {
                 samples.grid.clone(),
                 cells,
                 signs[cells[0]],
-                samples.sides[cells[0]],
+                samples.centres[cells[0]].map_or(0, |c| c.side),
             ),
         })
     }
@@ -211,14 +210,12 @@ fn place(grid: &Grid, scale: f64, lowest: f64) -> Option<ReachSpace> {
     })
 }
 
-/// The camera centres (r, z) of the shoulder–elbow poses of a [`PoseGrid`] whose wrist
-/// looks down inside its limits (`None` elsewhere), and which of them are free of contact.
+/// The camera centres of the shoulder–elbow poses of a [`PoseGrid`] whose wrist looks
+/// down inside its limits (`None` elsewhere), and which of them are free of contact.
 pub(super) struct Samples {
     pub(super) grid: PoseGrid,
-    /// `points[grid.index(i, k)]`: shoulder step i, elbow step k.
-    pub(super) points: Vec<Option<(f64, f64)>>,
-    /// The side of the base axis each reached point lies on (see [`Centres`]).
-    sides: Vec<i8>,
+    /// `centres[grid.index(i, k)]`: shoulder step i, elbow step k (see [`Centre`]).
+    pub(super) centres: Vec<Option<Centre>>,
     /// Whether each pose is free of contact.
     free: Vec<bool>,
 }
@@ -231,7 +228,7 @@ impl Samples {
         let squares = (0..grid.steps).flat_map(move |i| (0..grid.steps).map(move |k| (i, k)));
         squares.flat_map(move |(i, k)| {
             let corners = grid.next(0, i).zip(grid.next(1, k)).and_then(|(i1, k1)| {
-                let at = |i: usize, k: usize| self.points[grid.index(i, k)];
+                let at = |i: usize, k: usize| self.centres[grid.index(i, k)].map(|c| c.point);
                 Some([at(i, k)?, at(i1, k)?, at(i1, k1)?, at(i, k1)?])
             });
             let near = |c: &[(f64, f64); 4]| {
@@ -258,7 +255,7 @@ fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) 
     };
     let contact = ContactRule::new(model, floor_z);
     let mut free = vec![false; STEPS * STEPS];
-    let Centres { points, sides } = grid.centres(model, |cell, pose, fits| {
+    let centres = grid.centres(model, |cell, pose, fits| {
         if !fits {
             tally.no_wrist += 1;
             return;
@@ -272,8 +269,7 @@ fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) 
     (
         Samples {
             grid,
-            points,
-            sides,
+            centres,
             free,
         },
         tally,

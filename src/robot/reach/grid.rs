@@ -29,7 +29,7 @@ impl Grid {
     /// The cells the sampled poses reach: each cell holding a sample, and each cell whose
     /// centre lies in a triangle of neighbouring samples (the reached set between them).
     pub(super) fn new(samples: &Samples) -> Option<Grid> {
-        let points = || samples.points.iter().flatten();
+        let points = || samples.centres.iter().flatten().map(|c| c.point);
         let z_low = points().map(|p| p.1).fold(f64::INFINITY, f64::min);
         let z_high = points().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
         let r_high = points().map(|p| p.0).fold(0.0, f64::max);
@@ -40,7 +40,7 @@ impl Grid {
         let cols = (r_high / CELL) as usize + 1;
         let mut hit = vec![false; rows * cols];
         let cell = |(r, z): (f64, f64)| ((z - z_low) / CELL) as usize * cols + (r / CELL) as usize;
-        for &point in points() {
+        for point in points() {
             hit[cell(point)] = true;
         }
         for triangle in samples.triangles() {

@@ -17,9 +17,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// split off from so few patterns may fit them in a way that runs far off between and
     /// beyond them, a query is answered by the deepest node whose fit supports it.
     pub(crate) fn after_correction(&mut self, split_patterns: usize) {
-        let split = &mut self.settings.min_pats_for_split;
-        *split = (*split).min(split_patterns);
-        self.supported_answers = true;
+        self.answer_where_supported(split_patterns);
     }
 
     /// The corners of the root's box.

@@ -14,23 +14,14 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// Drops the least recently stored-to bins while the store holds more patterns than
     /// `max_stored_patterns` (0: no cap). Returns how many bins were dropped.
     pub(super) fn evict_over_cap(&mut self) -> usize {
-        let cap = self.settings.max_stored_patterns;
+        let cap = self.settings().max_stored_patterns;
         let mut evicted = 0;
-        while cap > 0 && self.bins.stored() > cap {
-            let Some(bin) = self.bins.least_recent() else {
+        while cap > 0 && self.store.bins().stored() > cap {
+            let Some(bin) = self.store.bins().least_recent() else {
                 break;
             };
-            let key = self.bins.key(bin);
-            let holder = self.descend(key).deepest();
-            let (_, patterns) = self.bins.evict(bin);
-            let node = &mut self.nodes[holder as usize];
-            let at = node.bins.iter().position(|&b| b == bin);
-            debug_assert!(at.is_some(), "a bin hangs on its deepest covering node");
-            if let Some(at) = at {
-                node.bins.remove(at);
-            }
-            node.patterns_removed(key.branch(node.depth + 1), patterns);
-            self.levels.bin_removed(node.depth, patterns);
+            let holder = self.descend(self.store.bins().key(bin)).deepest();
+            self.store.evict(&mut self.nodes, holder, bin);
             evicted += 1;
         }
         evicted

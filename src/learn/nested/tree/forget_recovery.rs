@@ -85,14 +85,13 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         cutoff: u64,
         min_fresh: usize,
     ) -> Result<(), LearnError> {
-        self.recovery.verdict = StaleVerdict::default();
-        self.recovery.change = Some((cutoff, min_fresh));
+        self.recovery.start(cutoff, min_fresh);
         let order = self.reachable();
         // Per node (by arena index): whether it is replayed, and the valid patterns in its box.
         let mut replayed = vec![false; self.nodes.len()];
         let mut fresh = vec![0usize; self.nodes.len()];
         for &id in &order {
-            self.drop_stored_before(id, cutoff);
+            self.store.drop_before(&mut self.nodes, id, cutoff);
             let node = &mut self.nodes[id as usize];
             node.pace = node.taken as f64 / cutoff.saturating_sub(node.born).max(1) as f64;
             replayed[id as usize] = node.model.forget_before(cutoff);
@@ -100,12 +99,13 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             node.clear_all_box_errors();
             node.verdict = StaleVerdict::default();
         }
-        let known_share = self.settings.known_pattern_perc / 100.0;
+        let known_share = self.settings().known_pattern_perc / 100.0;
+        let retrain_delay = self.settings().retrain_delay.max(1);
         for &id in &order {
             let (nodes, rng) = (&mut self.nodes, &mut self.rng);
             for i in 0..nodes[id as usize].bins.len() {
                 let bin = nodes[id as usize].bins[i];
-                self.bins.for_each_pattern(bin, |pattern, seq| {
+                self.store.for_each_pattern(bin, |pattern, seq| {
                     let mut at = id;
                     while at != NONE {
                         fresh[at as usize] += 1;
@@ -132,9 +132,9 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             if A::RETRAINED {
                 // Re-trained after this trial, on the valid patterns only.
                 if node.fresh == 0 {
-                    self.retraining.touched.push(id);
+                    self.retraining.touch(id);
                 }
-                node.fresh = node.fresh.max(self.settings.retrain_delay.max(1));
+                node.fresh = node.fresh.max(retrain_delay);
             }
         }
         Ok(())
@@ -143,10 +143,10 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// Cuts every starved subtree (see the module doc), booking each as a starved merge.
     /// True when no node awaits patterns from after the last change any more.
     pub(crate) fn cut_starved(&mut self) -> bool {
-        let Some((cutoff, min_fresh)) = self.recovery.change else {
+        let Some((cutoff, min_fresh)) = self.recovery.change() else {
             return true;
         };
-        let since = self.journal.next_seq.saturating_sub(cutoff) as f64;
+        let since = self.journal.next_seq().saturating_sub(cutoff) as f64;
         let root = &self.nodes[ROOT as usize];
         let mut stack: Vec<u32> = root
             .children
@@ -159,7 +159,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             let node = &self.nodes[id as usize];
             let starved = node.awaiting > 0
                 && node.pace * since >= STARVED * min_fresh as f64
-                && !node.stale_ok(&self.recovery.verdict);
+                && !node.stale_ok(self.recovery.verdict());
             if starved {
                 self.cut_as(id, MergeKind::Starved);
                 continue;
@@ -168,8 +168,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             stack.extend(node.children.iter().copied().filter(|&c| c != NONE));
         }
         if !waiting {
-            self.recovery.verdict = StaleVerdict::default();
-            self.recovery.change = None;
+            self.recovery.end();
         }
         !waiting
     }
@@ -192,19 +191,5 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             i += 1;
         }
         order
-    }
-
-    /// Drops the patterns numbered below `cutoff` from the bins of node `id`.
-    fn drop_stored_before(&mut self, id: u32, cutoff: u64) {
-        let node = &mut self.nodes[id as usize];
-        for at in 0..node.bins.len() {
-            let bin = node.bins[at];
-            let dropped = self.bins.drop_before(bin, cutoff);
-            if dropped == 0 {
-                continue;
-            }
-            node.patterns_removed(self.bins.key(bin).branch(node.depth + 1), dropped);
-            self.levels.patterns_removed(node.depth, dropped);
-        }
     }
 }

@@ -24,7 +24,7 @@ use crate::learn::{LearnError, MergeKind, ModelEvent};
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// Merges the shallowest node on `path` that is due, if any.
     pub(super) fn merge_if_due(&mut self, path: &Path) -> Result<Option<TreeEvent>, LearnError> {
-        let s = &self.settings;
+        let s = self.settings();
         let due = path.nodes().iter().find_map(|&id| {
             let node = &self.nodes[id as usize];
             let own = node.errors.mean().filter(|_| node.errors.is_full())?;
@@ -44,8 +44,8 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         match due {
             None => Ok(None),
             Some((ROOT, kind)) => {
-                let nodes = self.levels.total_nodes();
-                self.journal.events.push(ModelEvent::Merge {
+                let nodes = self.store.total_nodes();
+                self.journal.book(ModelEvent::Merge {
                     kind,
                     depth: 0,
                     nodes,
@@ -64,40 +64,25 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     pub(super) fn cut_as(&mut self, id: u32, kind: MergeKind) {
         let depth = self.nodes[id as usize].depth;
         let nodes = self.cut(id);
-        self.journal
-            .events
-            .push(ModelEvent::Merge { kind, depth, nodes });
+        self.journal.book(ModelEvent::Merge { kind, depth, nodes });
     }
 
     /// Cuts node `id` (not the root) and its subtree; every bin they held goes back to the
     /// parent, patterns and all. Returns the nodes cut.
     pub(super) fn cut(&mut self, id: u32) -> usize {
-        let node = &self.nodes[id as usize];
-        let (parent, branch) = (node.parent, node.branch);
-        let parent_depth = node.depth - 1;
-        let mut bins = std::mem::take(&mut self.nodes[parent as usize].bins);
-        let mut patterns = 0;
-        let mut cut = 0;
-        let mut stack = std::mem::take(&mut self.scratch);
-        stack.push(id);
-        while let Some(x) = stack.pop() {
-            cut += 1;
-            let node = &mut self.nodes[x as usize];
-            stack.extend(node.children.iter().copied().filter(|&c| c != NONE));
-            self.levels.node_removed(node.depth);
-            self.levels
-                .bins_moved(node.depth, parent_depth, node.bins.len(), node.patterns());
-            bins.append(&mut node.bins);
-            patterns += node.patterns();
+        let (parent, branch) = (
+            self.nodes[id as usize].parent,
+            self.nodes[id as usize].branch,
+        );
+        let cut = self.subtree(id);
+        for &x in &cut {
+            self.store.lift(&mut self.nodes, x, parent, branch);
             self.release(x);
         }
-        self.scratch = stack;
         let p = &mut self.nodes[parent as usize];
-        p.bins = bins;
-        p.patterns_added(Some(branch), patterns);
         p.children[usize::from(branch)] = NONE;
         // Evidence for splitting this sub-box again must be fresh.
         p.clear_box_errors(branch);
-        cut
+        cut.len()
     }
 }

@@ -56,7 +56,9 @@
 //!   in enough new patterns are trained again on a sample of their box's stored patterns;
 //!   see [`retrain`].
 //! - **Bookkeeping.** Nodes, bins and patterns per depth are counted as they change
-//!   ([`Levels`]); no step walks the tree except a merge, over the subtree it cuts.
+//!   ([`Levels`]); the [`PatternStore`] changes the bins, the nodes' bin lists and tallies
+//!   and these counts together. No step walks the tree except a merge, over the subtree it
+//!   cuts.
 
 mod approximator;
 mod arena;
@@ -72,11 +74,12 @@ mod narrowing;
 mod nested_learner;
 mod nested_tree;
 mod node;
+mod pattern_store;
+mod records;
 mod region;
 mod retrain;
 mod settings;
 mod split;
-mod store;
 #[cfg(test)]
 mod tests;
 mod training;
@@ -94,9 +97,11 @@ pub(crate) use nested_learner::tree_size;
 pub use nested_learner::NestedLearner;
 pub(crate) use nested_tree::{NestedTree, TreeEvent};
 pub(crate) use node::{Node, NONE};
+pub(crate) use pattern_store::PatternStore;
+pub(crate) use records::Records;
 pub(crate) use region::Region;
+pub(crate) use retrain::Retraining;
 pub use settings::{NestedSettings, TreeSettings};
-pub(crate) use store::Records;
-pub(crate) use tree_state::{Journal, RecoveryState, Retraining};
+pub(crate) use tree_state::{Journal, RecoveryState};
 
 use nested_tree::{Path, ROOT};

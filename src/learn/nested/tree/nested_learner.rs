@@ -182,7 +182,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
         let Some(watch) = &mut self.watch else {
             return;
         };
-        match watch.start_trial(trial, self.tree.journal.next_seq) {
+        match watch.start_trial(trial, self.tree.journal.next_seq()) {
             WatchStep::Nothing => {}
             WatchStep::Forget {
                 estimated_trial,
@@ -190,8 +190,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
             } => {
                 self.tree
                     .journal
-                    .events
-                    .push(ModelEvent::Change { estimated_trial });
+                    .book(ModelEvent::Change { estimated_trial });
                 if let Err(error) = self.recover(estimated_trial, cutoff) {
                     self.failed = Some(error);
                 }
@@ -206,7 +205,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> Learner for NestedLea
 
     /// Moves the merges and detected changes since the last call into `sink`.
     fn drain_events(&mut self, sink: &mut Vec<ModelEvent>) {
-        sink.append(&mut self.tree.journal.events);
+        self.tree.journal.drain_into(sink);
     }
 }
 
@@ -227,7 +226,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedLearner<A, R, N
                 watch.restart();
             }
             if watched {
-                watch.pattern(self.tree.journal.last_error, pattern.target.norm());
+                watch.pattern(self.tree.journal.last_error(), pattern.target.norm());
             }
         }
         self.relearn |= event == TreeEvent::Reset;

@@ -2,7 +2,7 @@
 //! nodes (training a pattern is in `training`).
 
 use super::{
-    Approximator, BinKey, Bins, BranchRule, Journal, Levels, Node, NodeArena, Records,
+    Approximator, BinKey, BranchRule, Journal, Node, NodeArena, PatternStore, Records,
     RecoveryState, Retraining, TreeSettings, MAX_DEPTH, NONE,
 };
 use crate::learn::{LearnError, LearnerStats};
@@ -54,25 +54,27 @@ impl Path {
 /// Nodes live in an arena (`Vec` plus free list) and link by `u32` indices. Patterns are
 /// numbered in the order they are trained (from 0, never reset), so what was learned can be
 /// dated.
+///
+/// The settings, the branching rule and the answering mode are the tree's own; what the
+/// tree's other files change goes through the owned parts below and their methods: the
+/// pattern store (bins and per-depth counts, kept in step with the nodes), the journal,
+/// the recovery state and re-training's bookkeeping.
 #[derive(Debug)]
 pub(crate) struct NestedTree<A, R, const N: usize> {
-    pub(super) settings: TreeSettings,
-    pub(super) rule: R,
+    settings: TreeSettings,
+    rule: R,
     /// The model new nodes' models are spawned from.
     template: A,
+    /// Whether a query skips nodes whose fit does not support it (see
+    /// [`after_correction`](Self::after_correction)).
+    supported_answers: bool,
     pub(super) nodes: NodeArena<A, N>,
-    /// Bins and the pattern store behind them.
-    pub(super) bins: Bins<N>,
-    pub(super) levels: Levels,
+    pub(super) store: PatternStore<N>,
+    /// The tree's seeded generator: models' starts, known patterns, re-training samples.
     pub(super) rng: ChaCha8Rng,
     pub(super) journal: Journal,
     pub(super) recovery: RecoveryState,
     pub(super) retraining: Retraining<N>,
-    /// Whether a query skips nodes whose fit does not support it (see
-    /// [`after_correction`](Self::after_correction)).
-    pub(super) supported_answers: bool,
-    /// Reused by subtree walks.
-    pub(super) scratch: Vec<u32>,
 }
 
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
@@ -94,18 +96,16 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             settings.max_depth
         );
         let mut tree = NestedTree {
-            bins: Bins::new(settings.bin_size, records),
-            levels: Levels::new(settings.max_depth, settings.monitor_ave),
+            store: PatternStore::new(&settings, records),
             settings,
             rule,
             template,
+            supported_answers: false,
             nodes: NodeArena::new(),
             rng,
             journal: Journal::default(),
             recovery: RecoveryState::default(),
             retraining: Retraining::default(),
-            supported_answers: false,
-            scratch: Vec::new(),
         };
         tree.plant_root();
         tree
@@ -116,7 +116,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// from its stale fit if that has done better than deferring; once a correction is
     /// fixed, only nodes whose fit supports `x` answer, and the root in any case.)
     pub(crate) fn answer(&self, x: &SVector<f64, N>) -> Vector3<f64> {
-        self.answer_on(&self.descend(self.rule.key(x, self.settings.max_depth)), x)
+        self.answer_on(&self.descend(self.key(x)), x)
     }
 
     /// [`answer`](Self::answer) at `x`, whose path is `path`.
@@ -127,13 +127,13 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             .filter(|&&id| {
                 !self.supported_answers || id == ROOT || self.nodes[id as usize].supports(x)
             })
-            .find_map(|&id| self.nodes[id as usize].answer_or_stale(x, &self.recovery.verdict))
+            .find_map(|&id| self.nodes[id as usize].answer_or_stale(x, self.recovery.verdict()))
             .unwrap_or_else(Vector3::zeros)
     }
 
     /// Nodes, bins and patterns, in total and per depth.
     pub(crate) fn stats(&self) -> LearnerStats {
-        let levels = self.levels.stats();
+        let levels = self.store.level_stats();
         LearnerStats {
             nodes: levels.iter().map(|l| l.nodes).sum(),
             bins: levels.iter().map(|l| l.bins).sum(),
@@ -144,21 +144,45 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
 
     /// Throws away every node, bin and pattern; the root starts afresh.
     pub(super) fn reset(&mut self) -> Result<(), LearnError> {
-        self.bins.clear()?;
-        self.levels.clear();
-        self.recovery = RecoveryState::default();
+        self.store.clear()?;
+        self.recovery.end();
         self.plant_root();
         Ok(())
     }
 
     fn plant_root(&mut self) {
-        self.retraining.touched.clear();
+        self.retraining.clear();
         let window = self.settings.am_error_iters;
         let model = self.template.spawn(&mut self.rng);
         let mut root = Node::new(model, *self.rule.root(), NONE, 0, 0, window);
-        root.born = self.journal.next_seq;
+        root.born = self.journal.next_seq();
         self.nodes.replant(root);
-        self.levels.node_added(0);
+        self.store.node_added(0);
+    }
+
+    /// The tree's settings.
+    pub(super) fn settings(&self) -> &TreeSettings {
+        &self.settings
+    }
+
+    /// The branching rule.
+    #[cfg(test)]
+    pub(super) fn rule(&self) -> &R {
+        &self.rule
+    }
+
+    /// The bin key of input `x`: its branches down to the tree's deepest depth.
+    pub(super) fn key(&self, x: &SVector<f64, N>) -> BinKey {
+        self.rule.key(x, self.settings.max_depth)
+    }
+
+    /// Once a correction is fixed: from now on a sub-box is split off once it holds
+    /// `patterns` stored patterns, if that is sooner than before, and a query is answered
+    /// only by nodes whose fit supports it (and the root in any case).
+    pub(super) fn answer_where_supported(&mut self, patterns: usize) {
+        let split = &mut self.settings.min_pats_for_split;
+        *split = (*split).min(patterns);
+        self.supported_answers = true;
     }
 
     /// The path of a point with bin key `key`.
@@ -190,11 +214,23 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         let window = self.settings.am_error_iters;
         let model = self.template.spawn(&mut self.rng);
         let mut node = Node::new(model, region, parent, branch, depth, window);
-        node.born = self.journal.next_seq;
+        node.born = self.journal.next_seq();
         let id = self.nodes.insert(node);
         self.nodes[parent as usize].children[usize::from(branch)] = id;
-        self.levels.node_added(depth);
+        self.store.node_added(depth);
         id
+    }
+
+    /// Node `id` and every node below it, in the order a depth-first walk takes them (a
+    /// node before its children, the last child first).
+    pub(super) fn subtree(&self, id: u32) -> Vec<u32> {
+        let (mut order, mut stack) = (Vec::new(), vec![id]);
+        while let Some(x) = stack.pop() {
+            order.push(x);
+            let children = &self.nodes[x as usize].children;
+            stack.extend(children.iter().copied().filter(|&c| c != NONE));
+        }
+        order
     }
 
     /// Returns node `id`, already unlinked, to the arena.

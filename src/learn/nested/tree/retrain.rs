@@ -9,9 +9,49 @@
 //! tree's seeded generator). After a detected change every node is re-trained this way on
 //! the patterns from after it. Models that are not re-trained never get here.
 
-use super::{Approximator, BranchRule, NestedTree, NONE};
+use super::{Approximator, BranchRule, NestedTree, Sample};
 use crate::learn::LearnError;
 use rand::Rng;
+
+/// Re-training's bookkeeping (re-trained models only) and its reused buffers.
+#[derive(Debug)]
+pub(crate) struct Retraining<const N: usize> {
+    /// Nodes that took in patterns since their last re-training; may hold a node twice or
+    /// one that is gone.
+    touched: Vec<u32>,
+    /// The bins sampled for one node.
+    picked: Vec<u32>,
+    /// Their patterns, in the node's local coordinates.
+    batch: Vec<Sample<N>>,
+}
+
+impl<const N: usize> Default for Retraining<N> {
+    fn default() -> Self {
+        Retraining {
+            touched: Vec::new(),
+            picked: Vec::new(),
+            batch: Vec::new(),
+        }
+    }
+}
+
+impl<const N: usize> Retraining<N> {
+    /// Node `id` took in its first pattern since its last re-training.
+    pub(crate) fn touch(&mut self, id: u32) {
+        self.touched.push(id);
+    }
+
+    /// Forgets every node listed (the tree starts afresh).
+    pub(crate) fn clear(&mut self) {
+        self.touched.clear();
+    }
+
+    /// Whether no node is listed as due for re-training.
+    #[cfg(test)]
+    pub(crate) fn is_idle(&self) -> bool {
+        self.touched.is_empty()
+    }
+}
 
 impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// Re-trains every node that is due; returns how many were.
@@ -19,7 +59,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         if !A::RETRAINED {
             return Ok(0);
         }
-        let delay = self.settings.retrain_delay.max(1);
+        let delay = self.settings().retrain_delay.max(1);
         let mut touched = std::mem::take(&mut self.retraining.touched);
         let mut retrained = 0;
         let mut result = Ok(());
@@ -41,17 +81,19 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// subtree.
     pub(super) fn retrain(&mut self, id: u32) -> Result<(), LearnError> {
         let mut picked = std::mem::take(&mut self.retraining.picked);
-        let mut stack = std::mem::take(&mut self.scratch);
         picked.clear();
-        stack.push(id);
-        while let Some(x) = stack.pop() {
-            let node = &self.nodes[x as usize];
+        for x in self.subtree(id) {
+            let bins = self.store.bins();
             // (A bin emptied by a detected change has nothing to give.)
-            picked.extend(node.bins.iter().copied().filter(|&b| self.bins.len(b) > 0));
-            stack.extend(node.children.iter().copied().filter(|&c| c != NONE));
+            picked.extend(
+                self.nodes[x as usize]
+                    .bins
+                    .iter()
+                    .copied()
+                    .filter(|&b| bins.len(b) > 0),
+            );
         }
-        self.scratch = stack;
-        let limit = self.settings.retrain_limit;
+        let limit = self.settings().retrain_limit;
         if picked.len() > limit {
             // The first `limit` places of a Fisher–Yates shuffle: a uniform sample.
             for i in 0..limit {
@@ -63,7 +105,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         let region = self.nodes[id as usize].region;
         self.retraining.batch.clear();
         for &bin in &picked {
-            let p = self.bins.latest(bin)?;
+            let p = self.store.latest(bin)?;
             self.retraining
                 .batch
                 .push((region.local(&p.input), p.target));

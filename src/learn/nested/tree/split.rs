@@ -22,7 +22,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         let Some(branch) = key.branch(node.depth + 1) else {
             return Ok(false);
         };
-        let s = &self.settings;
+        let s = self.settings();
         let due = node.box_patterns()[usize::from(branch)] >= s.min_pats_for_split
             && node.box_errors(branch).is_some_and(|errors| {
                 errors.len() >= s.split_evidence()
@@ -42,42 +42,15 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
             NONE
         );
         let child = self.add_child(parent, branch);
-        let depth = self.nodes[child as usize].depth;
-
-        // Bin sinking: exactly the bins whose branch at the child's depth is `branch`.
-        let mut kept = std::mem::take(&mut self.nodes[parent as usize].bins);
-        let mut sunk = Vec::new();
-        kept.retain(|&bin| {
-            let covered = self.bins.key(bin).branch(depth) == Some(branch);
-            if covered {
-                sunk.push(bin);
-            }
-            !covered
-        });
-        let mut patterns = 0;
-        let node = &mut self.nodes[child as usize];
-        debug_assert_eq!(node.patterns(), 0, "a new child holds no patterns");
-        for &bin in &sunk {
-            let n = self.bins.len(bin);
-            patterns += n;
-            node.patterns_added(self.bins.key(bin).branch(depth + 1), n);
-        }
-        let moved_bins = sunk.len();
-        node.bins = sunk;
-        self.levels
-            .bins_moved(depth - 1, depth, moved_bins, patterns);
-
-        let p = &mut self.nodes[parent as usize];
-        p.bins = kept;
-        p.box_split_off(branch, patterns);
+        self.store.sink(&mut self.nodes, parent, child);
         // From now on this measures the parent on its child's box (relative merge).
-        p.clear_box_errors(branch);
+        self.nodes[parent as usize].clear_box_errors(branch);
 
-        let known_share = self.settings.known_pattern_perc / 100.0;
+        let known_share = self.settings().known_pattern_perc / 100.0;
         let node = &mut self.nodes[child as usize];
         for i in 0..node.bins.len() {
             let (bin, rng) = (node.bins[i], &mut self.rng);
-            self.bins.for_each_pattern(bin, |pattern, seq| {
+            self.store.for_each_pattern(bin, |pattern, seq| {
                 node.take_in(&pattern.input, &pattern.target, seq, known_share, rng);
             })?;
         }

@@ -25,27 +25,28 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     ) -> Result<TreeEvent, LearnError> {
         let finite = |v: &f64| v.is_finite();
         if !(pattern.input.iter().all(finite) && pattern.target.iter().all(finite)) {
-            self.journal.last_error = None;
+            self.journal.clear_last_error();
             return Ok(TreeEvent::Ignored);
         }
-        let seq = self.journal.next_seq;
-        self.journal.next_seq += 1;
-        let key = self.rule.key(&pattern.input, self.settings.max_depth);
+        let seq = self.journal.number();
+        let key = self.key(&pattern.input);
         let path = self.descend(key);
         let miss =
             monitored.then(|| (self.answer_on(&path, &pattern.input) - pattern.target).norm());
-        self.journal.last_error = None;
+        self.journal.clear_last_error();
         // The error of the deepest node so far that answered from its own model.
         let mut fallback = None;
         for &id in path.nodes() {
             let (answered, own) = self.train_node(id, key, pattern, seq, fallback);
-            self.journal.last_error = answered.or(self.journal.last_error);
+            self.journal.answered(answered);
             fallback = own.or(fallback);
         }
         if let Some(miss) = miss {
             self.monitor(&path, miss);
         }
-        self.store(path.deepest(), key, pattern, seq)?;
+        self.store
+            .keep(&mut self.nodes, path.deepest(), key, pattern, seq)?;
+        self.evict_over_cap();
         if let Some(event) = self.merge_if_due(&path)? {
             return Ok(event);
         }
@@ -68,19 +69,19 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         seq: u64,
         fallback: Option<f64>,
     ) -> (Option<f64>, Option<f64>) {
-        let window = self.settings.am_error_iters;
-        let known_share = self.settings.known_pattern_perc / 100.0;
+        let window = self.settings().am_error_iters;
+        let known_share = self.settings().known_pattern_perc / 100.0;
         let node = &mut self.nodes[id as usize];
         let miss = |output: Vector3<f64>| (output - pattern.target).norm();
         let own = node.answer(&pattern.input).map(miss);
         let stale = node.stale_answer(&pattern.input).map(miss);
         if let (Some(stale), Some(fallback)) = (stale, fallback) {
-            self.recovery.verdict.compare(stale, fallback);
+            self.recovery.compare(stale, fallback);
             node.verdict.compare(stale, fallback);
         }
-        let error = own.or(stale.filter(|_| node.stale_ok(&self.recovery.verdict)));
+        let error = own.or(stale.filter(|_| node.stale_ok(self.recovery.verdict())));
         if let Some(error) = error {
-            self.levels.record_error(node.depth, error);
+            self.store.record_error(node.depth, error);
             if let Some(branch) = key.branch(node.depth + 1) {
                 node.box_errors_mut(branch, window).push(error);
             }
@@ -101,7 +102,7 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
     /// every node on the pattern's `path` that had taken in a full window of patterns
     /// before it: a node is watched from then on (see [`merge`](super::merge)).
     fn monitor(&mut self, path: &Path, miss: f64) {
-        let window = self.settings.am_error_iters as u64;
+        let window = self.settings().am_error_iters as u64;
         for &id in path.nodes() {
             let node = &mut self.nodes[id as usize];
             if node.taken > window {
@@ -116,32 +117,9 @@ impl<A: Approximator<N>, R: BranchRule<N>, const N: usize> NestedTree<A, R, N> {
         if A::RETRAINED {
             let node = &mut self.nodes[id as usize];
             if node.fresh == 0 {
-                self.retraining.touched.push(id);
+                self.retraining.touch(id);
             }
             node.fresh += 1;
         }
-    }
-
-    /// Keeps pattern number `seq` in its bin, which hangs on node `id`, the deepest on its
-    /// path; then drops the least recently used bins if the store is over its cap.
-    fn store(
-        &mut self,
-        id: u32,
-        key: BinKey,
-        pattern: &Pattern<N>,
-        seq: u64,
-    ) -> Result<(), LearnError> {
-        let (bin, created) = self.bins.find_or_create(key);
-        let node = &mut self.nodes[id as usize];
-        if created {
-            node.bins.push(bin);
-            self.levels.bin_added(node.depth);
-        }
-        if self.bins.store(bin, pattern, seq)? {
-            node.patterns_added(key.branch(node.depth + 1), 1);
-            self.levels.pattern_added(node.depth);
-        }
-        self.evict_over_cap();
-        Ok(())
     }
 }

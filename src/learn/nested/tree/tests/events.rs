@@ -45,14 +45,14 @@ fn a_root_absolute_merge_throws_everything_away() {
         nodes,
     };
     assert_eq!(
-        t.journal.events,
+        taken_events(&mut t),
         [merge],
         "every node there was, logged once"
     );
     let stats = t.stats();
     assert_eq!((stats.nodes, stats.bins, stats.patterns), (1, 0, 0));
     assert!(stats.levels.iter().all(|l| l.error.is_none()));
-    assert_eq!(t.bins.count(), 0);
+    assert_eq!(t.store.bins().count(), 0);
     assert_eq!(t.answer(&SVector::repeat(2.0)), Vector3::zeros());
 }
 
@@ -95,7 +95,7 @@ fn a_relative_merge_compares_a_child_with_its_parent_on_the_same_patterns() {
         nodes: 2,
     };
     assert_eq!(
-        t.journal.events,
+        taken_events(&mut t),
         [merge],
         "the child and its own child, logged once"
     );
@@ -105,7 +105,7 @@ fn a_relative_merge_compares_a_child_with_its_parent_on_the_same_patterns() {
 #[test]
 fn a_nodes_running_error_is_the_trees_miss_on_monitored_patterns_after_a_full_window() {
     let mut t = tree(still(2));
-    let window = t.settings.am_error_iters;
+    let window = t.settings().am_error_iters;
     let mut rng = ChaCha8Rng::seed_from_u64(9);
     for _ in 0..window {
         t.train_monitored(&random_pattern(&mut rng), true).unwrap();

@@ -92,20 +92,20 @@ fn reachable<A: Approximator<N>, R: BranchRule<N>, const N: usize>(
 fn recount<A: Approximator<N>, R: BranchRule<N>, const N: usize>(
     tree: &NestedTree<A, R, N>,
 ) -> Vec<(usize, usize, usize)> {
-    let mut counts = vec![(0, 0, 0); tree.settings.max_depth + 1];
+    let mut counts = vec![(0, 0, 0); tree.settings().max_depth + 1];
     let mut seen_bins = 0;
     for id in reachable(tree) {
         let node = &tree.nodes[id as usize];
         let mut per_box = [0; BRANCHES];
         let mut patterns = 0;
         for &bin in &node.bins {
-            let key = tree.bins.key(bin);
+            let key = tree.store.bins().key(bin);
             assert_eq!(
                 tree.descend(key).deepest(),
                 id,
                 "bin on the deepest covering node"
             );
-            let n = tree.bins.len(bin);
+            let n = tree.store.bins().len(bin);
             patterns += n;
             if let Some(b) = key.branch(node.depth + 1) {
                 per_box[usize::from(b)] += n;
@@ -117,7 +117,11 @@ fn recount<A: Approximator<N>, R: BranchRule<N>, const N: usize>(
         *c = (c.0 + 1, c.1 + node.bins.len(), c.2 + patterns);
         seen_bins += node.bins.len();
     }
-    assert_eq!(seen_bins, tree.bins.count(), "every bin hangs on one node");
+    assert_eq!(
+        seen_bins,
+        tree.store.bins().count(),
+        "every bin hangs on one node"
+    );
     counts
 }
 
@@ -136,6 +140,15 @@ fn bins_of(tree: &Tree, id: u32) -> BTreeSet<u32> {
     tree.nodes[id as usize].bins.iter().copied().collect()
 }
 
+/// The merges and detected changes the tree booked since they were last taken.
+fn taken_events<A: Approximator<N>, R: BranchRule<N>, const N: usize>(
+    tree: &mut NestedTree<A, R, N>,
+) -> Vec<crate::learn::ModelEvent> {
+    let mut events = Vec::new();
+    tree.journal.drain_into(&mut events);
+    events
+}
+
 #[test]
 fn a_split_makes_the_right_half_and_sinks_exactly_the_covered_bins() {
     let mut t = tree(still(3));
@@ -146,7 +159,7 @@ fn a_split_makes_the_right_half_and_sinks_exactly_the_covered_bins() {
     let covered: BTreeSet<u32> = all
         .iter()
         .copied()
-        .filter(|&b| t.bins.key(b).branch(1) == Some(branch))
+        .filter(|&b| t.store.bins().key(b).branch(1) == Some(branch))
         .collect();
     assert!(!covered.is_empty() && covered.len() < all.len());
 
@@ -203,16 +216,18 @@ fn a_capped_store_drops_the_least_recently_used_bins_and_keeps_splitting() {
     let mut t = tree(settings);
     let mut rng = ChaCha8Rng::seed_from_u64(3);
     let events = train_random(&mut t, 3000, &mut rng);
-    assert_eq!(t.bins.stored(), 300, "full, and no fuller");
+    assert_eq!(t.store.bins().stored(), 300, "full, and no fuller");
     assert_eq!(recount(&t), counters(&t));
     assert!(events.contains(&TreeEvent::Split));
     // A pattern in a bin just stored to stays; the bin of the oldest pattern is gone.
     let last = random_pattern(&mut rng);
     t.train(&last).unwrap();
-    let key = t.rule.key(&last.input, 4);
-    let (bin, created) = t.bins.find_or_create(key);
-    assert!(!created);
-    assert_eq!(t.bins.latest(bin).unwrap(), last);
+    let key = t.rule().key(&last.input, 4);
+    let holder = &t.nodes[t.descend(key).deepest() as usize];
+    let bins = t.store.bins();
+    let bin = holder.bins.iter().copied().find(|&b| bins.key(b) == key);
+    let bin = bin.expect("the bin just stored to is kept");
+    assert_eq!(t.store.latest(bin).unwrap(), last);
     assert_eq!(t.stats().patterns, 300);
 }
 
@@ -238,7 +253,7 @@ fn an_answer_falls_back_to_the_nearest_ancestor_when_a_fit_is_singular() {
     }
     let child = t.split(ROOT, 31).unwrap();
     let query = SVector::from([5.0, 7.0, 6.5, 4.5, 5.5]);
-    assert_eq!(t.descend(t.rule.key(&query, 2)).deepest(), child);
+    assert_eq!(t.descend(t.rule().key(&query, 2)).deepest(), child);
     assert_eq!(t.nodes[child as usize].answer(&query), None);
     let root_answer = t.nodes[ROOT as usize].answer(&query).unwrap();
     assert_eq!(t.answer(&query), root_answer);
@@ -317,7 +332,7 @@ proptest! {
                 }
             }
             prop_assert_eq!(recount(&t), counters(&t));
-            prop_assert!(cap == 0 || t.bins.stored() <= cap);
+            prop_assert!(cap == 0 || t.store.bins().stored() <= cap);
         }
     }
 }

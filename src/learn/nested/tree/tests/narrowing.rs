@@ -79,7 +79,10 @@ fn patterns_with_d_off_stop_early_are_stored_once_and_never_sink() {
     assert_eq!(recount(&t), counters(&t));
     let reach = |id: u32| {
         let node = &t.nodes[id as usize];
-        node.bins.iter().map(|&b| t.bins.key(b).reach()).min()
+        node.bins
+            .iter()
+            .map(|&b| t.store.bins().key(b).reach())
+            .min()
     };
     assert_eq!(reach(ROOT), Some(0));
     assert_eq!(reach(child), Some(1));
@@ -98,7 +101,7 @@ fn queries_and_known_patterns_at_d_zero_lie_in_every_node_down_the_path() {
     let child = t.split(ROOT, 0).unwrap();
     let grandchild = t.split(child, 0).unwrap();
     let query = pattern8([0.5; 5], [0.0; 3]).input;
-    assert_eq!(t.descend(t.rule.key(&query, 3)).deepest(), grandchild);
+    assert_eq!(t.descend(t.rule().key(&query, 3)).deepest(), grandchild);
     for id in [ROOT, child, grandchild] {
         let anchor = t.nodes[id as usize].region.known_anchor();
         let anchor = anchor.expect("c = 0, d = 0 is in the box");

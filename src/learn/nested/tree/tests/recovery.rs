@@ -48,7 +48,7 @@ fn assert_nothing_older_than(t: &mut Tree, cutoff: u64) {
             assert!(oldest >= cutoff, "node {id} answers from pattern {oldest}");
         }
         for &bin in &node.bins.clone() {
-            t.bins
+            t.store
                 .for_each_pattern(bin, |_, seq| assert!(seq >= cutoff, "pattern {seq} kept"))
                 .unwrap();
         }
@@ -60,7 +60,7 @@ fn after_a_change_no_node_answers_from_a_sum_set_older_than_it() {
     let mut rng = ChaCha8Rng::seed_from_u64(11);
     let mut t = grown(&mut rng);
     let nodes = reachable(&t).len();
-    let cutoff = t.journal.next_seq;
+    let cutoff = t.journal.next_seq();
     train_mapping(&mut t, 2000, linear, |x| x, &mut rng);
     t.forget_before(cutoff, 20).unwrap();
     assert_eq!(reachable(&t).len(), nodes, "forgetting cuts nothing");
@@ -103,7 +103,7 @@ fn a_small_change_leaves_stale_fits_answering_and_a_large_one_does_not() {
     for (scale, stale_kept) in [(1.02, true), (-1.0, false)] {
         let mut rng = ChaCha8Rng::seed_from_u64(12);
         let mut t = grown(&mut rng);
-        let cutoff = t.journal.next_seq;
+        let cutoff = t.journal.next_seq();
         // Every node but the root awaits new patterns for good.
         t.forget_before(cutoff, usize::MAX).unwrap();
         for _ in 0..300 {
@@ -114,7 +114,7 @@ fn a_small_change_leaves_stale_fits_answering_and_a_large_one_does_not() {
             })
             .unwrap();
         }
-        assert_eq!(t.recovery.verdict.stale_ok(), stale_kept, "scale {scale}");
+        assert_eq!(t.recovery.verdict().stale_ok(), stale_kept, "scale {scale}");
         let deep = reachable(&t)
             .into_iter()
             .find(|&id| t.nodes[id as usize].depth == 1)
@@ -123,7 +123,7 @@ fn a_small_change_leaves_stale_fits_answering_and_a_large_one_does_not() {
         let x = node.region.low() + (node.region.high() - node.region.low()) * 0.5;
         assert_eq!(node.answer(&x), None, "no fit of its own yet");
         assert_eq!(
-            node.answer_or_stale(&x, &t.recovery.verdict).is_some(),
+            node.answer_or_stale(&x, t.recovery.verdict()).is_some(),
             stale_kept,
             "scale {scale}"
         );
@@ -137,8 +137,8 @@ fn subtrees_starved_of_new_patterns_are_cut_and_booked_unless_their_stale_fits_d
         let mut rng = ChaCha8Rng::seed_from_u64(13);
         let mut t = grown(&mut rng);
         train_random(&mut t, 3000, &mut rng);
-        t.journal.events.clear();
-        let cutoff = t.journal.next_seq;
+        taken_events(&mut t);
+        let cutoff = t.journal.next_seq();
         t.forget_before(cutoff, 20).unwrap();
         // New patterns only in the lower half of every input, sub-box 0 of the root: the
         // subtrees at 7 (two nodes) and 31 (one) get none.
@@ -146,7 +146,7 @@ fn subtrees_starved_of_new_patterns_are_cut_and_booked_unless_their_stale_fits_d
         let a = t.nodes[ROOT as usize].children[0];
         assert_eq!(t.nodes[a as usize].awaiting, 0);
         assert_eq!(t.cut_starved(), cut, "nothing awaits patterns any more");
-        let mut events = std::mem::take(&mut t.journal.events);
+        let mut events = taken_events(&mut t);
         events.sort_by_key(|e| match e {
             ModelEvent::Merge { nodes, .. } => *nodes,
             ModelEvent::Change { .. } => 0,

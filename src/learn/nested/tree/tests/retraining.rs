@@ -126,6 +126,6 @@ fn learners_that_are_not_retrained_book_nothing() {
     let mut t = tree(still(3));
     let mut rng = ChaCha8Rng::seed_from_u64(13);
     train_random(&mut t, 200, &mut rng);
-    assert!(t.retraining.touched.is_empty());
+    assert!(t.retraining.is_idle());
     assert_eq!(t.retrain_due().unwrap(), 0);
 }

@@ -260,8 +260,7 @@ config_entries! {
     change_recovery: ChangeRecovery = change().recovery, "", WATCHING, Rule::Any;
     /// change_recovery correct: patterns since a change its correction of the readings is
     /// fitted from before it is fixed, once a refit no longer moves it, and the tree learns
-    /// again (at least 30, the patterns from which queries go through it; lin8's config sets
-    /// 600).
+    /// again (at least 30, the patterns from which queries go through it).
     change_fit_patterns: usize = change().fit_patterns, "", WATCHING, AtLeast(30.0);
     /// change_recovery correct: stored patterns a sub-box needs before it is split off once
     /// a correction is fixed (the changed robot works where the tree is still coarse; never

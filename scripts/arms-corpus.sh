@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Prints docs/ARMS.md's table of the public corpus: for every serial arm of PyPI's
 # example-robot-data (the arms of tests/corpus.rs), what `eyehand reach` chose with nothing
-# but `--urdf`, then one lin5 run of 20,000 kinematic trials (seed 1) — or the refusal.
+# but `--urdf` (one arm also with the camera_mount its refusal names), then one lin5 run of
+# 20,000 kinematic trials (seed 1) — or the refusal.
 # Usage: scripts/arms-corpus.sh [--sim dynamic] [EYEHAND_BINARY]   (default:
 # target/release/eyehand). With `--sim dynamic`, docs/DYNAMIC.md's table instead: 2,000 lin5
 # trials (seed 1) per arm on the dynamic simulator, its settle time-outs, contact stops and
@@ -37,6 +38,7 @@ arms=(
     ur_description/urdf/ur10_robot.urdf
     z1_description/urdf/z1.urdf
     so_arm_description/urdf/so100.urdf
+    "z1_description/urdf/z1.urdf camera_mount=0,0,0,180,0,0"
     so_arm_description/urdf/so101.urdf
     talos_data/robots/talos_left_arm.urdf
 )
@@ -47,16 +49,22 @@ else
     echo "| arm | camera link | reach space r, z (cm) | lin5 mean distance after steps 1..5 (mm) | contact stops per 1,000 moves | trials/s |"
 fi
 echo "|---|---|---|---|---|---|"
-for arm in "${arms[@]}"; do
+for entry in "${arms[@]}"; do
+    # An arm's URDF, then the config entries set for it (none: nothing but --urdf).
+    read -r arm entries <<<"$entry"
+    sets=()
+    for set in $entries; do sets+=(--set "$set"); done
     data="$work/data"
     rm -rf "$data"
-    "$eyehand" reach --urdf "$robots/$arm" >"$work/reach" 2>"$work/reach-err" || true
-    "$eyehand" run --urdf "$robots/$arm" --set "sim=$sim" --trials "$trials" --seed 1 \
-        --data "$data" --quiet --no-plot >/dev/null 2>"$work/run-err" || true
-    python3 - "$arm" "$work/reach" "$work/run-err" "$data/lin5/0/summary.json" "$sim" <<'EOF'
+    "$eyehand" reach --urdf "$robots/$arm" "${sets[@]}" >"$work/reach" 2>"$work/reach-err" || true
+    "$eyehand" run --urdf "$robots/$arm" "${sets[@]}" --set "sim=$sim" --trials "$trials" \
+        --seed 1 --data "$data" --quiet --no-plot >/dev/null 2>"$work/run-err" || true
+    python3 - "$arm" "$entries" "$work/reach" "$work/run-err" "$data/lin5/0/summary.json" "$sim" <<'EOF'
 import json, os, re, sys
-arm, reach, err, summary, sim = sys.argv[1:]
+arm, entries, reach, err, summary, sim = sys.argv[1:]
 name = os.path.basename(arm).removesuffix(".urdf")
+if entries:
+    name += " (" + entries.replace("=", " ") + ")"
 text = open(reach).read()
 line = lambda key: next((l for l in text.splitlines() if l.startswith(key)), "")
 camera = re.search(r"`([^`]+)`", line("camera link"))
@@ -79,7 +87,7 @@ elif os.path.exists(summary):
 else:
     why = [l for l in open(err).read().splitlines() if not l.startswith("eyehand: warning")]
     why = why[-1].removeprefix("eyehand: ") if why else "?"
-    why = re.sub(r" \(closer than.*", "", why)
+    why = re.sub(r" \(closer than.*?in area\)", "", why)
     if sim == "dynamic":
         print(f"| {name} | refused: {why} | - | - | - | - |")
     else:

@@ -119,9 +119,12 @@ fn non_finite_word(folder: &Path) -> Option<String> {
 /// Runs one case and says how it ended.
 fn run_case(name: &str, value: &str, config: Config, data: &Path) -> Outcome {
     match run(&RunOptions::new(config, data)) {
-        Err(RunError::Preflight(_) | RunError::Urdf(_) | RunError::ArmEntry { .. }) => {
-            Outcome::RefusedUpFront
-        }
+        Err(
+            RunError::Preflight(_)
+            | RunError::Urdf(_)
+            | RunError::ArmEntry { .. }
+            | RunError::OtherMount { .. },
+        ) => Outcome::RefusedUpFront,
         Err(e) => {
             assert!(
                 !e.to_string().is_empty(),

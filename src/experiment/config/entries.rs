@@ -172,8 +172,9 @@ config_entries! {
     /// `none` (a relative one is taken from the config file's folder).
     package_paths: PackagePaths = PackagePaths::default(), "", All, Rule::Any;
     /// Where targets lie: r_min,r_max,z_min,z_max of the study's half annulus, or `auto`
-    /// (the same shape fitted to what the arm reaches looking down; what a URDF other than
-    /// the shipped one gets when this is left at its default).
+    /// (the same shape, or where it does not fit one of other proportions, fitted to what
+    /// the arm reaches looking down; what a URDF other than the shipped one gets when this
+    /// is left at its default).
     reach_space: ReachSetting = ReachSetting::Given([46.0, 93.0, 0.0, 52.0]), "cm", All, Rule::Any;
     /// Rays per image side: the 512×512 image is sampled by an N×N grid of rays.
     raycast_resolution: usize = 256, "", RAYCAST, Within(16.0, 4096.0);

@@ -284,12 +284,15 @@ fn run_method_lin8_without_a_config_records_lin8s_values() {
     ]);
     let folder = run_folder(&out);
     let info = std::fs::read_to_string(folder.join("info")).unwrap();
-    let shrink = info
-        .lines()
-        .find(|l| l.starts_with("error_area_shrink "))
-        .unwrap();
-    assert!(shrink.starts_with("error_area_shrink 0.5 "), "{shrink}");
-    assert!(shrink.ends_with("# default"), "{shrink}");
+    // Its own entry at the entry's default, and a shared one at lin8's own default.
+    for (value, source) in [
+        ("error_area_shrink 0.5 ", "# default"),
+        ("change_fit_patterns 600 ", "# lin8's default"),
+    ] {
+        let name = value.split(' ').next().unwrap();
+        let line = info.lines().find(|l| l.starts_with(name)).unwrap();
+        assert!(line.starts_with(value) && line.ends_with(source), "{line}");
+    }
     let compared = Config::from_file(&Path::new(ROOT).join("configs/lin8.conf")).unwrap();
     assert_eq!(
         compared.error_area_shrink, 0.5,

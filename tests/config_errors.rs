@@ -5,6 +5,7 @@
 use eyehand::experiment::{
     declarations, Config, ConfigErrorKind, Scope, Source, ValueError, ENTRY_NAMES,
 };
+use eyehand::learn::Method;
 use std::process::Command;
 
 /// The complete config at its defaults (`eyehand config defaults`).
@@ -12,12 +13,23 @@ fn shipped() -> String {
     eyehand::experiment::defaults_text()
 }
 
-/// The complete default config with the line holding `name` replaced by `replacement`.
+/// The mark beside an entry the complete default config leaves commented out because some
+/// methods have their own default for it.
+const METHODS_OWN: &str = "(methods' own: ";
+
+/// Whether `line` of the complete default config is entry `name`'s left commented out.
+fn commented_entry(line: &str, name: &str) -> bool {
+    let rest = line.strip_prefix("# ").unwrap_or("");
+    rest.split_whitespace().next() == Some(name) && line.contains(METHODS_OWN)
+}
+
+/// The complete default config with the line holding `name` (or, for an entry some
+/// methods have their own default for, its commented line) replaced by `replacement`.
 fn with_line(name: &str, replacement: &str) -> (String, usize) {
     let text = shipped();
     let line = text
         .lines()
-        .position(|l| l.split_whitespace().next() == Some(name))
+        .position(|l| l.split_whitespace().next() == Some(name) || commented_entry(l, name))
         .unwrap_or_else(|| panic!("{name} not in the config"));
     let lines: Vec<&str> = text
         .lines()
@@ -58,12 +70,19 @@ fn every_entry_is_in_the_complete_default_config_once() {
             .iter()
             .any(|d| d.name == name && d.scope == Scope::Unused)
     };
+    let methods_own = |name: &str| {
+        Method::ALL
+            .iter()
+            .any(|m| m.facts().shared_defaults.iter().any(|(n, _)| *n == name))
+    };
     for name in ENTRY_NAMES.iter().filter(|n| !unused(n)) {
-        let n = text
+        let given = text
             .lines()
             .filter(|l| l.split_whitespace().next() == Some(name))
             .count();
-        assert_eq!(n, 1, "{name}");
+        let commented = text.lines().filter(|l| commented_entry(l, name)).count();
+        let expected = if methods_own(name) { (0, 1) } else { (1, 0) };
+        assert_eq!((given, commented), expected, "{name}: given, commented");
     }
     assert_eq!(Config::parse(&text, "x.conf"), Ok(Config::default_config()));
 }

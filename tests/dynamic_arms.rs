@@ -1,11 +1,12 @@
-//! The dynamic simulator on arms other than the OSCAR-6 (issue 16): the Franka Panda from
-//! its real URDF (meshes as convex hulls, seven joints, the fingers held) and the hand-made
-//! UR-style arm hold a pose under gravity, end a move where the kinematic model ends it,
-//! and run lin5 trials; lowering the Panda's hand (its seventh body) onto a box stops on it
+//! The dynamic simulator on arms other than the OSCAR-6: the Franka Panda from its real
+//! URDF (meshes as convex hulls, seven joints, the fingers held) and the hand-made UR-style
+//! arm hold a pose under gravity, end a move where the kinematic model ends it (as do the
+//! UR5 and the xArm7 of the public collection, EYEHAND_ROBOT_DATA), and run lin5 trials; lowering the Panda's hand (its seventh body) onto a box stops on it
 //! in both simulators. (The hand touching the Panda's own links is a unit test of the
 //! contact rule, robot/clearance.rs: no move that keeps the camera looking down brings it
 //! there within the Panda's limits.)
 
+use eyehand::experiment::setup::{fit_reach, load_arm};
 use eyehand::experiment::{run, Config, RunOptions};
 use eyehand::robot::{
     ArmModel, Drive, DynamicSettings, DynamicSim, FreeArm, Joints, KinematicSim, Obstacle,
@@ -19,6 +20,11 @@ use rand_chacha::ChaCha8Rng;
 mod test_arms;
 
 use test_arms::{PANDA, UR_STYLE};
+
+#[path = "common/robot_data.rs"]
+mod robot_data;
+
+use robot_data::robot_data;
 
 fn panda() -> ArmModel {
     PANDA.model()
@@ -86,49 +92,72 @@ fn the_arms_hold_a_pose_under_gravity() {
     }
 }
 
+/// Eight moves of the arm of `model` to seeded targets of `space` on both simulators, the
+/// dynamic one at the default settings: every move settles within the default tolerance
+/// (0.0005°) where the kinematic model ends it, the cameras within 0.05 mm (the OSCAR-6's
+/// contract, tests/dynamic_contract.rs), no joint beyond its URDF velocity limit.
+fn eight_moves_settle(model: &ArmModel, space: &ReachSpace) {
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    let settings = DynamicSettings::default();
+    let mut kinematic = KinematicSim::new(model.clone(), settings.moves);
+    let mut dynamic = DynamicSim::new(model.clone(), settings);
+    let start = model
+        .solve_camera_position(&space.prelearning_goal())
+        .unwrap();
+    kinematic.place(&start).unwrap();
+    dynamic.place(&start).unwrap();
+    let mut moves = 0;
+    while moves < 8 {
+        let Ok(target) = model.solve_camera_position(&space.sample(&mut rng)) else {
+            continue;
+        };
+        let delta = target - model.controlled_of(&kinematic.joints());
+        let (planned, done) = (kinematic.execute(&delta), dynamic.execute(&delta));
+        assert!(done.settled, "{}: {done:?}", model.name());
+        assert_eq!(planned.stopped_by_limit, done.stopped_by_limit);
+        let gap = (kinematic.camera_pose().translation.vector
+            - dynamic.camera_pose().translation.vector)
+            .norm();
+        assert!(
+            gap < 0.05e-3,
+            "{} move {moves}: {:.4} mm apart",
+            model.name(),
+            gap * 1e3
+        );
+        moves += 1;
+    }
+    let work = dynamic.work();
+    assert_eq!(work.settle_timeouts, 0, "{}: {work:?}", model.name());
+    assert_eq!(work.speed_faults, 0, "{}: {work:?}", model.name());
+}
+
 #[test]
 fn moves_end_where_the_kinematic_model_ends_them() {
-    // Eight moves to seeded targets of the fitted reach space: the dynamic arm settles
-    // where the kinematic model puts the camera within 0.05 mm, the OSCAR-6's contract
-    // (tests/dynamic_contract.rs); measured at most 0.005 mm (Panda), 0.004 mm (UR-style).
-    // The UR-style arm's base yaw has dry friction (0.1 N m), which the servo law does not
-    // feed forward: near a vertical upper arm its wrist then rests up to 0.0006° from its
-    // set-point, beyond the default settle tolerance of 0.0005°, so it settles at 0.002°.
-    for (mut model, settle_deg) in [(panda(), 0.0005), (ur_style(), 0.002)] {
+    // Measured at most 0.005 mm apart (Panda), 0.004 mm (UR-style). The UR-style arm's
+    // base yaw has dry friction (0.1 N·m), which the servos feed forward.
+    for mut model in [panda(), ur_style()] {
         let space = reach(&mut model);
-        let mut rng = ChaCha8Rng::seed_from_u64(5);
-        let settings = DynamicSettings {
-            settle_position_tol: f64::to_radians(settle_deg),
-            ..DynamicSettings::default()
-        };
-        let mut kinematic = KinematicSim::new(model.clone(), settings.moves);
-        let mut dynamic = DynamicSim::new(model.clone(), settings);
-        let start = model
-            .solve_camera_position(&space.prelearning_goal())
-            .unwrap();
-        kinematic.place(&start).unwrap();
-        dynamic.place(&start).unwrap();
-        let mut moves = 0;
-        while moves < 8 {
-            let Ok(target) = model.solve_camera_position(&space.sample(&mut rng)) else {
-                continue;
-            };
-            let delta = target - model.controlled_of(&kinematic.joints());
-            let (planned, done) = (kinematic.execute(&delta), dynamic.execute(&delta));
-            assert!(done.settled, "{}: {done:?}", model.name());
-            assert_eq!(planned.stopped_by_limit, done.stopped_by_limit);
-            let gap = (kinematic.camera_pose().translation.vector
-                - dynamic.camera_pose().translation.vector)
-                .norm();
-            assert!(
-                gap < 0.05e-3,
-                "{} move {moves}: {:.4} mm apart",
-                model.name(),
-                gap * 1e3
-            );
-            moves += 1;
-        }
-        assert_eq!(dynamic.work().settle_timeouts, 0);
+        eight_moves_settle(&model, &space);
+    }
+}
+
+#[test]
+fn public_arms_settle_where_the_kinematic_model_ends_their_moves() {
+    // Two arms as their makers describe them, from their URDFs alone: the UR5 (no joint
+    // friction) and the xArm7, whose seven joints each have dry friction (1 N·m) and
+    // damping (2–10 N·m·s/rad). Without the friction fed forward and solved with the
+    // joints' equations, the xArm7's wrist stalled up to 0.5° short of its set-point.
+    let robots = robot_data().join("robots");
+    let config = Config::default_config();
+    for urdf in [
+        "ur_description/urdf/ur5_robot.urdf",
+        "xarm_description/urdf/xarm7.urdf",
+    ] {
+        let mut model = load_arm(&config, Some(&robots.join(urdf))).unwrap().model;
+        let space = fit_reach(&config, &mut model)
+            .unwrap_or_else(|why| panic!("{urdf}: {why}"))
+            .space;
+        eight_moves_settle(&model, &space);
     }
 }
 

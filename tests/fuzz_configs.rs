@@ -23,8 +23,10 @@ const DYNAMIC_TRIALS: usize = 6;
 /// cost bound (about 10⁹ multiply-adds for mlp, a second or two here), which 20 trials of
 /// would take past [`RUN_BOUND`] without hanging.
 const COSTLY_TRIALS: usize = 8;
-/// The longest a short run may take.
-const RUN_BOUND: Duration = Duration::from_secs(30);
+/// The longest a short run may take: a guard against a hang, not a speed goal (speeds are
+/// measured in the benches). The costliest case (mlp at its cost bound, 8 trials) takes
+/// about 15 s alone and over 30 s on two cores shared with other builds.
+const RUN_BOUND: Duration = Duration::from_secs(120);
 
 /// How a case ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -119,9 +121,12 @@ fn non_finite_word(folder: &Path) -> Option<String> {
 /// Runs one case and says how it ended.
 fn run_case(name: &str, value: &str, config: Config, data: &Path) -> Outcome {
     match run(&RunOptions::new(config, data)) {
-        Err(RunError::Preflight(_) | RunError::Urdf(_) | RunError::ArmEntry { .. }) => {
-            Outcome::RefusedUpFront
-        }
+        Err(
+            RunError::Preflight(_)
+            | RunError::Urdf(_)
+            | RunError::ArmEntry { .. }
+            | RunError::OtherMount { .. },
+        ) => Outcome::RefusedUpFront,
         Err(e) => {
             assert!(
                 !e.to_string().is_empty(),

@@ -5,7 +5,7 @@ use crate::convert::{path_array, query_array, run_options, run_request, value_er
 use crate::learner::{BuiltinLearner, ErrorSlot, PyLearner};
 use crate::view::EpisodeView;
 use eyehand::control::{Failure, StepError, TrialEnd, TrialLoop};
-use eyehand::experiment::{CameraKind, RunRequest, RunSetup};
+use eyehand::experiment::{begin_learner_trial, start_learning, CameraKind, RunRequest, RunSetup};
 use eyehand::learn::{LearnError, Learner};
 use eyehand::robot::Controlled;
 use eyehand::units::{MM_PER_M, M_PER_CM};
@@ -35,6 +35,8 @@ type StepTuple<'py> = (
 pub struct Testbed {
     trials: TrialLoop,
     view: EpisodeView,
+    /// The number of the trial a learner begins next (1 until one has learned a trial).
+    next_trial: usize,
 }
 
 #[pymethods]
@@ -58,6 +60,7 @@ impl Testbed {
         Ok(Testbed {
             trials,
             view: EpisodeView::new(resolution),
+            next_trial: 1,
         })
     }
 
@@ -208,17 +211,28 @@ impl Testbed {
     }
 
     /// Finishes the trial: `learner` (an `eyehand.Learner` or any object with `learn`)
-    /// learns from its poses, as a run's learner does after each trial.
+    /// learns from its poses, as a run's learner does after each trial, and the next trial
+    /// begins for it as a run begins it (a built-in learner told its number, pre-learning
+    /// made again if it asks).
     fn learn(&mut self, learner: &Bound<'_, PyAny>) -> PyResult<()> {
-        let trials = &mut self.trials;
-        with_learner(learner, |l| trials.finish_trial(l))
+        let (trials, next) = (&mut self.trials, self.next_trial + 1);
+        with_learner(learner, |l| {
+            trials.finish_trial(l)?;
+            begin_learner_trial(trials, l, next)
+        })?;
+        self.next_trial = next;
+        Ok(())
     }
 
-    /// Pre-learning: the 8 fixed moves a run makes before its first trial, learned by
-    /// `learner`. Ends any trial going on unlearned.
+    /// Pre-learning: `learner` started as a run starts its learner before the first
+    /// trial (told trial 0 begins, then the 8 fixed moves made and learned), and the next
+    /// trial begun for it. Ends any trial going on unlearned.
     fn prelearn(&mut self, learner: &Bound<'_, PyAny>) -> PyResult<()> {
-        let trials = &mut self.trials;
-        with_learner(learner, |l| trials.prelearn(l))
+        let (trials, next) = (&mut self.trials, self.next_trial);
+        with_learner(learner, |l| {
+            start_learning(trials, l)?;
+            begin_learner_trial(trials, l, next)
+        })
     }
 
     /// Stretches (positive) or shortens link 1, 2 or 3 by `cm`.

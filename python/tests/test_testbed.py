@@ -1,4 +1,5 @@
-"""The Testbed drives the run's trial loop step by step: same draws, same moves, same bytes."""
+"""The Testbed drives the run's trial loop step by step: same draws, same moves, same bytes,
+a learner started (pre-learned) as a run starts it."""
 
 import numpy as np
 import pytest
@@ -15,26 +16,54 @@ def strip_minutes(path):
     return [" ".join(line.split()[:2]) for line in path.read_text().splitlines()]
 
 
-def test_a_testbed_loop_gives_the_cli_ik_run_byte_for_byte(repo, cli, tmp_path):
+@pytest.mark.parametrize("method", ["ik", "lin5"])
+def test_a_testbed_loop_gives_the_cli_run_byte_for_byte(repo, cli, tmp_path, method):
     trials = 60
-    cli("run", "--config", "configs/ik.conf", "--trials", trials, "--seed", 1,
+    cli("run", "--config", f"configs/{method}.conf", "--trials", trials, "--seed", 1,
         "--data", tmp_path, "--quiet", "--no-plot")
-    folder = tmp_path / "ik" / "0"
-    testbed = eyehand.Testbed(config=repo / "configs" / "ik.conf", seed=1)
-    ik = eyehand.Learner("ik")
-    testbed.prelearn(ik)
+    folder = tmp_path / method / "0"
+    testbed = eyehand.Testbed(config=repo / "configs" / f"{method}.conf", seed=1)
+    learner = eyehand.Learner(method)
+    testbed.prelearn(learner)
     recorded = [[] for _ in range(eyehand.RECORDED_STEPS)]
     for trial in range(1, trials + 1):
         testbed.reset()
         while not testbed.done:
-            _reading, _joints, distance, seen = testbed.step(ik.propose(testbed.observation))
+            _reading, _joints, distance, seen = testbed.step(learner.propose(testbed.observation))
             if seen and testbed.steps <= eyehand.RECORDED_STEPS:
                 recorded[testbed.steps - 1].append((trial, distance))
-        testbed.learn(ik)
+        testbed.learn(learner)
     for step in range(eyehand.RECORDED_STEPS):
         expected = strip_minutes(folder / f"{step + 1}step")
         assert step_lines(recorded[step]) == expected, f"{step + 1}step"
-    assert len(recorded[0]) == trials
+    assert len(recorded[0]) > trials // 2, "most trials see the object after their first step"
+    if method == "ik":
+        assert len(recorded[0]) == trials, "ik's first step keeps it in view in every trial"
+
+
+def test_a_testbed_learner_finds_a_camera_turn_as_the_run_does(repo, cli, tmp_path):
+    """Each trial begins for the learner as a run begins it, so its change watch dates the
+    turn and recovers on the same trials, byte for byte."""
+    trials, turn = 300, 250
+    cli("run", "--config", "configs/lin5.conf", "--trials", trials, "--seed", 1,
+        "--set", "merge_strategy=change_detection", "--event", f"rotate:{turn}:90",
+        "--data", tmp_path, "--quiet", "--no-plot")
+    folder = tmp_path / "lin5" / "0"
+    assert (folder / "changes").read_text().split()[1] == str(turn), "the run finds the turn"
+    testbed = eyehand.Testbed(config=repo / "configs" / "lin5.conf", seed=1)
+    learner = eyehand.Learner("lin5", merge_strategy="change_detection")
+    testbed.prelearn(learner)
+    first_step = []
+    for trial in range(1, trials + 1):
+        if trial == turn:
+            testbed.rotate_camera(90.0)
+        testbed.reset()
+        while not testbed.done:
+            _reading, _joints, distance, seen = testbed.step(learner.propose(testbed.observation))
+            if seen and testbed.steps == 1:
+                first_step.append((trial, distance))
+        testbed.learn(learner)
+    assert step_lines(first_step) == strip_minutes(folder / "1step")
 
 
 def test_a_trial_ends_as_the_trial_loop_ends_it():

@@ -103,6 +103,7 @@ pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
         RunError::Urdf(_)
         | RunError::ArmEntry { .. }
         | RunError::Preflight(_)
+        | RunError::OtherMount { .. }
         | RunError::Event { .. } => bad_input(e),
         _ => failed(e),
     })?;

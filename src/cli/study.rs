@@ -180,6 +180,7 @@ fn run_one_cell(folder: &StudyFolder, index: usize, stop: StopRequest) -> Result
             e @ (RunError::Urdf(_)
             | RunError::ArmEntry { .. }
             | RunError::Preflight(_)
+            | RunError::OtherMount { .. }
             | RunError::Event { .. }),
         )) => Err(bad_input(e)),
         Err(e) => Err(failed(e)),

@@ -28,6 +28,7 @@ pub use run::drive::{run, run_learner, run_learner_set_up};
 pub use run::interrupt::StopRequest;
 pub use run::run_options::{RunError, RunOptions, RunResult};
 pub use run::tree_lines::TREE_LINES_FILE;
+pub use run::trial_driver::{begin_learner_trial, start_learning};
 pub use setup::events::{Event, EventError};
 pub use setup::preflight::{
     contact_stopped_moves, preflight, reachable_points, target_poses_in_contact, PreflightError,

@@ -92,6 +92,10 @@ pub struct MethodFacts {
     pub watches_changes: bool,
     /// The entries that make a trial's learning long, named when a trial takes long.
     pub slow_entries: &'static str,
+    /// Its own defaults for entries it shares with other methods, as `(entry, value)` with
+    /// the value as a config file writes it: its best shipped settings, which a run of it
+    /// takes for every such entry its config, `--set`s and flags do not give.
+    pub shared_defaults: &'static [(&'static str, &'static str)],
 }
 
 impl fmt::Display for Method {

@@ -131,7 +131,7 @@ config_entries! {
     /// Physics and servo time step (0.005: a 200 Hz control loop).
     dt: f64 = dynamic().dt, "s", DYNAMIC, Within(1e-5, 0.1);
     /// Rapier's constraint solver iterations: every tick on the rapier engine, on rk4 the
-    /// ticks Rapier steps (a link touching, dry friction).
+    /// ticks Rapier steps (a link touching).
     solver_iterations: usize = dynamic().solver_iterations, "", DYNAMIC, Within(1.0, 100.0);
     /// Rapier steps per tick on the rapier engine, each of dt divided by this.
     rapier_substeps: usize = dynamic().rapier_substeps, "", DYNAMIC, Within(1.0, 100.0);
@@ -172,8 +172,9 @@ config_entries! {
     /// `none` (a relative one is taken from the config file's folder).
     package_paths: PackagePaths = PackagePaths::default(), "", All, Rule::Any;
     /// Where targets lie: r_min,r_max,z_min,z_max of the study's half annulus, or `auto`
-    /// (the same shape fitted to what the arm reaches looking down; what a URDF other than
-    /// the shipped one gets when this is left at its default).
+    /// (the same shape, or where it does not fit one of other proportions, fitted to what
+    /// the arm reaches looking down; what a URDF other than the shipped one gets when this
+    /// is left at its default).
     reach_space: ReachSetting = ReachSetting::Given([46.0, 93.0, 0.0, 52.0]), "cm", All, Rule::Any;
     /// Rays per image side: the 512×512 image is sampled by an N×N grid of rays.
     raycast_resolution: usize = 256, "", RAYCAST, Within(16.0, 4096.0);
@@ -259,8 +260,7 @@ config_entries! {
     change_recovery: ChangeRecovery = change().recovery, "", WATCHING, Rule::Any;
     /// change_recovery correct: patterns since a change its correction of the readings is
     /// fitted from before it is fixed, once a refit no longer moves it, and the tree learns
-    /// again (at least 30, the patterns from which queries go through it; lin8's config sets
-    /// 600).
+    /// again (at least 30, the patterns from which queries go through it).
     change_fit_patterns: usize = change().fit_patterns, "", WATCHING, AtLeast(30.0);
     /// change_recovery correct: stored patterns a sub-box needs before it is split off once
     /// a correction is fixed (the changed robot works where the tree is still coarse; never

@@ -1,6 +1,7 @@
 //! The config file (the study's appendix A.2 format): `name value` lines, `#` comments and
 //! blank lines, in any order. A file carries only what it changes: an entry it does not
-//! give keeps its declared default (`entries.rs`). An unknown name, a name given twice (but
+//! give keeps its declared default (`entries.rs`), or its method's own
+//! (`method_defaults.rs`). An unknown name, a name given twice (but
 //! the repeated `obstacle`), a value of the wrong kind (a real number for an integer), a
 //! value out of its sane range or against another entry, or one that would need more
 //! memory than the machine has stops with `file:line: reason`.
@@ -12,6 +13,7 @@ mod defaults_text;
 mod entries;
 mod error;
 mod memory_estimate;
+mod method_defaults;
 mod package_paths;
 mod rule;
 mod scope;
@@ -25,6 +27,7 @@ pub use defaults_text::{defaults_text, docs_table};
 pub use entries::{declarations, Config, ENTRY_NAMES, REPEATED_ENTRY_NAMES};
 pub(crate) use error::{shown, SHOWN_CHARS};
 pub use error::{ConfigError, ConfigErrorKind, ValueError};
+use method_defaults::method_default;
 pub use package_paths::PackagePaths;
 pub use rule::Rule;
 pub use scope::Scope;
@@ -90,7 +93,7 @@ impl Config {
     }
 
     /// [`parse`](Config::parse), with where each value came from: a line of `file`, or
-    /// (not recorded) the entry's default.
+    /// (not recorded) the default of the method or the entry.
     pub fn read(text: &str, file: &str) -> Result<(Config, Sources), ConfigError> {
         let error = |line, kind| ConfigError {
             file: file.to_string(),
@@ -130,6 +133,13 @@ impl Config {
             config.package_paths.relative_to(folder);
             config.urdf.relative_to(folder);
         }
+        config
+            .take_method_defaults(&sources)
+            .map_err(|kind| ConfigError {
+                file: file.to_string(),
+                line: None,
+                kind,
+            })?;
         config.check().map_err(|kind| {
             let (line, kind) = located(kind, &sources);
             ConfigError {
@@ -163,10 +173,11 @@ impl Config {
     }
 
     /// The config text with where each value came from after it, as a comment (`default`,
-    /// `file:line`, `--set`, a flag), and `unused` beside the entries eyehand does not
-    /// implement: the `info` file's config section and `check-config --explain`.
+    /// `ffn's default`, `file:line`, `--set`, a flag), and `unused` beside the entries
+    /// eyehand does not implement: the `info` file's config section and `check-config
+    /// --explain`.
     pub fn explained_text(&self, sources: &Sources) -> String {
-        let defaults = Config::defaults().entries();
+        let defaults = self.method_default_entries();
         let unused = unused_entries();
         let width = self.entries().iter().map(|(n, v)| n.len() + v.len()).max();
         let width = width.unwrap_or(0) + 1;
@@ -180,8 +191,7 @@ impl Config {
             } else {
                 sources.of(name).cloned()
             };
-            let source =
-                source.unwrap_or_else(|| unrecorded(defaults.contains(&(name, value.clone()))));
+            let source = source.unwrap_or_else(|| self.unrecorded(&defaults, name, &value));
             let pad = width - name.len() - value.len();
             let note = if unused.contains(&name) {
                 ", unused"
@@ -194,16 +204,35 @@ impl Config {
     }
 
     /// Where the value of entry `name` came from: as `sources` recorded it, else its
-    /// default when it holds it, else the program that built the config.
+    /// method's default or its own when it holds it, else the program that built the
+    /// config.
     pub fn source_of(&self, name: &str, sources: &Sources) -> Source {
         sources.of(name).cloned().unwrap_or_else(|| {
             let value = self.entries().into_iter().find(|(n, _)| *n == name);
-            let default = Config::defaults()
-                .entries()
-                .into_iter()
-                .find(|(n, _)| *n == name);
-            unrecorded(value == default)
+            let value = value.map(|(_, v)| v).unwrap_or_default();
+            self.unrecorded(&self.method_default_entries(), name, &value)
         })
+    }
+
+    /// Every entry at the default of this config's method ([`Config::defaults_for`]), as
+    /// [`entries`](Config::entries) writes them; the entries' own defaults should a method's
+    /// not assign (which `tests/method_registry.rs` rules out).
+    fn method_default_entries(&self) -> Vec<(&'static str, String)> {
+        Config::defaults_for(self.method)
+            .unwrap_or_else(|_| Config::defaults())
+            .entries()
+    }
+
+    /// The source of entry `name`'s `value` when no file, `--set` or flag gave it: its
+    /// method's default or its own when it equals it (`defaults`, from
+    /// [`method_default_entries`](Config::method_default_entries)), else the program.
+    fn unrecorded(&self, defaults: &[(&'static str, String)], name: &str, value: &str) -> Source {
+        let at_default = defaults.iter().any(|(n, v)| *n == name && v == value);
+        match (at_default, method_default(self.method, name)) {
+            (true, Some(_)) => Source::MethodDefault(self.method),
+            (true, None) => Source::Default,
+            (false, _) => Source::Program,
+        }
     }
 
     /// Input boundaries (low, high) of dimension `i` (0–7).
@@ -235,15 +264,6 @@ impl Config {
 /// The frame rate (frames/s) of the frames taken during moves when `learn_during_moves` is 1
 /// and `camera_fps` gives none: a common camera's 30.
 const MOVE_FRAMES_FPS: f64 = 30.0;
-
-/// The source of a value no file, `--set` or flag gave: its default, or the program.
-fn unrecorded(is_default: bool) -> Source {
-    if is_default {
-        Source::Default
-    } else {
-        Source::Program
-    }
-}
 
 /// The line of the file to blame for `kind`: its entry's; for an entry the file does not
 /// hold, broken against another entry the file holds, that entry's line, the value said to

@@ -1,6 +1,7 @@
-//! Where each value of a config came from: its default, a line of a config file, a `--set`
-//! or a flag. `info` and `check-config --explain` print it beside the value.
+//! Where each value of a config came from: its default (the entry's, or its method's), a
+//! line of a config file, a `--set` or a flag. `info` and `check-config --explain` print it beside the value.
 
+use crate::learn::Method;
 use std::fmt;
 
 /// Where one value came from.
@@ -8,6 +9,8 @@ use std::fmt;
 pub enum Source {
     /// The entry's declared default.
     Default,
+    /// The config's method's own default for an entry it shares with other methods.
+    MethodDefault(Method),
     /// A line of a config file.
     Line {
         /// The file as the user named it.
@@ -30,6 +33,7 @@ impl fmt::Display for Source {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Source::Default => f.write_str("default"),
+            Source::MethodDefault(method) => write!(f, "{method}'s default"),
             Source::Line { file, line } => write!(f, "{file}:{line}"),
             Source::Set => f.write_str("--set"),
             Source::Flag(flag) => f.write_str(flag),

@@ -4,6 +4,7 @@
 use crate::experiment::output::summary::RunSummary;
 use crate::experiment::plot::PlotError;
 use crate::experiment::run::interrupt::StopRequest;
+use crate::experiment::setup::OtherMount;
 use crate::experiment::verdict::failures::FailureTally;
 use crate::experiment::{Config, Event, PreflightError, RunFolderError, RunSetup, Sources};
 use crate::learn::LearnError;
@@ -97,6 +98,15 @@ pub enum RunError {
     /// The config, an event or the arm fails the checks made before the run starts.
     #[error(transparent)]
     Preflight(#[from] PreflightError),
+    /// The camera, looking along its link's z axis (`camera_mount` left at its default),
+    /// is refused, and looking along another axis of the link it would pass.
+    #[error("{refusal}; {other}")]
+    OtherMount {
+        /// Why the arm is refused as its camera is mounted.
+        refusal: Box<RunError>,
+        /// The mount with which it passes.
+        other: OtherMount,
+    },
     /// No run folder could be made.
     #[error(transparent)]
     Folder(#[from] RunFolderError),

@@ -2,12 +2,35 @@
 //! with the events due before it, the learner told, pre-learning repeated when it asks, the
 //! trial run and learned, and the merges and changes it raised collected. A run, its replay
 //! (`eyehand show`, `eyehand report`) and `check-config`'s probe all go through it, so a
-//! replay reproduces its run exactly.
+//! replay reproduces its run exactly; the Python `Testbed`, whose trials Python steps
+//! itself, starts its learners and begins their trials through the same
+//! [`start_learning`] and [`begin_learner_trial`].
 
 use super::run_options::RunError;
 use crate::control::{TrialLoop, TrialObserver, TrialOutcome};
 use crate::experiment::Event;
-use crate::learn::{Learner, ModelEvent};
+use crate::learn::{LearnError, Learner, ModelEvent};
+
+/// Starts `learner` on `trials` as every run does before its first trial: the learner told
+/// trial 0 (its pre-learning) begins, then the pre-learning moves made and learned.
+pub fn start_learning(trials: &mut TrialLoop, learner: &mut dyn Learner) -> Result<(), LearnError> {
+    learner.start_trial(0);
+    trials.prelearn(learner)
+}
+
+/// Begins trial `trial` for `learner` as every run does once the trial's events are in:
+/// the learner told, then the pre-learning moves made and learned again if it asks.
+pub fn begin_learner_trial(
+    trials: &mut TrialLoop,
+    learner: &mut dyn Learner,
+    trial: usize,
+) -> Result<(), LearnError> {
+    learner.start_trial(trial);
+    if learner.take_relearn_request() {
+        trials.prelearn(learner)?;
+    }
+    Ok(())
+}
 
 /// A trial loop and a learner driven trial by trial through a run's events.
 #[derive(Debug)]
@@ -19,15 +42,14 @@ pub(crate) struct TrialDriver {
 }
 
 impl TrialDriver {
-    /// Starts `learner` on `trials` (trial 0: its pre-learning); `events` are applied each
-    /// before its trial.
+    /// Starts `learner` on `trials` ([`start_learning`]); `events` are applied each before
+    /// its trial.
     pub(crate) fn start(
         mut trials: TrialLoop,
         mut learner: Box<dyn Learner>,
         events: Vec<Event>,
     ) -> Result<TrialDriver, RunError> {
-        learner.start_trial(0);
-        trials.prelearn(learner.as_mut())?;
+        start_learning(&mut trials, learner.as_mut())?;
         Ok(TrialDriver {
             trials,
             learner,
@@ -55,10 +77,7 @@ impl TrialDriver {
                 })?;
         }
         let learner = self.learner.as_mut();
-        learner.start_trial(trial);
-        if learner.take_relearn_request() {
-            self.trials.prelearn(learner)?;
-        }
+        begin_learner_trial(&mut self.trials, learner, trial)?;
         let outcome = self.trials.run_trial_observed(learner, observer)?;
         self.model_events.clear();
         learner.drain_events(&mut self.model_events);

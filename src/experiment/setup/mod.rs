@@ -4,6 +4,7 @@
 mod arm;
 pub(super) mod events;
 mod learners;
+mod other_mount;
 pub(super) mod preflight;
 pub(super) mod run_request;
 pub(super) mod run_setup;
@@ -18,6 +19,7 @@ pub use learners::{
     lin8_settings, lwpr_settings, mlp_settings, nnw_settings, pattern_settings,
     single_model_watch_settings,
 };
+pub use other_mount::{other_mount, refused_where_it_looks, refuses_where_it_looks, OtherMount};
 
 use super::{CameraKind, Config, ObstacleBox, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};

@@ -36,8 +36,9 @@ pub enum PreflightError {
         /// Why the robot cannot undergo it.
         source: RobotError,
     },
-    /// `reach_space auto` and no part of the study's shape fits what the arm reaches.
-    #[error("reach_space auto: no half annulus of the study's shape fits inside what this arm reaches with the camera looking down above the floor: {0}")]
+    /// `reach_space auto` and no half annulus, of the study's shape or another, fits what
+    /// the arm reaches.
+    #[error("reach_space auto: no half annulus, of the study's shape or of others, fits inside what this arm reaches with the camera looking down above the floor: {0}")]
     NoReachSpace(ReachFitFailure),
     /// The lowest targets' bottom lies under the floor.
     #[error("floor_z {floor_cm} cm lies above the lowest targets' bottom ({bottom_cm:.2} cm: reach_space's lowest camera height less the camera's standoff and the object's radius): those targets would be under the floor")]

@@ -1,6 +1,7 @@
 //! A typed description of one run — what `eyehand run` parses its flags into and what a
 //! comparison or sweep stores for each of its cells — and how it becomes [`RunOptions`]:
-//! the config file, then every `--set`, then the flags, validated once on the final config.
+//! the config file, then every `--set`, then the flags, then the method's own defaults for
+//! what none of them gave, validated once on the final config.
 
 use crate::experiment::{
     entry_name, shown, CameraKind, Config, ConfigError, ConfigErrorKind, Event, RunOptions,
@@ -158,10 +159,12 @@ impl RunRequest {
         config.camera = self.camera.unwrap_or(config.camera);
         config.seed = self.seed.unwrap_or(config.seed);
         config.trials = self.trials.unwrap_or(config.trials);
-        config.check().map_err(|kind| RequestError::Combined {
+        let combined = |kind| RequestError::Combined {
             config: name.clone(),
             kind,
-        })?;
+        };
+        config.take_method_defaults(&sources).map_err(combined)?;
+        config.check().map_err(combined)?;
         Ok((config, name, sources))
     }
 
@@ -293,6 +296,16 @@ mod tests {
             };
             assert_eq!(same.config().unwrap().0, base, "{}", path.display());
         }
+    }
+
+    #[test]
+    fn learning_during_moves_alone_takes_frames_at_the_stated_default_rate() {
+        let (config, _) = request(&[("learn_during_moves", "1")]).config().unwrap();
+        assert_eq!((config.camera_fps, config.camera_frame_rate()), (0.0, 30.0));
+        let (given, _) = request(&[("learn_during_moves", "1"), ("camera_fps", "50")])
+            .config()
+            .unwrap();
+        assert_eq!(given.camera_frame_rate(), 50.0);
     }
 
     #[test]

@@ -8,7 +8,7 @@ use crate::control::TrialLoop;
 use crate::experiment::setup::preflight::preflight;
 use crate::experiment::setup::{
     arm_entry, build_camera, build_learner, build_simulator, fitted_boundaries, load_arm,
-    trial_settings,
+    other_mount, refused_where_it_looks, trial_settings,
 };
 use crate::experiment::{
     Config, Event, PreflightError, ReachSetting, RunError, Source, Sources, UrdfFile,
@@ -106,6 +106,30 @@ impl RunSetup {
     /// `reach_space` (to `auto`), the boundaries of θ2 and θ3 ([`fitted_boundaries`]) and
     /// the upper boundary of cz (scaled by the reach space's height).
     pub fn new(
+        config: Config,
+        urdf: Option<&Path>,
+        events: Vec<Event>,
+        sources: &Sources,
+    ) -> Result<RunSetup, RunError> {
+        RunSetup::checked(config.clone(), urdf, events.clone(), sources).map_err(|refusal| {
+            let urdf = urdf.or(config.urdf.path());
+            let default_mount = config.source_of("camera_mount", sources) == Source::Default;
+            if !(urdf.is_some() && default_mount && refused_where_it_looks(&refusal)) {
+                return refusal;
+            }
+            match other_mount(&config, urdf, &events, sources) {
+                Some(other) => RunError::OtherMount {
+                    refusal: Box::new(refusal),
+                    other,
+                },
+                None => refusal,
+            }
+        })
+    }
+
+    /// [`new`](RunSetup::new) without looking for another camera mount when the camera is
+    /// refused.
+    pub(super) fn checked(
         mut config: Config,
         urdf: Option<&Path>,
         events: Vec<Event>,

@@ -158,4 +158,7 @@ pub(crate) const FFN_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     slow_entries: "ffn_cg_iterations, ffn_window, ffn_hidden_units",
+    // One net for the whole space learns slowly: its results are measured over 20,000
+    // trials.
+    shared_defaults: &[("trials", "20000")],
 };

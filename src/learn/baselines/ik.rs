@@ -72,4 +72,6 @@ pub(crate) const IK_FACTS: MethodFacts = MethodFacts {
     bounded: false,
     watches_changes: false,
     slow_entries: "feedback_steps, bin_size, max_stored_patterns",
+    // It learns nothing: 1,000 trials measure it.
+    shared_defaults: &[("trials", "1000")],
 };

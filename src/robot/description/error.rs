@@ -344,8 +344,8 @@ pub enum DescriptionErrorKind {
     /// axis in front of it when it looks down.
     #[error(
         "the camera on `{camera_link}` looks back into the arm: joint `{joint}` lies {distance_cm:.1} cm \
-         in front of it on its optical axis (the link's z axis) when it looks down; turn it to \
-         look away from the arm with camera_mount (0,0,0,180,0,0 looks along the link's -z)"
+         in front of it on its optical axis (the link's z axis) when it looks down; say with \
+         camera_mount how it is mounted to look away from the arm"
     )]
     CameraFacesArm {
         /// The camera link.

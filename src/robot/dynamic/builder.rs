@@ -44,7 +44,8 @@ pub(super) struct Arm {
     pub(super) inertials: Vec<Inertial>,
     /// Whether the joints stop at their URDF limits.
     pub(super) limited: bool,
-    /// Whether a joint has dry friction: Rapier then steps every tick (integrator.rs).
+    /// Whether a joint has dry friction: the servos feed it forward and the `rk4` engine
+    /// solves it with the joints' equations (dry_friction.rs).
     pub(super) dry_friction: bool,
     /// How deep (m) the deepest contact was at the last tick; negative infinity for none:
     /// Rapier steps the tick after a touch (0 or deeper).
@@ -126,7 +127,7 @@ impl Arm {
         if let Some(mb) = world.multibody_joints.get_multibody_mut(multibody) {
             // Rapier gives every joint a damping of its own; the URDF's is the one to use,
             // with its dry friction (a torque bound on a zero-speed constraint, on the
-            // ticks Rapier steps).
+            // ticks Rapier steps: every tick on `rapier`, near a contact on `rk4`).
             mb.damping_mut().fill(0.0);
             mb.frictions_mut().fill(0.0);
             for (joint, &id) in model.joints().iter().zip(&link_ids) {

@@ -217,12 +217,6 @@ fn check_pose(model: &ArmModel, q: &Joints, limits: bool) -> Result<(), RobotErr
 mod tests {
     use super::*;
 
-    /// Solver iterations per step for the friction test: Rapier solves dry friction as a
-    /// bounded zero-speed constraint among the others, and with one iteration (the
-    /// simulator's default) a joint held by friction beside other held joints creeps
-    /// (0.0096 rad in 0.2 s here, a twentieth of the free fall); with 64 it creeps 1.5e-4.
-    const ITERATIONS: usize = 64;
-
     /// The shoulder's travel (rad) in 0.2 s of a passive OSCAR-6 released at rest at `q`,
     /// its shoulder's dry friction `shoulder` (N·m), every other joint held by a friction
     /// far above any torque it meets.
@@ -240,10 +234,7 @@ mod tests {
             oscar6.links().to_vec(),
         )
         .unwrap();
-        let settings = DynamicSettings {
-            solver_iterations: ITERATIONS,
-            ..DynamicSettings::default()
-        };
+        let settings = DynamicSettings::default();
         let mut arm = FreeArm::new(model, q, settings, Drive::Passive, false, false).unwrap();
         while arm.time() < 0.2 - 1e-9 {
             arm.step();
@@ -303,12 +294,13 @@ mod tests {
         assert!(weight > 1.0, "{weight}");
         let free = shoulder_travel(&q, 0.0);
         assert!(free.abs() > 0.1, "{free}");
-        // Above the threshold the shoulder sticks (but for the solver's creep, the same
-        // whatever the bound); 2% below it, it slips with 2% of the free acceleration;
-        // half of it halves the acceleration (the travel from rest is ½·a·t²).
+        // Above the threshold the shoulder sticks; 2% below it, it slips with 2% of the
+        // free acceleration; half of it halves the acceleration (the travel from rest is
+        // ½·a·t²).
         let stuck = shoulder_travel(&q, 1.02 * weight);
-        assert!((stuck / free).abs() < 1e-3, "{stuck} {free}");
-        assert_eq!(shoulder_travel(&q, 2.0 * weight), stuck);
+        assert!((stuck / free).abs() < 1e-6, "{stuck} {free}");
+        let stuck_harder = shoulder_travel(&q, 2.0 * weight);
+        assert!((stuck_harder / free).abs() < 1e-6, "{stuck_harder} {free}");
         let slip = shoulder_travel(&q, 0.98 * weight) / free;
         assert!((slip - 0.02).abs() < 0.002, "{slip}");
         let half = shoulder_travel(&q, 0.5 * weight) / free;

@@ -3,8 +3,8 @@
 //! fourth-order Runge–Kutta scheme under joint torques held over it (the servos', or none),
 //! the joint limits as stops; the bodies are then placed where the model's kinematics puts
 //! them (for the camera), and Rapier looks for contacts where a bounding box comes near
-//! something (contacts.rs). Where a joint has dry friction, Rapier steps the tick itself
-//! under the same torques (to first order: its friction constraints act there); while a
+//! something (contacts.rs). Where a joint has dry friction, the tick is integrated again
+//! under the friction the joints' equations give it (dry_friction.rs); while a
 //! link is near something, Rapier steps it in sub-ticks of at most 1 ms with at least 4
 //! solver iterations, the servo law run at each (its contact constraints act there), the
 //! servos holding the arm where it is for the rest of the tick once a contact holds it
@@ -23,6 +23,9 @@ const STABLE_RATE_STEP: f64 = 1.5;
 /// The longest step (s) Rapier takes while a link is near something: a tick is cut into
 /// sub-ticks no longer than this.
 const CONTACT_STEP: f64 = 1e-3;
+/// How many times a tick with dry friction is integrated again under the friction found
+/// from the last pass's end (integrator.rs `braked`).
+const FRICTION_PASSES: usize = 2;
 /// Rapier's constraint solver iterations, at least, while a link is near something: with
 /// one, a struck link's contacts and the servos holding the arm against them do not
 /// agree, and the arm chatters where it rests on something.
@@ -31,6 +34,15 @@ pub(super) const CONTACT_ITERATIONS: usize = 4;
 /// Rapier steps in a tick of `dt` while a link is near something.
 pub(super) fn contact_substeps(dt: f64) -> usize {
     (dt / CONTACT_STEP).ceil().max(1.0) as usize
+}
+
+/// The Runge–Kutta steps a tick of `dt` takes from equations of motion `start`: one, or as
+/// many as the joints' damping needs to stay stable (a damped light link relaxes faster
+/// than a tick: its rate d/I is bounded by the damping's share of M⁻¹).
+fn runge_kutta_steps(model: &ArmModel, start: &JointSpace, dt: f64) -> usize {
+    (start.damping_rate(model) * dt / STABLE_RATE_STEP)
+        .ceil()
+        .max(1.0) as usize
 }
 
 impl Arm {
@@ -67,8 +79,15 @@ impl Arm {
             _ => Joints::zeros(self.dof),
         };
         let integrated = match space {
-            Some(space) if !self.dry_friction && self.depth < 0.0 => {
-                self.integrate(model, space, &q, &v, &tau, settings.dt)
+            Some(space) if self.depth < 0.0 => {
+                let start = self.dry_friction.then(|| space.clone());
+                let free = self.integrate(model, space, &q, &v, &tau, settings.dt);
+                match (free, start) {
+                    (Some(free), Some(start)) => {
+                        self.braked(model, start, (&q, &v), &tau, free, settings.dt)
+                    }
+                    (free, _) => free,
+                }
             }
             _ => None,
         };
@@ -154,12 +173,10 @@ impl Arm {
         tau: &Joints,
         dt: f64,
     ) -> Option<(Joints, Joints)> {
-        let steps = (start.damping_rate(model) * dt / STABLE_RATE_STEP)
-            .ceil()
-            .max(1.0);
-        let h = dt / steps;
+        let steps = runge_kutta_steps(model, &start, dt);
+        let h = dt / steps as f64;
         let mut state = self.runge_kutta(model, start, q, v, tau, h)?;
-        for _ in 1..steps as usize {
+        for _ in 1..steps {
             let space = self.joint_space(model, &state.0, &state.1)?;
             state = self.runge_kutta(model, space, &state.0, &state.1, tau, h)?;
         }
@@ -194,6 +211,32 @@ impl Arm {
         let v_end = v + (a1 + 2.0 * a2 + 2.0 * a3 + a4) * sixth;
         let finite = q_end.iter().chain(v_end.iter()).all(|x| x.is_finite());
         finite.then(|| self.stopped_at_limits(model, q_end, v_end))
+    }
+
+    /// The tick of `dt` from angles and speeds `from` under torques `tau`, whose equations
+    /// of motion are `start`, with the joints' dry friction: `free` is where it ends
+    /// without. The friction is found from the end's speeds (dry_friction.rs) and the tick
+    /// integrated again under it, [`FRICTION_PASSES`] times: each pass corrects the last
+    /// one's friction for what the first-order response missed (the free motion's own
+    /// Coriolis torques, say), so that a joint the friction holds stays put.
+    fn braked(
+        &self,
+        model: &ArmModel,
+        start: JointSpace,
+        from: (&Joints, &Joints),
+        tau: &Joints,
+        free: (Joints, Joints),
+        dt: f64,
+    ) -> Option<(Joints, Joints)> {
+        let steps = runge_kutta_steps(model, &start, dt);
+        let mut friction = Joints::zeros(self.dof);
+        let mut state = free;
+        for _ in 0..FRICTION_PASSES {
+            friction = start.dry_friction(model, &friction, &state.1, dt, steps);
+            let (q, v) = from;
+            state = self.integrate(model, start.clone(), q, v, &(*tau + friction), dt)?;
+        }
+        Some(state)
     }
 
     /// `q`, `v` with every joint past a limit (while the limits apply) put on it, its

@@ -10,7 +10,7 @@ use crate::robot::{ArmModel, Joints, MAX_JOINTS};
 use nalgebra::{SMatrix, Vector3};
 
 /// A joint-space matrix; only its first rows and columns, one per joint, are used.
-type Square = SMatrix<f64, MAX_JOINTS, MAX_JOINTS>;
+pub(super) type Square = SMatrix<f64, MAX_JOINTS, MAX_JOINTS>;
 
 /// The arm's equations of motion at one state (angles and speeds).
 #[derive(Debug, Clone)]
@@ -40,8 +40,13 @@ impl JointSpace {
             .sum()
     }
 
+    /// How many joints.
+    pub(super) fn dof(&self) -> usize {
+        self.bias.len()
+    }
+
     /// M⁻¹·`x`, from the factor.
-    fn solve(&self, mut x: Joints) -> Joints {
+    pub(super) fn solve(&self, mut x: Joints) -> Joints {
         let n = x.len();
         let l = &self.factor;
         for i in 0..n {

@@ -9,6 +9,7 @@ mod builder;
 mod colliders;
 mod contacts;
 mod convert;
+mod dry_friction;
 mod energy;
 mod faults;
 mod free;

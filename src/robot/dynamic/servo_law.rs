@@ -8,6 +8,7 @@
 //! (tools/mujoco_reference.py).
 
 use super::builder::Arm;
+use super::dry_friction::dry_friction_torques;
 use super::joint_space::JointSpace;
 use super::settings::DynamicSettings;
 use crate::robot::{ArmModel, Joints};
@@ -92,12 +93,16 @@ impl Arm {
         v: &Joints,
         settings: &DynamicSettings,
     ) -> Joints {
-        let bias = self.placement(model, &set_point.angles).driving_torques(
+        let mut bias = self.placement(model, &set_point.angles).driving_torques(
             model,
             &set_point.speeds,
             &Joints::zeros(self.dof),
         );
-        let servo = space.inertial_torques(&settings.servo_accelerations(set_point, q, v));
+        let wanted = settings.servo_accelerations(set_point, q, v);
+        if self.dry_friction {
+            bias = bias + dry_friction_torques(model, &(*v + wanted * settings.dt));
+        }
+        let servo = space.inertial_torques(&wanted);
         let joints = model.joints();
         let held = Joints::from_fn(self.dof, |i| {
             bias[i].clamp(-joints[i].effort, joints[i].effort)

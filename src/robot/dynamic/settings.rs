@@ -32,8 +32,8 @@ pub struct DynamicSettings {
     /// Physics and control time step (s); default 0.005 (200 Hz).
     pub dt: f64,
     /// Rapier's constraint solver iterations (each a sub-step of its step): on the `rapier`
-    /// engine every tick, on `rk4` the ticks Rapier steps (a link near something, dry
-    /// friction); at least 4 while a link is near something; default 1.
+    /// engine every tick, on `rk4` the ticks Rapier steps (a link near something); at
+    /// least 4 while a link is near something; default 1.
     pub solver_iterations: usize,
     /// Rapier steps per tick on the `rapier` engine, each of `dt` / this; default 1.
     pub rapier_substeps: usize,

@@ -20,11 +20,12 @@
 //!   carries the arm as a model-based industrial controller does; all bounded by the
 //!   joints' URDF efforts and held over the tick. Each tick integrates the arm's
 //!   joint-space equations (joint_space.rs) by one classical fourth-order Runge–Kutta step
-//!   (integrator.rs); Rapier places the bodies and looks for contacts. While a link
-//!   is near something, or when a joint has dry friction, Rapier steps the tick itself
-//!   under the same torques, its contact and friction constraints acting (first order,
-//!   `solver_iterations` iterations; near a contact in 1 ms sub-ticks with at least 4,
-//!   Rapier's contacts found anew at every step). `rapier` (motors.rs): Rapier's multibody integrator
+//!   (integrator.rs); Rapier places the bodies and looks for contacts. The joints' dry
+//!   friction is fed forward by the servos in the direction they turn each joint and
+//!   solved with the joints' equations over the tick (dry_friction.rs). While a link
+//!   is near something, Rapier steps the tick itself under the same torques, its contact
+//!   and friction constraints acting (first order, in 1 ms sub-ticks with at least 4
+//!   `solver_iterations`, Rapier's contacts found anew at every step). `rapier` (motors.rs): Rapier's multibody integrator
 //!   steps every tick (`rapier_substeps` steps of it), each joint driven by a Rapier joint
 //!   motor toward the set-point with the same gains, the set-point's inverse dynamics fed
 //!   forward as joint torques; Rapier's joint limits and contacts act.

@@ -1,14 +1,14 @@
 //! The reach space fitted to an arm: the study's half annulus, scaled as large as it fits
 //! inside the camera positions the arm reaches looking down — wrist solution inside its
 //! limits, every link clear of the floor and of the arm's other links, on one branch of
-//! the arm's solutions — with a margin.
+//! the arm's solutions — with a margin; where no such half annulus fits, the largest of
+//! other proportions that does.
 
 use crate::robot::contact::contact_free::{ContactRule, Touch};
 use crate::robot::model::{Branch, Centre, PoseGrid};
 use crate::robot::{ArmModel, ReachSpace};
 
-/// Grid cell of the reached (r, z) set (m).
-const CELL: f64 = 0.01;
+use super::grid::{Grid, CELL};
 /// Learned-joint steps per joint when sampling the shoulder and elbow.
 const STEPS: usize = 240;
 /// The longest diagonal (m) of a square of neighbouring samples that counts as reached
@@ -57,7 +57,7 @@ pub struct ReachFitFailure {
     pub below_floor: usize,
     /// Poses in which two links that may touch are less than [`CONTACT_MARGIN`](crate::robot::CONTACT_MARGIN) apart.
     pub in_contact: usize,
-    /// Poses left, in which no half annulus of the study's shape fits.
+    /// Poses left, in which no half annulus fits.
     pub usable: usize,
 }
 
@@ -70,8 +70,9 @@ impl std::fmt::Display for ReachFitFailure {
              a link was at the floor at {:.0}%, the links touched each other at {:.0}% \
              (closer than 1 cm counts; the shoulder and elbow were sampled 10° inside their \
              limits) and {:.0}% lay on other branches of the arm's solutions than the \
-             largest; no half annulus of the study's shape reaching at least a quarter as far \
-             as the arm fits in the {} usable ones",
+             largest; no half annulus fits in the {} usable ones (of the study's shape, \
+             reaching at least a quarter as far as the arm; of others, neither side over four \
+             times the other, as large in area)",
             self.sampled,
             share(self.no_wrist),
             share(self.below_floor),
@@ -79,76 +80,6 @@ impl std::fmt::Display for ReachFitFailure {
             share(self.other_branch),
             self.usable
         )
-    }
-}
-
-/// The reached (r, z) cells: `rows` of `cols`, row 0 at `z0`, column 0 at r = 0.
-struct Grid {
-    z0: f64,
-    rows: usize,
-    cols: usize,
-    /// Prefix sums of reached cells: `sums[(row) * (cols + 1) + col]` counts rows < row,
-    /// cols < col.
-    sums: Vec<u32>,
-    reached: usize,
-}
-
-impl Grid {
-    /// The cells the sampled poses reach: each cell holding a sample, and each cell whose
-    /// centre lies in a triangle of neighbouring samples (the reached set between them).
-    fn new(samples: &Samples) -> Option<Grid> {
-        let points = || samples.centres.iter().flatten().map(|c| c.point);
-        let z_low = points().map(|p| p.1).fold(f64::INFINITY, f64::min);
-        let z_high = points().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
-        let r_high = points().map(|p| p.0).fold(0.0, f64::max);
-        if !(z_low.is_finite() && z_high.is_finite()) {
-            return None;
-        }
-        let rows = ((z_high - z_low) / CELL) as usize + 1;
-        let cols = (r_high / CELL) as usize + 1;
-        let mut hit = vec![false; rows * cols];
-        let cell = |(r, z): (f64, f64)| ((z - z_low) / CELL) as usize * cols + (r / CELL) as usize;
-        for point in points() {
-            hit[cell(point)] = true;
-        }
-        for triangle in samples.triangles() {
-            fill(&mut hit, (z_low, cols), &triangle);
-        }
-        let mut sums = vec![0u32; (rows + 1) * (cols + 1)];
-        for row in 0..rows {
-            for col in 0..cols {
-                let at = |r: usize, c: usize| sums[r * (cols + 1) + c];
-                sums[(row + 1) * (cols + 1) + col + 1] = at(row, col + 1) + at(row + 1, col)
-                    - at(row, col)
-                    + u32::from(hit[row * cols + col]);
-            }
-        }
-        let reached = hit.iter().filter(|h| **h).count();
-        Some(Grid {
-            z0: z_low,
-            rows,
-            cols,
-            sums,
-            reached,
-        })
-    }
-
-    /// Reached cells in rows `r0..r1`, columns `c0..c1`.
-    fn count(&self, (r0, r1): (usize, usize), (c0, c1): (usize, usize)) -> u32 {
-        let at = |r: usize, c: usize| self.sums[r * (self.cols + 1) + c];
-        at(r1, c1) + at(r0, c0) - at(r0, c1) - at(r1, c0)
-    }
-
-    /// True when every cell meeting the box r_min..r_max, z_min..z_max is reached.
-    fn covers(&self, r: (f64, f64), z: (f64, f64)) -> bool {
-        let col = |v: f64| (v / CELL).floor();
-        let row = |v: f64| ((v - self.z0) / CELL).floor();
-        let (c0, c1, r0, r1) = (col(r.0), col(r.1) + 1.0, row(z.0), row(z.1) + 1.0);
-        if c0 < 0.0 || r0 < 0.0 || c1 > self.cols as f64 || r1 > self.rows as f64 {
-            return false;
-        }
-        let (c0, c1, r0, r1) = (c0 as usize, c1 as usize, r0 as usize, r1 as usize);
-        self.count((r0, r1), (c0, c1)) as usize == (r1 - r0) * (c1 - c0)
     }
 }
 
@@ -180,10 +111,14 @@ impl ReachSpace {
         let largest = branches.first().map_or(0, Vec::len);
         tally.usable = largest;
         tally.other_branch = free_poses - largest;
-        let best = branches.iter().take(MAX_BRANCHES).find_map(|cells| {
+        let tried = || branches.iter().take(MAX_BRANCHES);
+        let fit_on = |cells, shape| {
             let grid = Grid::new(&on(cells))?;
-            Some((fit_in(&grid, floor_z, below)?, cells))
-        });
+            Some((fit_in(&grid, floor_z, below, shape)?, cells))
+        };
+        let best = tried()
+            .find_map(|cells| fit_on(cells, Shape::Study))
+            .or_else(|| tried().find_map(|cells| fit_on(cells, Shape::Any)));
         let Some(((space, area_share), cells)) = best else {
             return Err(tally);
         };
@@ -202,28 +137,45 @@ impl ReachSpace {
     }
 }
 
-/// The largest half annulus of the study's shape in `grid` (see [`ReachSpace::fit`]), and
-/// the share of the reached cells inside its box.
-fn fit_in(grid: &Grid, floor_z: f64, below: f64) -> Option<(ReachSpace, f64)> {
+/// The proportions a fitted half annulus may have.
+#[derive(Debug, Clone, Copy)]
+enum Shape {
+    /// The study's (r_max − r_min : z_max − z_min = 47 : 52), scaled.
+    Study,
+    /// Any, each side at least a quarter of the other, no smaller in (r, z) area than the
+    /// study's shape at the smallest scale tried ([`MIN_SCALE_SHARE`]).
+    Any,
+}
+
+/// The largest half annulus of `shape` in `grid` (see [`ReachSpace::fit`]), and the share
+/// of the reached cells inside its box.
+fn fit_in(grid: &Grid, floor_z: f64, below: f64, shape: Shape) -> Option<(ReachSpace, f64)> {
     let study = ReachSpace::OSCAR6;
     let r_far = grid.cols as f64 * CELL;
     let lowest = (floor_z + below).max(grid.z0);
     let shares = (0..SCALE_STEPS).map(|step| 1.0 - step as f64 / SCALE_STEPS as f64);
-    shares
-        .take_while(|share| *share >= MIN_SCALE_SHARE)
-        .find_map(|share| place(grid, r_far / study.r_max * share, lowest))
-        .map(|space| {
-            let r = (space.r_min - MARGIN, space.r_max + MARGIN);
-            let z = (space.z_min - MARGIN, space.z_max + MARGIN);
-            let inside = grid.count(
-                (
-                    ((z.0 - grid.z0) / CELL) as usize,
-                    ((z.1 - grid.z0) / CELL) as usize + 1,
-                ),
-                ((r.0 / CELL) as usize, (r.1 / CELL) as usize + 1),
-            );
-            (space, inside as f64 / grid.reached as f64)
-        })
+    let smallest = r_far / study.r_max * MIN_SCALE_SHARE;
+    let found = match shape {
+        Shape::Study => shares
+            .take_while(|share| *share >= MIN_SCALE_SHARE)
+            .find_map(|share| place(grid, r_far / study.r_max * share, lowest)),
+        Shape::Any => {
+            let area = (study.r_max - study.r_min) * (study.z_max - study.z_min);
+            grid.largest_box(lowest, MARGIN, area * smallest * smallest)
+        }
+    };
+    found.map(|space| {
+        let r = (space.r_min - MARGIN, space.r_max + MARGIN);
+        let z = (space.z_min - MARGIN, space.z_max + MARGIN);
+        let inside = grid.count(
+            (
+                ((z.0 - grid.z0) / CELL) as usize,
+                ((z.1 - grid.z0) / CELL) as usize + 1,
+            ),
+            ((r.0 / CELL) as usize, (r.1 / CELL) as usize + 1),
+        );
+        (space, inside as f64 / grid.reached as f64)
+    })
 }
 
 /// The study's half annulus at `scale` placed in `grid` with [`MARGIN`] to spare, its
@@ -260,10 +212,10 @@ fn place(grid: &Grid, scale: f64, lowest: f64) -> Option<ReachSpace> {
 
 /// The camera centres of the shoulder–elbow poses of a [`PoseGrid`] whose wrist looks
 /// down inside its limits (`None` elsewhere), and which of them are free of contact.
-struct Samples {
-    grid: PoseGrid,
+pub(super) struct Samples {
+    pub(super) grid: PoseGrid,
     /// `centres[grid.index(i, k)]`: shoulder step i, elbow step k (see [`Centre`]).
-    centres: Vec<Option<Centre>>,
+    pub(super) centres: Vec<Option<Centre>>,
     /// Whether each pose is free of contact.
     free: Vec<bool>,
 }
@@ -271,7 +223,7 @@ struct Samples {
 impl Samples {
     /// The triangles of neighbouring reached samples: two per grid square whose four
     /// corners are reached and lie within [`MAX_EDGE`] of each other.
-    fn triangles(&self) -> impl Iterator<Item = [(f64, f64); 3]> + '_ {
+    pub(super) fn triangles(&self) -> impl Iterator<Item = [(f64, f64); 3]> + '_ {
         let grid = &self.grid;
         let squares = (0..grid.steps).flat_map(move |i| (0..grid.steps).map(move |k| (i, k)));
         squares.flat_map(move |(i, k)| {
@@ -288,36 +240,6 @@ impl Samples {
                 .into_iter()
                 .flat_map(|[a, b, c, d]| [[a, b, c], [a, c, d]])
         })
-    }
-}
-
-/// Marks in `hit` (rows of `cols` cells, row 0 at `z0`) each cell whose centre lies in
-/// `triangle` (r, z).
-fn fill(hit: &mut [bool], (z0, cols): (f64, usize), triangle: &[(f64, f64); 3]) {
-    let [a, b, c] = *triangle;
-    let cross = |p: (f64, f64), q: (f64, f64), x: (f64, f64)| {
-        (q.0 - p.0) * (x.1 - p.1) - (q.1 - p.1) * (x.0 - p.0)
-    };
-    let area = cross(a, b, c);
-    if area == 0.0 {
-        return;
-    }
-    let extreme = |f: fn(f64, f64) -> f64, pick: fn(&(f64, f64)) -> f64| {
-        triangle.iter().map(pick).fold(pick(&a), f)
-    };
-    let (r0, r1) = (extreme(f64::min, |p| p.0), extreme(f64::max, |p| p.0));
-    let (z_lo, z_hi) = (extreme(f64::min, |p| p.1), extreme(f64::max, |p| p.1));
-    let rows = hit.len() / cols;
-    let first = |v: f64| ((v / CELL - 0.5).ceil().max(0.0)) as usize;
-    let last = |v: f64, n: usize| ((v / CELL - 0.5).floor() as usize).min(n - 1);
-    for row in first(z_lo - z0)..=last(z_hi - z0, rows) {
-        for col in first(r0)..=last(r1, cols) {
-            let x = ((col as f64 + 0.5) * CELL, z0 + (row as f64 + 0.5) * CELL);
-            let signs = [cross(a, b, x), cross(b, c, x), cross(c, a, x)];
-            if signs.iter().all(|s| s * area >= 0.0) {
-                hit[row * cols + col] = true;
-            }
-        }
     }
 }
 

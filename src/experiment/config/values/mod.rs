@@ -94,6 +94,12 @@ fn list<T, const N: usize>(
     items.try_into().map_err(|_| bad())
 }
 
+/// Reals as a config file writes them: each exactly, comma-separated.
+fn render_reals(values: &[f64]) -> String {
+    let texts: Vec<String> = values.iter().map(|v| format!("{v:?}")).collect();
+    texts.join(",")
+}
+
 fn finite(part: &str) -> Option<f64> {
     part.parse::<f64>().ok().filter(|v| v.is_finite())
 }
@@ -113,27 +119,26 @@ impl ConfigValue for String {
     }
 }
 
-/// Three reals `x,y,z`.
-impl ConfigValue for [f64; 3] {
-    const KIND: &'static str = "x,y,z";
-    fn parse_value(raw: &str) -> Result<Self, ValueError> {
-        list(raw, "three real numbers x,y,z", finite)
-    }
-    fn render(&self) -> String {
-        self.map(|v| format!("{v:?}")).join(",")
-    }
+/// A list of `N` reals, its kind written as the list's names (`x,y,z`), the error saying
+/// what it takes.
+macro_rules! reals_value {
+    ($($n:literal: $kind:literal, $expected:literal);*) => {$(
+        impl ConfigValue for [f64; $n] {
+            const KIND: &'static str = $kind;
+            fn parse_value(raw: &str) -> Result<Self, ValueError> {
+                list(raw, $expected, finite)
+            }
+            fn render(&self) -> String {
+                render_reals(self)
+            }
+        }
+    )*};
 }
-
-/// Five reals `a,b,c,d,e` (one per learner input).
-impl ConfigValue for [f64; 5] {
-    const KIND: &'static str = "a,b,c,d,e";
-    fn parse_value(raw: &str) -> Result<Self, ValueError> {
-        list(raw, "five real numbers a,b,c,d,e", finite)
-    }
-    fn render(&self) -> String {
-        self.map(|v| format!("{v:?}")).join(",")
-    }
-}
+// Three reals `x,y,z`; five `a,b,c,d,e` (one per learner input).
+reals_value!(
+    3: "x,y,z", "three real numbers x,y,z";
+    5: "a,b,c,d,e", "five real numbers a,b,c,d,e"
+);
 
 /// The camera's pose on its link: `x,y,z,roll,pitch,yaw`.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -166,45 +171,33 @@ impl ConfigValue for CameraMount {
     fn render(&self) -> String {
         let [x, y, z] = self.offset_m;
         let [roll, pitch, yaw] = self.rpy_deg;
-        [x, y, z, roll, pitch, yaw]
-            .map(|v| format!("{v:?}"))
-            .join(",")
+        render_reals(&[x, y, z, roll, pitch, yaw])
     }
 }
 
-/// `root`, or a link's name.
-impl ConfigValue for BaseLink {
-    const KIND: &'static str = "root or a link";
-    fn parse_value(raw: &str) -> Result<Self, ValueError> {
-        Ok(match raw {
-            "root" => BaseLink::Root,
-            name => BaseLink::Named(name.to_string()),
-        })
-    }
-    fn render(&self) -> String {
-        match self {
-            BaseLink::Root => "root".to_string(),
-            BaseLink::Named(name) => name.clone(),
+/// A link entry: a keyword for the one variant that names no link, or a link's name
+/// (`Named`).
+macro_rules! link_value {
+    ($($t:ident: $keyword:literal => $variant:ident),*) => {$(
+        impl ConfigValue for $t {
+            const KIND: &'static str = concat!($keyword, " or a link");
+            fn parse_value(raw: &str) -> Result<Self, ValueError> {
+                Ok(match raw {
+                    $keyword => $t::$variant,
+                    name => $t::Named(name.to_string()),
+                })
+            }
+            fn render(&self) -> String {
+                match self {
+                    $t::$variant => $keyword.to_string(),
+                    $t::Named(name) => name.clone(),
+                }
+            }
         }
-    }
+    )*};
 }
-
-/// `auto`, or a link's name.
-impl ConfigValue for CameraLink {
-    const KIND: &'static str = "auto or a link";
-    fn parse_value(raw: &str) -> Result<Self, ValueError> {
-        Ok(match raw {
-            "auto" => CameraLink::Auto,
-            name => CameraLink::Named(name.to_string()),
-        })
-    }
-    fn render(&self) -> String {
-        match self {
-            CameraLink::Auto => "auto".to_string(),
-            CameraLink::Named(name) => name.clone(),
-        }
-    }
-}
+// `root` or a link's name; `auto` or a link's name.
+link_value!(BaseLink: "root" => Root, CameraLink: "auto" => Auto);
 
 /// `auto`, or three joint names `a,b,c`.
 impl ConfigValue for LearnedJoints {
@@ -248,7 +241,7 @@ impl ConfigValue for ReachSetting {
     fn render(&self) -> String {
         match self {
             ReachSetting::Auto => "auto".to_string(),
-            ReachSetting::Given(values) => values.map(|v| format!("{v:?}")).join(","),
+            ReachSetting::Given(values) => render_reals(values),
         }
     }
 }
@@ -300,6 +293,12 @@ mod tests {
         assert!(LearnedJoints::parse_value("a,,c").is_err());
         assert_eq!(LearnedJoints::parse_value("auto"), Ok(LearnedJoints::Auto));
         assert_eq!(CameraLink::parse_value("auto"), Ok(CameraLink::Auto));
+        assert_eq!(BaseLink::parse_value("root"), Ok(BaseLink::Root));
+        let named = BaseLink::parse_value("base_link").unwrap();
+        assert_eq!(
+            (named.render(), BaseLink::KIND),
+            ("base_link".into(), "root or a link")
+        );
         assert_eq!(ReachSetting::parse_value("auto"), Ok(ReachSetting::Auto));
         let given = ReachSetting::parse_value("46,93,0,52").unwrap();
         assert_eq!(ReachSetting::parse_value(&given.render()), Ok(given));

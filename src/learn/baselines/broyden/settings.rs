@@ -54,4 +54,7 @@ pub(crate) const BROYDEN_FACTS: MethodFacts = MethodFacts {
     bounded: false,
     watches_changes: false,
     slow_entries: "feedback_steps, bin_size, max_stored_patterns",
+    // Its Jacobian is estimated within each trial, not learned across them: 1,000 trials
+    // measure it.
+    shared_defaults: &[("trials", "1000")],
 };

@@ -48,4 +48,5 @@ pub(crate) const LIN5_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     slow_entries: "feedback_steps, bin_size, max_stored_patterns",
+    shared_defaults: &[],
 };

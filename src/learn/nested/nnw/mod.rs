@@ -88,6 +88,9 @@ pub(crate) const NNW_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     slow_entries: "hidden_units, nnw_train_limit, feedback_steps",
+    // Its nets are trained after every trial: 1,000 trials take about as long as 100,000
+    // of lin5.
+    shared_defaults: &[("trials", "1000")],
 };
 
 #[cfg(test)]

@@ -57,4 +57,5 @@ pub(crate) const ISSGP_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     slow_entries: "issgp_features, feedback_steps",
+    shared_defaults: &[],
 };

@@ -73,4 +73,5 @@ pub(crate) const LWPR_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     slow_entries: "init_D, w_gen, feedback_steps",
+    shared_defaults: &[],
 };

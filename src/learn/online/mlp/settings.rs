@@ -54,4 +54,5 @@ pub(crate) const MLP_FACTS: MethodFacts = MethodFacts {
     bounded: true,
     watches_changes: true,
     slow_entries: "mlp_steps_per_trial, mlp_batch, mlp_hidden",
+    shared_defaults: &[],
 };

@@ -32,7 +32,7 @@ pub struct OtherMount {
     pub axis: &'static str,
     /// The reach space the arm then works in.
     pub space: ReachSpace,
-    /// How many of the first [`TRIED_TRIALS`] trials of a run failed.
+    /// How many of the first `TRIED_TRIALS` (200) trials of a run failed.
     pub failed: usize,
 }
 
@@ -60,7 +60,7 @@ impl std::fmt::Display for OtherMount {
 
 /// The first of the camera link's other axes (-z, x, -x, -y, y, the config's offset kept)
 /// along which the arm of `urdf` with `config` passes every check made before a run with
-/// `events` and at most half of [`TRIED_TRIALS`] first trials fail; `None` when none does.
+/// `events` and at most half of `TRIED_TRIALS` (200) first trials fail; `None` when none does.
 pub fn other_mount(
     config: &Config,
     urdf: Option<&Path>,

@@ -65,7 +65,7 @@ fn by_label(runs: &[CellResult]) -> Vec<(&str, Vec<&CellResult>)> {
 }
 
 /// The comparison's markdown table: one row per method, mean ± s.d. over seeds of the
-/// distance after every feedback step some run took ([`steps_taken`]), then per
+/// distance after every feedback step some run took (`steps_taken`), then per
 /// seed (in cell order) the trials to a [`TRIALS_TO_WINDOW`]-trial 4-step mean of each of
 /// [`TRIALS_TO_LEVELS_MM`] and the trials to recover after each event
 /// ([`FourStepTrace::recovered_after`]); `never` where a seed did not.

@@ -5,12 +5,12 @@ use super::{bad_input, say, warned, Failure};
 use crate::camera::CameraModel;
 use crate::control::prelearning_moves;
 use crate::experiment::setup::{
-    fit_reach, fitted_boundaries, learned_ranges, load_arm, other_mount, reach_space,
+    fit_reach, fitted_boundaries, learned_ranges, load_arm, proposed_mount, reach_space,
     refuses_where_it_looks, BOUNDARY_MARGIN_DEG,
 };
 use crate::experiment::{
     contact_stopped_moves, fit_reach_space_to_arm, target_poses_in_contact, Config, PreflightError,
-    ReachSetting, RunRequest, Source, Sources, REACH_SAMPLES,
+    ReachSetting, RunRequest, Sources, REACH_SAMPLES,
 };
 use crate::robot::{ArmModel, Wrist, CONTACT_MARGIN};
 use crate::units::M_PER_CM;
@@ -66,16 +66,11 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
     }
     let urdf = args.urdf.as_deref();
     // A camera refused as its link's z axis points it: which other axis would do.
-    let refused = |refusal: String, looks: bool| {
-        let default_mount = config.source_of("camera_mount", &sources) == Source::Default;
-        match (own_arm && default_mount && looks)
-            .then(|| other_mount(&config, urdf, &[], &sources))
-            .flatten()
-        {
+    let refused =
+        |refusal: String, looks: bool| match proposed_mount(&config, urdf, &[], &sources, looks) {
             Some(other) => bad_input(format!("{refusal}; {other}")),
             None => bad_input(refusal),
-        }
-    };
+        };
     let loaded =
         load_arm(&config, urdf).map_err(|e| refused(e.to_string(), refuses_where_it_looks(&e)))?;
     let camera = loaded.camera.clone();

@@ -19,7 +19,7 @@ pub use learners::{
     lin8_settings, lwpr_settings, mlp_settings, nnw_settings, pattern_settings,
     single_model_watch_settings,
 };
-pub use other_mount::{other_mount, refused_where_it_looks, refuses_where_it_looks, OtherMount};
+pub use other_mount::{proposed_mount, refused_where_it_looks, refuses_where_it_looks, OtherMount};
 
 use super::{CameraKind, Config, ObstacleBox, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};

@@ -4,7 +4,9 @@
 //! proposes.
 
 use crate::experiment::run::trial_driver::TrialDriver;
-use crate::experiment::{CameraMount, Config, Event, PreflightError, RunError, RunSetup, Sources};
+use crate::experiment::{
+    CameraMount, Config, Event, PreflightError, RunError, RunSetup, Source, Sources,
+};
 use crate::robot::description::{DescriptionError, DescriptionErrorKind as Kind};
 use crate::robot::ReachSpace;
 use std::path::Path;
@@ -58,10 +60,30 @@ impl std::fmt::Display for OtherMount {
     }
 }
 
+/// The mount a refusal proposes, when it is about where the camera looks (`looks`: see
+/// [`refused_where_it_looks`], [`refuses_where_it_looks`]), the arm is a URDF's (`urdf`,
+/// else the config's) and `camera_mount` was left at its default: the first other axis
+/// that works. `None` otherwise, and when no other axis does.
+pub fn proposed_mount(
+    config: &Config,
+    urdf: Option<&Path>,
+    events: &[Event],
+    sources: &Sources,
+    looks: bool,
+) -> Option<OtherMount> {
+    let own_arm = urdf.or(config.urdf.path()).is_some();
+    let default_mount = config.source_of("camera_mount", sources) == Source::Default;
+    if own_arm && default_mount && looks {
+        other_mount(config, urdf, events, sources)
+    } else {
+        None
+    }
+}
+
 /// The first of the camera link's other axes (-z, x, -x, -y, y, the config's offset kept)
 /// along which the arm of `urdf` with `config` passes every check made before a run with
 /// `events` and at most half of `TRIED_TRIALS` (200) first trials fail; `None` when none does.
-pub fn other_mount(
+fn other_mount(
     config: &Config,
     urdf: Option<&Path>,
     events: &[Event],

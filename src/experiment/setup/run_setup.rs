@@ -8,7 +8,7 @@ use crate::control::TrialLoop;
 use crate::experiment::setup::preflight::preflight;
 use crate::experiment::setup::{
     arm_entry, build_camera, build_learner, build_simulator, fitted_boundaries, load_arm,
-    other_mount, refused_where_it_looks, trial_settings,
+    proposed_mount, refused_where_it_looks, trial_settings,
 };
 use crate::experiment::{
     Config, Event, PreflightError, ReachSetting, RunError, Source, Sources, UrdfFile,
@@ -112,12 +112,8 @@ impl RunSetup {
         sources: &Sources,
     ) -> Result<RunSetup, RunError> {
         RunSetup::checked(config.clone(), urdf, events.clone(), sources).map_err(|refusal| {
-            let urdf = urdf.or(config.urdf.path());
-            let default_mount = config.source_of("camera_mount", sources) == Source::Default;
-            if !(urdf.is_some() && default_mount && refused_where_it_looks(&refusal)) {
-                return refusal;
-            }
-            match other_mount(&config, urdf, &events, sources) {
+            let looks = refused_where_it_looks(&refusal);
+            match proposed_mount(&config, urdf, &events, sources, looks) {
                 Some(other) => RunError::OtherMount {
                     refusal: Box::new(refusal),
                     other,

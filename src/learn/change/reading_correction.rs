@@ -7,9 +7,9 @@
 //! longer or shorter link changes how a joint move shows in the camera, smoothly and
 //! mostly alike over the poses. Both are caught, exactly or on the whole, by a map of each
 //! reading c to A·c with A = I + P: 9 numbers, the same at every pose. The learner then
-//! answers N(A·c, θ) with N the tree it learned before the change. (A map that also varied
-//! with θ2 and θ3, to first or second order, recovered more slowly from every event:
-//! docs/ADAPTATION.md.)
+//! answers N(A·c, θ) with N the tree it learned before the change. (A map that also varies
+//! with θ2 and θ3 to first order brings lin5 and lin8 back no sooner after a link change:
+//! docs/ADAPTATION.md, "A correction that varies with the pose".)
 //!
 //! The fit is Gauss–Newton on the patterns since the change: each pattern (x, Δθ) should be
 //! answered as N(A x) = Δθ; N's change with its readings comes from finite differences of

@@ -27,7 +27,8 @@ pub struct CameraModel {
     pub focal: f64,
     /// Radius of the target sphere (m); default 0.02.
     pub object_radius: f64,
-    /// Height of the camera above the sphere's centre at the target (m); default 0.20.
+    /// Height of the camera above the sphere's centre at the target (m); default 0.20, the
+    /// study's (a run's is its config's `standoff`).
     pub standoff: f64,
     /// The sphere's centre must be at least this far in front of the camera (m); default 0.05.
     pub min_depth: f64,

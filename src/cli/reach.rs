@@ -2,17 +2,17 @@
 //! and the pre-learning pose.
 
 use super::{bad_input, say, warned, Failure};
-use crate::camera::CameraModel;
 use crate::control::prelearning_moves;
 use crate::experiment::setup::{
-    fit_reach, fitted_boundaries, learned_ranges, load_arm, proposed_mount, reach_space,
-    refuses_where_it_looks, BOUNDARY_MARGIN_DEG,
+    camera_model, fit_reach, fitted_boundaries, learned_ranges, load_arm, proposed_mount,
+    reach_space, refuses_where_it_looks, size_readings_to_arm, size_standoff_to_arm,
+    BOUNDARY_MARGIN_DEG, MIN_SIZED_STANDOFF_CM,
 };
 use crate::experiment::{
     contact_stopped_moves, fit_reach_space_to_arm, target_poses_in_contact, Config, PreflightError,
-    ReachSetting, RunRequest, Sources, REACH_SAMPLES,
+    ReachSetting, RunRequest, Source, Sources, REACH_SAMPLES,
 };
-use crate::robot::{ArmModel, Wrist, CONTACT_MARGIN};
+use crate::robot::{ArmModel, ReachSpace, Wrist, CONTACT_MARGIN};
 use crate::units::M_PER_CM;
 use std::fmt::Write;
 use std::path::PathBuf;
@@ -30,7 +30,7 @@ pub(super) struct ReachArgs {
 #[derive(Debug, clap::Args)]
 pub(super) struct ArmConfigArgs {
     /// The config whose arm entries (camera_link, camera_offset, learned_joints,
-    /// reach_space, floor_z) apply (default: every entry at its default).
+    /// reach_space, floor_z, standoff) apply (default: every entry at its default).
     #[arg(long)]
     config: Option<PathBuf>,
     /// Sets a config entry (repeatable), as `run --set` does.
@@ -142,7 +142,12 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
             if own_arm { "a run of this arm takes them unless the config gives its own" } else { "the OSCAR-6's config gives its own" }
         );
     }
-    match prelearning_moves(&model, &CameraModel::default(), &space) {
+    let _ = writeln!(
+        report,
+        "{}",
+        standoff_line(&mut config, &mut sources, &space, own_arm)?
+    );
+    match prelearning_moves(&model, &camera_model(&config), &space) {
         Some(_) => {
             let goal = space.prelearning_goal();
             let theta = model
@@ -163,6 +168,35 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
         }
     }
     say(&report)
+}
+
+/// The standoff and cz's upper boundary a run of this arm takes over `space`: sized to the
+/// space where the config leaves them at their defaults on a fitted space of its own arm.
+fn standoff_line(
+    config: &mut Config,
+    sources: &mut Sources,
+    space: &ReachSpace,
+    own_arm: bool,
+) -> Result<String, Failure> {
+    if own_arm {
+        size_standoff_to_arm(config, sources, space).map_err(bad_input)?;
+        size_readings_to_arm(config, sources, space).map_err(bad_input)?;
+    }
+    let how = match config.source_of("standoff", sources) {
+        Source::Fitted => format!(
+            "sized to the fitted space: the study's 20 cm times its height over the study's 52 cm, {MIN_SIZED_STANDOFF_CM}..20 cm; a run of this arm takes it unless the config gives its own"
+        ),
+        Source::Default => "the study's".to_string(),
+        given => format!("given: {given}"),
+    };
+    let (low, high) = (
+        space.z_min / M_PER_CM - config.standoff,
+        space.z_max / M_PER_CM - config.standoff,
+    );
+    Ok(format!(
+        "standoff             {:.1} cm above the object's centre at the target ({how}): the object's centre at z {low:.1}..{high:.1} cm; cz's upper boundary {}",
+        config.standoff, config.boundary_4_high
+    ))
 }
 
 /// Moves between random reached points tried for the share a contact stops.

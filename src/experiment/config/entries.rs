@@ -14,6 +14,7 @@ use super::scope::{
 use super::urdf_file::UrdfFile;
 use super::values::{CameraKind, CameraMount, ConfigValue, ObstacleBox, ReachSetting, SimKind};
 use super::{ConfigErrorKind, Rule};
+use crate::camera::CameraModel;
 use crate::control::ServoMode;
 use crate::learn::change::{ChangeRecovery, ChangeSettings};
 use crate::learn::{
@@ -176,6 +177,10 @@ config_entries! {
     /// the arm reaches looking down; what a URDF other than the shipped one gets when this
     /// is left at its default).
     reach_space: ReachSetting = ReachSetting::Given([46.0, 93.0, 0.0, 52.0]), "cm", All, Rule::Any;
+    /// Height of the camera above the object's centre at the target (the study's 20; left
+    /// at its default on a URDF other than the shipped one whose reach space is fitted:
+    /// sized to that space, as `eyehand reach` prints).
+    standoff: f64 = CameraModel::default().standoff / M_PER_CM, "cm", All, Within(5.0, 200.0);
     /// Rays per image side: the 512×512 image is sampled by an N×N grid of rays.
     raycast_resolution: usize = 256, "", RAYCAST, Within(16.0, 4096.0);
     /// σ of each pixel's grey level (its coverage, 0–1) before the blob is measured.

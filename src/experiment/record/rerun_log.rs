@@ -6,8 +6,8 @@
 //! - `world/arm/camera`: the camera frame's transform and a pinhole (x along the image's
 //!   columns, y along its rows, z the optical axis); `world/arm/camera/image` the ray-cast
 //!   camera's grey image at every pose.
-//! - `world/target` the sphere, `world/goal` the point 20 cm above it, `world/camera_path`
-//!   the camera centre's path so far in the trial.
+//! - `world/target` the sphere, `world/goal` the point the run's standoff above it,
+//!   `world/camera_path` the camera centre's path so far in the trial.
 //! - `plots/distance_mm`: the distance to the goal after each feedback step.
 //!
 //! Timelines: `sim_time` (simulated seconds, running on across the recorded trials) and
@@ -16,6 +16,7 @@
 
 use super::RecordReport;
 use crate::camera::{CameraModel, RaycastCamera};
+use crate::experiment::setup::camera_model;
 use crate::experiment::show::{
     blob_mask, remove_scratch_patterns, replay, show_folder, Look, RecordedRun, ShowError,
     TrialRange, TrialTrace, BACKGROUND_GREY,
@@ -49,7 +50,7 @@ pub(super) fn record(
     let stream = rerun::RecordingStreamBuilder::new("eyehand")
         .save(out)
         .map_err(|e| failed(e.to_string()))?;
-    let camera = CameraModel::default();
+    let camera = camera_model(&run.setup.config);
     let resolution = match run.setup.config.camera {
         CameraKind::Raycast => run.setup.config.raycast_resolution,
         CameraKind::Projection => (camera.width / 2.0).round() as usize,

@@ -5,6 +5,7 @@
 use super::arm_scene::ArmScene;
 use super::json::{png_data_url, pose_json};
 use crate::camera::CameraModel;
+use crate::experiment::setup::camera_model;
 use crate::experiment::show::{
     remove_scratch_patterns, replay, show_folder, CameraPictures, RecordedRun, ShowError,
     TrialTrace,
@@ -25,6 +26,7 @@ pub(super) fn trials_json(
     };
     let scratch = show_folder(&run.folder)?;
     let pictures = CameraPictures::of(run);
+    let camera = camera_model(&run.setup.config);
     let mut written = Vec::with_capacity(trials.len());
     let result = replay(
         run,
@@ -37,7 +39,7 @@ pub(super) fn trials_json(
                 path: run.folder.join("report.html"),
                 reason,
             })?;
-            written.push(trial_json(&trace, scene, &images));
+            written.push(trial_json(&trace, scene, &camera, &images));
             Ok(())
         },
     );
@@ -46,8 +48,12 @@ pub(super) fn trials_json(
 }
 
 /// One trial: its target, goal, distances, failure and every pose.
-fn trial_json(trace: &TrialTrace, scene: &ArmScene, images: &[Vec<u8>]) -> Value {
-    let camera = CameraModel::default();
+fn trial_json(
+    trace: &TrialTrace,
+    scene: &ArmScene,
+    camera: &CameraModel,
+    images: &[Vec<u8>],
+) -> Value {
     let object = trace.looks.first().map(|look| look.object);
     let goal = object.map(|o| camera.goal_point(&o));
     let poses: Vec<Value> = trace

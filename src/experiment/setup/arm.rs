@@ -2,6 +2,7 @@
 //! the reach space (given, or fitted to the arm).
 
 use crate::camera::CameraModel;
+use crate::experiment::setup::camera_model;
 use crate::experiment::{Config, ReachSetting};
 use crate::robot::description::{
     camera_choice, mesh_candidates, DescriptionError, DescriptionErrorKind as Kind,
@@ -168,15 +169,18 @@ pub fn reach_space(config: &Config, model: &mut ArmModel) -> Result<ReachSpace, 
 }
 
 /// The reach space fitted to `model` above the config's floor, targets hanging the
-/// camera's standoff and the sphere's radius below the camera; `model` keeps to the branch
-/// of its solutions the space was fitted on.
+/// sphere's radius and the config's standoff below the camera, or the study's where that
+/// is larger: a standoff sized to the space afterwards
+/// ([`sized_standoff_cm`](crate::experiment::setup::sized_standoff_cm)) is never
+/// larger, so it never moves the space, and a run read back from its `info` fits the same
+/// one. `model` keeps to the branch of its solutions the space was fitted on.
 pub fn fit_reach(config: &Config, model: &mut ArmModel) -> Result<ReachFit, ReachFitFailure> {
-    let camera = CameraModel::default();
-    let fit = ReachSpace::fit(
-        model,
-        config.floor_z * M_PER_CM,
-        camera.object_bottom_below(),
-    )?;
+    let study = CameraModel::default();
+    let camera = camera_model(config);
+    let below = camera
+        .object_bottom_below()
+        .max(study.object_bottom_below());
+    let fit = ReachSpace::fit(model, config.floor_z * M_PER_CM, below)?;
     model.keep_branch(fit.branch.clone());
     Ok(fit)
 }

@@ -8,6 +8,7 @@ mod other_mount;
 pub(super) mod preflight;
 pub(super) mod run_request;
 pub(super) mod run_setup;
+mod sizing;
 pub(super) mod start_check;
 
 pub use arm::{
@@ -20,6 +21,9 @@ pub use learners::{
     single_model_watch_settings,
 };
 pub use other_mount::{proposed_mount, refused_where_it_looks, refuses_where_it_looks, OtherMount};
+pub use sizing::{
+    size_readings_to_arm, size_standoff_to_arm, sized_standoff_cm, MIN_SIZED_STANDOFF_CM,
+};
 
 use super::{CameraKind, Config, ObstacleBox, SimKind};
 use crate::camera::{Camera, CameraModel, ProjectionCamera, RaycastCamera};
@@ -53,9 +57,17 @@ pub fn obstacles(config: &Config) -> Vec<Obstacle> {
     config.obstacle.iter().map(ObstacleBox::obstacle).collect()
 }
 
+/// The camera's model with the config's `standoff`.
+pub fn camera_model(config: &Config) -> CameraModel {
+    CameraModel {
+        standoff: config.standoff * M_PER_CM,
+        ..CameraModel::default()
+    }
+}
+
 /// The camera the config names.
 pub fn build_camera(config: &Config) -> Box<dyn Camera> {
-    let model = CameraModel::default();
+    let model = camera_model(config);
     match config.camera {
         CameraKind::Projection => Box::new(ProjectionCamera::new(model)),
         CameraKind::Raycast => Box::new(
@@ -135,7 +147,7 @@ pub fn build_learner(
         Method::Ik => {
             return Ok(Box::new(IkLearner::new(
                 model.clone(),
-                CameraModel::default(),
+                camera_model(config),
             )))
         }
         Method::Broyden => return Ok(Box::new(Broyden::new(broyden_settings(config)))),

@@ -2,7 +2,7 @@
 //! run's trials and the robot, and that the arm (as the URDF and each link event leave it)
 //! reaches its reach space with the camera looking down.
 
-use crate::experiment::setup::start_check::{check_start, PrelearningFault};
+use crate::experiment::setup::start_check::PrelearningFault;
 use crate::experiment::setup::{build_simulator, reach_space};
 use crate::experiment::{Config, ConfigErrorKind, Event, SimKind};
 use crate::robot::{
@@ -172,9 +172,10 @@ pub fn target_poses_in_contact(
     (reached, touching)
 }
 
-/// Checks `config`, `events` (sorted by trial) and the arm before a run starts, and
+/// Checks `config`, `events` (sorted by trial) and the arm's reach before a run starts, and
 /// returns the run's reach space (given, or fitted to the arm: `model` then keeps to the
-/// branch of its solutions the space was fitted on).
+/// branch of its solutions the space was fitted on). The run's start is checked once the
+/// entries sized to that space are (`check_start`).
 pub fn preflight(
     config: &Config,
     model: &mut ArmModel,
@@ -191,7 +192,6 @@ pub fn preflight(
     }
     let reach = reach_space(config, model).map_err(PreflightError::NoReachSpace)?;
     check_reach(model, &reach, None)?;
-    check_start(config, model, &reach)?;
     let mut changed = model.clone();
     for event in events {
         if let Event::Elongate { link, cm, .. } = *event {

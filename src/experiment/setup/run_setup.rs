@@ -6,9 +6,11 @@
 use crate::camera::Camera;
 use crate::control::TrialLoop;
 use crate::experiment::setup::preflight::preflight;
+use crate::experiment::setup::start_check::check_start;
 use crate::experiment::setup::{
     arm_entry, build_camera, build_learner, build_simulator, fitted_boundaries, load_arm,
-    proposed_mount, refused_where_it_looks, trial_settings,
+    proposed_mount, refused_where_it_looks, size_readings_to_arm, size_standoff_to_arm,
+    trial_settings,
 };
 use crate::experiment::{
     Config, Event, PreflightError, ReachSetting, RunError, Source, Sources, UrdfFile,
@@ -57,27 +59,6 @@ fn fit_boundaries_to_arm(
     Ok(config.check()?)
 }
 
-/// The upper boundary of cz (the reading from the blob's area) sized to `reach` where the
-/// config left both of cz's boundaries at their defaults (the OSCAR-6's): cz follows the
-/// camera's height over the object, which varies over a reach space by its height, so the
-/// study's bound is scaled by this space's height over the study's; the config checked
-/// again.
-fn size_readings_to_arm(
-    config: &mut Config,
-    sources: &mut Sources,
-    reach: &ReachSpace,
-) -> Result<(), PreflightError> {
-    let at_default = |name: &&str| config.source_of(name, sources) == Source::Default;
-    if !["boundary_4_low", "boundary_4_high"].iter().all(at_default) {
-        return Ok(());
-    }
-    let study = ReachSpace::OSCAR6;
-    let share = (reach.z_max - reach.z_min) / (study.z_max - study.z_min);
-    config.boundary_4_high = (config.boundary_4_high * share).round();
-    sources.record("boundary_4_high", Source::Fitted);
-    Ok(config.check()?)
-}
-
 /// A run's parts, checked and fitted once: what every run-making command builds from.
 #[derive(Debug, Clone)]
 pub struct RunSetup {
@@ -103,8 +84,10 @@ impl RunSetup {
     /// arm entry the URDF contradicts is reported where its value came from (`file:line`,
     /// `--set`, …, by `sources`). On a URDF other than the shipped OSCAR-6, the entries
     /// left at their defaults that describe the OSCAR-6 are fitted to the arm instead:
-    /// `reach_space` (to `auto`), the boundaries of θ2 and θ3 ([`fitted_boundaries`]) and
-    /// the upper boundary of cz (scaled by the reach space's height).
+    /// `reach_space` (to `auto`), the boundaries of θ2 and θ3 ([`fitted_boundaries`]), the
+    /// `standoff` over a fitted space
+    /// ([`sized_standoff_cm`](crate::experiment::setup::sized_standoff_cm)) and the upper boundary of cz
+    /// ([`size_readings_to_arm`]). The run's start is checked with them.
     pub fn new(
         config: Config,
         urdf: Option<&Path>,
@@ -152,8 +135,10 @@ impl RunSetup {
         let reach = preflight(&config, &mut arm.model, &events)?;
         if urdf.is_some() {
             fit_boundaries_to_arm(&mut config, &mut sources, &arm.model, &reach)?;
+            size_standoff_to_arm(&mut config, &mut sources, &reach)?;
             size_readings_to_arm(&mut config, &mut sources, &reach)?;
         }
+        check_start(&config, &arm.model, &reach)?;
         Ok(RunSetup {
             config,
             model: arm.model,

@@ -8,7 +8,7 @@ use super::replay::{replay, TrialTrace};
 use super::tracer::Look;
 use super::{RecordedRun, ShowError, TrialRange};
 use crate::camera::CameraModel;
-use crate::experiment::setup::{move_settings, obstacles};
+use crate::experiment::setup::{camera_model, move_settings, obstacles};
 use crate::experiment::CameraKind;
 use crate::robot::KinematicSim;
 use crate::units::MM_PER_M;
@@ -63,7 +63,7 @@ pub struct CameraPictures<'a> {
 impl<'a> CameraPictures<'a> {
     /// The pictures of `run`: its ray-cast camera's resolution, or one ray per pixel.
     pub fn of(run: &'a RecordedRun) -> CameraPictures<'a> {
-        let camera = CameraModel::default();
+        let camera = camera_model(&run.setup.config);
         let resolution = match run.setup.config.camera {
             CameraKind::Raycast => run.setup.config.raycast_resolution,
             CameraKind::Projection => camera.width.round() as usize,

@@ -110,6 +110,14 @@ const ARMS: &[Arm] = &[
         sets: &[],
         verdict: Verdict::Refused(&["the camera on `gripper_link` cannot look down"]),
     },
+    // Along −x (or ±y) at the link's origin, the wrist roll's axis, the camera sits at the
+    // surface of `wrist_link` (its roll servo), which hides the object half a millimetre in
+    // front of it; 5 cm out along the link's −z, beside the jaw, it learns.
+    Arm {
+        urdf: "so_arm_description/urdf/so101.urdf",
+        sets: &["camera_mount=0,0,-0.05,0,-90,0"],
+        verdict: Verdict::Learns,
+    },
     // One arm of a humanoid, as the collection cuts it out.
     Arm {
         urdf: "talos_data/robots/talos_left_arm.urdf",

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Prints docs/ARMS.md's table of the public corpus: for every serial arm of PyPI's
 # example-robot-data (the arms of tests/corpus.rs), what `eyehand reach` chose with nothing
-# but `--urdf` (one arm also with the camera_mount its refusal names), then one lin5 run of
+# but `--urdf` (three arms also with a camera_mount that works), then one lin5 run of
 # 20,000 kinematic trials (seed 1) — or the refusal.
 # Usage: scripts/arms-corpus.sh [--sim dynamic] [EYEHAND_BINARY]   (default:
 # target/release/eyehand). With `--sim dynamic`, docs/DYNAMIC.md's table instead: 2,000 lin5
@@ -33,6 +33,7 @@ arms=(
     panda_description/urdf/panda.urdf
     xarm_description/urdf/xarm7.urdf
     kinova_description/robots/kinova.urdf
+    "kinova_description/robots/kinova.urdf camera_mount=0,0,0,180,0,0"
     ur_description/urdf/ur3_robot.urdf
     ur_description/urdf/ur5_robot.urdf
     ur_description/urdf/ur10_robot.urdf
@@ -40,6 +41,7 @@ arms=(
     so_arm_description/urdf/so100.urdf
     "z1_description/urdf/z1.urdf camera_mount=0,0,0,180,0,0"
     so_arm_description/urdf/so101.urdf
+    "so_arm_description/urdf/so101.urdf camera_mount=0,0,-0.05,0,-90,0"
     talos_data/robots/talos_left_arm.urdf
 )
 

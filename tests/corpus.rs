@@ -53,11 +53,20 @@ const ARMS: &[Arm] = &[
         sets: &[],
         verdict: Verdict::Learns,
     },
-    // The camera on link 6 looks along its z axis, back into the arm.
+    // The camera on link 6 looks along its z axis, back into the arm; the refusal names the
+    // mount that learns (the next case).
     Arm {
-        urdf: "kinova_description/robots/kinova.urdf",
+        urdf: KINOVA,
         sets: &[],
-        verdict: Verdict::Refused(&["looks back into the arm"]),
+        verdict: Verdict::Refused(&[
+            "looks back into the arm",
+            "a camera looking along the link's -z axis works: with camera_mount 0,0,0,180,0,0",
+        ]),
+    },
+    Arm {
+        urdf: KINOVA,
+        sets: &[KINOVA_MOUNT],
+        verdict: Verdict::Learns,
     },
     Arm {
         urdf: "ur_description/urdf/ur3_robot.urdf",
@@ -100,6 +109,14 @@ const ARMS: &[Arm] = &[
         urdf: "so_arm_description/urdf/so101.urdf",
         sets: &[],
         verdict: Verdict::Refused(&["the camera on `gripper_link` cannot look down"]),
+    },
+    // Along −x (or ±y) at the link's origin, the wrist roll's axis, the camera sits at the
+    // surface of `wrist_link` (its roll servo), which hides the object half a millimetre in
+    // front of it; 5 cm out along the link's −z, beside the jaw, it learns.
+    Arm {
+        urdf: "so_arm_description/urdf/so101.urdf",
+        sets: &["camera_mount=0,0,-0.05,0,-90,0"],
+        verdict: Verdict::Learns,
     },
     // One arm of a humanoid, as the collection cuts it out.
     Arm {
@@ -185,6 +202,10 @@ fn every_serial_arm_learns_or_is_refused_with_its_reason() {
 
 /// The collection's UR5.
 const UR5: &str = "ur_description/urdf/ur5_robot.urdf";
+/// The collection's Kinova Jaco (j2s6s200), and the mount its refusal names: the camera
+/// looking along link 6's −z axis, out of the hand.
+const KINOVA: &str = "kinova_description/robots/kinova.urdf";
+const KINOVA_MOUNT: &str = "camera_mount=0,0,0,180,0,0";
 
 /// The UR5 of the collection with its `world_joint` placing the base at `rpy` instead of
 /// its own, written into `folder` (its meshes found through `package_paths`: the
@@ -275,4 +296,35 @@ fn a_base_upside_down_or_turned_fits_and_reaches_its_space() {
             "{space:?} turned, {own:?} as it comes"
         );
     }
+}
+
+/// The Kinova looking out of its hand was refused with a tenth of its fitted space reached:
+/// its six joints, the first three learned and joint 5 alone turning the camera down, were
+/// taken for the OSCAR-6's form, whose closed-form guess and elbow-up rule do not hold for
+/// a base axis pointing down (the inverse kinematics then answered "only an elbow-down pose
+/// reaches it"); its shoulder and elbow limits (47°..313°, 19°..341°) were sampled only up
+/// to 180°; and joint 5 (30°..330°) was given the angle within half a turn of its rest,
+/// outside its limits where a whole turn on would be inside. Now it keeps to a branch,
+/// reaches every target of a space fitted over its whole limits, with joint 5 past 180°
+/// where it needs to be; the OSCAR-6 keeps its form.
+#[test]
+fn the_kinova_looking_out_of_its_hand_reaches_its_whole_space() {
+    assert!(ArmModel::oscar6().is_oscar6_form());
+    let mut config = Config::default_config();
+    let (name, value) = KINOVA_MOUNT.split_once('=').unwrap();
+    config.set(name, value).unwrap();
+    let (model, space) = fitted(&config, &robots().join(KINOVA));
+    assert!(!model.is_oscar6_form());
+    assert_eq!(solved(&model, &space, 500), 500, "{space:?}");
+    let mut rng = ChaCha8Rng::seed_from_u64(4);
+    let (mut shoulder_past_half_turn, mut wrist_past_half_turn) = (false, false);
+    for _ in 0..200 {
+        let theta = model
+            .solve_camera_position(&space.sample(&mut rng))
+            .unwrap();
+        let q = model.check_limits(&theta).unwrap();
+        shoulder_past_half_turn |= q[1] > std::f64::consts::PI;
+        wrist_past_half_turn |= q[4] > std::f64::consts::PI;
+    }
+    assert!(shoulder_past_half_turn && wrist_past_half_turn);
 }

@@ -24,7 +24,7 @@ pub const PANDA: TestArm = TestArm {
     file: "panda/panda.urdf",
     camera_link: "panda_hand",
     learned: ["panda_joint1", "panda_joint2", "panda_joint4"],
-    boundaries: [-48.0, 58.0, -175.0, -54.0],
+    boundaries: [-39.0, 84.0, -170.0, -50.0],
 };
 
 /// The UR-style arm, its camera on `tool0`.

@@ -16,8 +16,11 @@ use std::f64::consts::TAU;
 const TOLERANCE_M: f64 = 1e-11;
 const MAX_NEWTON_STEPS: usize = 30;
 const JACOBIAN_STEP: f64 = 1e-7;
-/// Where in each learned joint's range the starting poses of a general arm lie.
+/// Where in each learned joint's range the starting poses of a general arm lie, and the
+/// poses the OSCAR-6 form's closed-form path is checked at.
 const SEED_FRACTIONS: [f64; 3] = [0.5, 0.25, 0.75];
+/// How close (rad) the closed-form path must give back a pose it is checked at.
+const FORM_CHECK_RAD: f64 = 1e-6;
 
 /// What the closed-form guess needs of the arm, from its zero pose: the shoulder's
 /// position, the upper arm's and forearm's lengths and the camera's offset from the wrist
@@ -138,6 +141,36 @@ impl ArmModel {
             }
         }
         Err("inverse kinematics did not converge".into())
+    }
+
+    /// True when the closed-form guess and the elbow-up rule give back every elbow-up pose
+    /// whose wrist fits of a 3×3×3 grid inside the learned joints' limits, and there is
+    /// at least one such pose: the check an arm of the OSCAR-6 shape passes to be solved
+    /// as the OSCAR-6 is (asked while the model takes itself to be of that form).
+    pub(super) fn closed_form_answers(&self) -> bool {
+        let at = |j: usize, f: f64| {
+            let (lower, upper) = self.joints[j].one_turn();
+            lower + (upper - lower) * f
+        };
+        let mut checked = 0;
+        for fy in SEED_FRACTIONS {
+            for fs in SEED_FRACTIONS {
+                for fe in SEED_FRACTIONS {
+                    let [y, s, e] = self.learned;
+                    let theta = Controlled::new(at(y, fy), at(s, fs), at(e, fe));
+                    let pose = self.pose_of(&theta);
+                    if !self.wrist_fits(&pose) || !self.is_elbow_up(&theta) {
+                        continue;
+                    }
+                    let back = self.solve_camera_position(&camera_centre(&pose));
+                    if !back.is_ok_and(|found| (found - theta).amax() < FORM_CHECK_RAD) {
+                        return false;
+                    }
+                    checked += 1;
+                }
+            }
+        }
+        checked > 0
     }
 
     /// Starting poses for an arm that is not of the OSCAR-6 form: the learned joints at a

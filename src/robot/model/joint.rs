@@ -33,11 +33,15 @@ impl RevoluteJoint {
         angle >= self.lower && angle <= self.upper
     }
 
-    /// The limits cut to one turn either way (−π..π for a joint with wider or no limits):
-    /// the angles worth sampling.
+    /// The angles worth sampling: the limits when they span less than a turn (wherever
+    /// they lie: 47°..313° as they are), else one turn, −π..π (a joint without limits too).
     pub fn one_turn(&self) -> (f64, f64) {
         let half = std::f64::consts::PI;
-        (self.lower.max(-half), self.upper.min(half))
+        if self.upper - self.lower < 2.0 * half {
+            (self.lower, self.upper)
+        } else {
+            (-half, half)
+        }
     }
 
     /// The middle of the limits (0 for a joint without limits).

@@ -71,6 +71,9 @@ pub struct ArmModel {
     /// The branch of its solutions the inverse kinematics of an arm not of the OSCAR-6
     /// form keeps to (`None` when no pose of the arm looks down).
     branch: Option<Branch>,
+    /// Whether the arm is of the OSCAR-6 form ([`is_oscar6_form`](Self::is_oscar6_form)),
+    /// decided once when it is built.
+    oscar6_form: bool,
 }
 
 impl ArmModel {
@@ -121,9 +124,13 @@ impl ArmModel {
             guess: GuessGeometry::default(),
             seeds: IkSeeds::default(),
             branch: None,
+            oscar6_form: false,
         };
         (model.wrist, model.rest) = Wrist::choose(&model);
+        model.oscar6_form =
+            model.dof() == 6 && model.learned == [0, 1, 2] && model.wrist == Wrist::OneJoint(4);
         model.update_derived();
+        model.oscar6_form = model.oscar6_form && model.closed_form_answers();
         if !model.is_oscar6_form() {
             model.branch = Branch::kinematic(&model);
             model.seeds = IkSeeds::of(&model);
@@ -200,10 +207,13 @@ impl ArmModel {
         &self.wrist
     }
 
-    /// True for the OSCAR-6 form: six joints, the first three learned, one wrist joint
-    /// solved in closed form (what the dynamic simulator is built for).
+    /// True for the OSCAR-6 form: six joints, the first three learned, joint 5 alone keeping
+    /// the camera looking down in closed form, and the inverse kinematics' closed-form
+    /// guess with the elbow-up rule giving back the arm's own elbow-up poses (a base axis
+    /// pointing down or limits past half a turn leave an arm of this shape out: it keeps
+    /// to a branch of its solutions instead).
     pub fn is_oscar6_form(&self) -> bool {
-        self.dof() == 6 && self.learned == [0, 1, 2] && self.wrist == Wrist::OneJoint(4)
+        self.oscar6_form
     }
 
     /// Link bodies: the root link, one per joint and the camera link.

@@ -92,6 +92,7 @@ impl Wrist {
             Wrist::OneJoint(j) => {
                 let angle = one_joint_angle(model, j, &level_frames);
                 joints[j] = angle;
+                wrap_into_limits(model, self, &mut joints);
                 // The chain again from joint j on, as `link_frames` walks it.
                 let mut frames = level_frames;
                 let mut flange = if j == 0 {

@@ -10,6 +10,11 @@
 //! to be back within 100 trials of a turn at trial 1,500 of 3,000. (`kohonen`, whose level
 //! is still falling at trial 1,500, is back after 50 trials with the wrapper and without a
 //! watch alike: docs/ADAPTATION.md.)
+//!
+//! `issgp` is checked to be back within 100 trials of a turn at trial 1,500 of 1,600 too:
+//! its level there is 2 µm after 4 steps, and the trials between the turn and its alarm
+//! (seed 1: 5) must not stay learned in the model its correction answers through
+//! (`SingleModel::unlearn_since`); learned, they kept it away for 264 trials.
 
 use eyehand::experiment::{run, Config, FourStepTrace, RunOptions};
 use eyehand::learn::change::ChangeRecovery;
@@ -20,6 +25,8 @@ use std::path::Path;
 const RUN: (usize, usize) = (1500, 600);
 /// lwpr's and ffn's: a turn before trial 1,500 of 3,000.
 const LONG_RUN: (usize, usize) = (3000, 1500);
+/// issgp's second: a turn before trial 1,500, and the 100 trials it has to be back in.
+const LATE_TURN: (usize, usize) = (1600, 1500);
 
 /// Trials `method` takes to recover from the turn under `strategy` and `recovery` in a run
 /// of `(trials, event)` (`usize::MAX`: not by the last trial).
@@ -93,6 +100,17 @@ fn issgp_corrects_sooner_than_it_forgets() {
 #[test]
 fn mlp_corrects_sooner_than_it_forgets() {
     corrects_sooner(Method::Mlp, RUN, FORGET);
+}
+
+#[test]
+fn issgp_corrects_a_late_turn_within_100_trials() {
+    let correct = recovered_after(
+        Method::Issgp,
+        LATE_TURN,
+        MergeStrategy::ChangeDetection,
+        ChangeRecovery::Correct,
+    );
+    assert!(correct <= 100, "issgp: recovered after {correct} trials");
 }
 
 #[test]

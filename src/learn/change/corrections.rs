@@ -29,7 +29,7 @@ pub(crate) const FIT_FROM: usize = 30;
 const SEED_SHARE: f64 = 0.05;
 /// Trials whose seeds are kept: an alarm dates a change within its run of positive sums,
 /// which for every event measured began at most 46 trials before it.
-const SEED_TRIALS: usize = 200;
+pub(crate) const SEED_TRIALS: usize = 200;
 /// A correction has settled when a refit moves no entry of A by more than this: only then
 /// is it fixed (lin8 learning during moves fixed a 90° turn at 59° while it still moved,
 /// and never recovered: docs/ADAPTATION.md).

@@ -12,7 +12,7 @@ mod trial_miss;
 mod watch;
 mod watched_learner;
 
-pub(crate) use corrections::Corrections;
+pub(crate) use corrections::{Corrections, SEED_TRIALS};
 pub use detector::{Alarm, ChangeDetector, DetectorSettings};
 pub(crate) use reading_correction::ReadingCorrection;
 pub use settings::{ChangeRecovery, ChangeSettings};

@@ -61,7 +61,7 @@ impl WatchedLearner {
     /// `inner` watched by `change` and recovering as its `recovery` says, its corrections
     /// made over the input box `bounds`; `patterns` says which pose pairs count.
     pub fn watched(
-        inner: Box<dyn SingleModel>,
+        mut inner: Box<dyn SingleModel>,
         change: &ChangeSettings,
         patterns: PatternSettings,
         bounds: [(f64, f64); 5],
@@ -77,6 +77,9 @@ impl WatchedLearner {
             booked: 0,
             held: Vec::new(),
         };
+        if change.recovery == ChangeRecovery::Correct {
+            inner.keep_recent_trials();
+        }
         WatchedLearner {
             inner,
             watch: Some(watch),

@@ -1,5 +1,6 @@
 //! The rank-one update of a Cholesky factor: from L with LLᵀ = A to the factor of
-//! A + xxᵀ, in O(D²) by one Givens rotation per column.
+//! A + xxᵀ, in O(D²) by one Givens rotation per column; and the downdate to that of
+//! A − xxᵀ by one hyperbolic rotation per column, which takes a learned pattern out again.
 
 use nalgebra::{DMatrix, DVector};
 
@@ -46,6 +47,31 @@ fn rotate_columns(l: &mut [f64], x: &mut [f64], n: usize) {
     }
 }
 
+/// Replaces the lower-triangular `factor` L (LLᵀ = A) by that of A − xxᵀ; `x` is used up
+/// as scratch. Returns false, with `factor` left part-way, where A − xxᵀ is not positive
+/// definite (in floating point). Called only to take patterns out after a detected change,
+/// so it runs as plain code.
+pub(super) fn rank_one_downdate(factor: &mut DMatrix<f64>, x: &mut DVector<f64>) -> bool {
+    let n = factor.nrows();
+    let (l, x) = (factor.as_mut_slice(), x.as_mut_slice());
+    for k in 0..n {
+        let column = &mut l[k * n + k..(k + 1) * n];
+        let (diagonal, below) = column.split_first_mut().expect("k < n");
+        let squared = (*diagonal - x[k]) * (*diagonal + x[k]);
+        if squared.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            return false;
+        }
+        let r = squared.sqrt();
+        let (c, s) = (r / *diagonal, x[k] / *diagonal);
+        *diagonal = r;
+        for (lik, xi) in below.iter_mut().zip(&mut x[k + 1..]) {
+            *lik = (*lik - s * *xi) / c;
+            *xi = c * *xi - s * *lik;
+        }
+    }
+    true
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -59,6 +85,26 @@ mod tests {
         let expected = a + &x * x.transpose();
         assert!((&factor * factor.transpose() - expected).amax() < 1e-12);
         assert!((0..6).all(|j| (0..j).all(|i| factor[(i, j)] == 0.0)));
+    }
+
+    #[test]
+    fn the_downdate_takes_an_update_out_again() {
+        let a = DMatrix::from_fn(6, 6, |i, j| if i == j { 2.0 + i as f64 } else { 0.3 });
+        let x = DVector::from_fn(6, |i, _| (i as f64 * 0.7).sin());
+        let before = a.cholesky().unwrap().l();
+        let mut factor = before.clone();
+        rank_one_update(&mut factor, &mut x.clone());
+        assert!(rank_one_downdate(&mut factor, &mut x.clone()));
+        assert!((&factor - &before).amax() < 1e-12, "{factor}");
+    }
+
+    #[test]
+    fn a_downdate_that_leaves_no_positive_definite_matrix_is_refused() {
+        let mut factor = DMatrix::<f64>::identity(3, 3);
+        assert!(!rank_one_downdate(
+            &mut factor,
+            &mut DVector::from_element(3, 1.0)
+        ));
     }
 
     /// The AVX2 build gives the plain loop's bits (results must not change with the CPU).

@@ -10,8 +10,14 @@
 //! one scalar factor that the weights do not depend on, so λ multiplies that scalar and
 //! the pattern is added divided by its root: the factor is scaled for real (O(D²)) only
 //! when the scalar would underflow.
+//!
+//! A learned pattern can be taken out again ([`Posterior::remove`]): a rank-one downdate of
+//! the factor and its term taken off the sums, each by the weight the pattern has now. So
+//! that the weight is known, every pattern is given the log of the shared scalar it was
+//! added under, as it would be without folding (its ticket); the scalar's log at the last
+//! fold says how far the factor was scaled since. Without forgetting every weight is 1.
 
-use super::cholesky::rank_one_update;
+use super::cholesky::{rank_one_downdate, rank_one_update};
 use nalgebra::{DMatrix, DVector, Vector3};
 
 /// Below this the shared scalar is folded into the factor and the sums.
@@ -27,6 +33,10 @@ pub(super) struct Posterior {
     /// Σₜ φₜ(yₜ − w₀ᵀφₜ)ᵀ / `scale`, one column per output.
     sums: DMatrix<f64>,
     scale: f64,
+    /// ln of the shared scalar as it would be without folding, and its value at the last
+    /// fold: `scale` is exp of their difference.
+    log_scale: f64,
+    log_folded: f64,
     /// w₀: the prior mean, one column per output.
     prior_mean: DMatrix<f64>,
     /// w, valid unless `stale`.
@@ -45,6 +55,8 @@ impl Posterior {
             factor: DMatrix::from_diagonal_element(features, features, noise),
             sums: DMatrix::zeros(features, 3),
             scale: 1.0,
+            log_scale: 0.0,
+            log_folded: 0.0,
             prior_mean: DMatrix::zeros(features, 3),
             weights: DMatrix::zeros(features, 3),
             stale: false,
@@ -52,13 +64,16 @@ impl Posterior {
         }
     }
 
-    /// Learns the pattern with features `phi` and target `y`.
-    pub(super) fn add(&mut self, phi: &DVector<f64>, y: &Vector3<f64>) {
+    /// Learns the pattern with features `phi` and target `y`; returns its ticket, which
+    /// [`Posterior::remove`] takes to take it out again.
+    pub(super) fn add(&mut self, phi: &DVector<f64>, y: &Vector3<f64>) -> f64 {
         self.scale *= self.forgetting;
+        self.log_scale += self.forgetting.ln();
         if self.scale < SMALLEST_SCALE {
             self.factor *= self.scale.sqrt();
             self.sums *= self.scale;
             self.scale = 1.0;
+            self.log_folded = self.log_scale;
         }
         let residual = y - dot_columns(&self.prior_mean, phi);
         self.scratch.copy_from(phi);
@@ -68,6 +83,28 @@ impl Posterior {
             self.sums.column_mut(i).axpy(r / self.scale, phi, 1.0);
         }
         self.stale = true;
+        self.log_scale
+    }
+
+    /// Takes out the pattern with features `phi` and target `y` that [`Posterior::add`]
+    /// learned and gave `ticket`: its term leaves A and the sums (what forgetting weighed
+    /// down at its coming stays weighed down). False, with the posterior left
+    /// part-way, where rounding leaves the factor without it not positive definite: the
+    /// caller must then restore a copy.
+    pub(super) fn remove(&mut self, phi: &DVector<f64>, y: &Vector3<f64>, ticket: f64) -> bool {
+        // The pattern's weight in the factor's and the sums' frame.
+        let weight = (self.log_folded - ticket).exp();
+        let residual = y - dot_columns(&self.prior_mean, phi);
+        self.scratch.copy_from(phi);
+        self.scratch *= weight.sqrt();
+        self.stale = true;
+        if !rank_one_downdate(&mut self.factor, &mut self.scratch) {
+            return false;
+        }
+        for (i, r) in residual.iter().enumerate() {
+            self.sums.column_mut(i).axpy(-r * weight, phi, 1.0);
+        }
+        true
     }
 
     /// The posterior mean of the weights (solved now if a pattern came since).
@@ -98,6 +135,7 @@ impl Posterior {
         self.factor *= self.noise;
         self.sums.fill(0.0);
         self.scale = 1.0;
+        (self.log_scale, self.log_folded) = (0.0, 0.0);
     }
 }
 

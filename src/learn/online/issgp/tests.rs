@@ -146,6 +146,46 @@ fn rank_one_updates_match_a_batch_solve() {
 }
 
 #[test]
+fn patterns_taken_out_again_leave_the_batch_solve_of_the_others() {
+    for forgetting in [1.0, 0.97] {
+        let (ls, noise) = (Input::repeat(0.8), 0.05);
+        let train = data(60, 5);
+        let features = features(40, &ls, 1.5);
+        let d = features.len();
+        let mut posterior = Posterior::new(d, noise, forgetting);
+        let mut phi = DVector::zeros(d);
+        let tickets: Vec<f64> = train
+            .iter()
+            .map(|(u, y)| {
+                features.write(u, &mut phi);
+                posterior.add(&phi, y)
+            })
+            .collect();
+        // The last ten out again, and one from the middle.
+        let out = |t: usize| t >= 50 || t == 20;
+        for (t, (u, y)) in train.iter().enumerate().filter(|&(t, _)| out(t)) {
+            features.write(u, &mut phi);
+            assert!(posterior.remove(&phi, y, tickets[t]));
+        }
+        let n = train.len() as i32;
+        let mut a = DMatrix::from_diagonal_element(d, d, forgetting.powi(n) * noise * noise);
+        let mut b = DMatrix::zeros(d, 3);
+        for (t, (u, y)) in train.iter().enumerate().filter(|&(t, _)| !out(t)) {
+            features.write(u, &mut phi);
+            let weight = forgetting.powi(n - 1 - t as i32);
+            a += &phi * phi.transpose() * weight;
+            b += &phi * y.transpose() * weight;
+        }
+        let batch = a.cholesky().unwrap().solve(&b);
+        let gap = (posterior.weights() - &batch).amax();
+        assert!(
+            gap < 1e-8 * batch.amax().max(1.0),
+            "λ {forgetting}: off by {gap}"
+        );
+    }
+}
+
+#[test]
 fn a_restart_keeps_the_answer_and_forgets_the_evidence() {
     let ls = Input::repeat(0.8);
     let train = data(30, 4);

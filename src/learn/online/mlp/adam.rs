@@ -31,6 +31,15 @@ impl Adam {
         }
     }
 
+    /// Becomes `other` (of as many parameters) without allocating.
+    pub(super) fn copy_from(&mut self, other: &Adam) {
+        self.rate = other.rate;
+        self.mean.copy_from_slice(&other.mean);
+        self.square.copy_from_slice(&other.square);
+        self.beta_1_power = other.beta_1_power;
+        self.beta_2_power = other.beta_2_power;
+    }
+
     /// One step of `params` against `gradient`.
     pub(super) fn step(&mut self, params: &mut [f64], gradient: &[f64]) {
         self.beta_1_power *= BETA_1;

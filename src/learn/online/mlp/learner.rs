@@ -2,11 +2,12 @@
 //! after each trial a few Adam steps on mini-batches drawn from it train the net.
 
 use super::adam::Adam;
+use super::checkpoints::Checkpoints;
 use super::network::{Input, Network};
 use super::replay_buffer::{Replay, Sample};
 use super::MlpSettings;
 use crate::learn::baselines::net::InputScaling;
-use crate::learn::change::SingleModel;
+use crate::learn::change::{SingleModel, SEED_TRIALS};
 use crate::learn::{
     adjusted_pattern, centred, LearnError, Learner, LearnerStats, Method, Observation, Query,
 };
@@ -29,6 +30,8 @@ pub struct Mlp {
     rng: ChaCha8Rng,
     /// The trial going on: it dates the patterns put into the buffer.
     trial: usize,
+    /// The net and Adam at the start of the recent trials (none unless asked for).
+    checkpoints: Checkpoints,
 }
 
 impl Mlp {
@@ -47,6 +50,7 @@ impl Mlp {
             replay: Replay::new(settings.buffer),
             rng,
             trial: 0,
+            checkpoints: Checkpoints::new(0),
         }
     }
 
@@ -138,6 +142,7 @@ impl Learner for Mlp {
 
     fn start_trial(&mut self, trial: usize) {
         self.trial = trial;
+        self.checkpoints.keep(trial, self.net.params(), &self.adam);
     }
 }
 
@@ -148,9 +153,16 @@ impl SingleModel for Mlp {
         self.replay.drop_before(changed_at);
     }
 
-    /// Drops every buffered pattern of the trials since `changed_at`: they are in the
-    /// readings the correction is about to carry back.
+    fn keep_recent_trials(&mut self) {
+        self.checkpoints = Checkpoints::new(SEED_TRIALS);
+    }
+
+    /// Drops every buffered pattern of the trials since `changed_at` and sets the net and
+    /// Adam back to where they were before it: those trials are in the readings the
+    /// correction is about to carry back.
     fn unlearn_since(&mut self, changed_at: usize) {
         self.replay.drop_since(changed_at);
+        self.checkpoints
+            .restore(changed_at, self.net.params_mut(), &mut self.adam);
     }
 }

@@ -21,9 +21,14 @@
 //! estimated change, so the steps that follow train on
 //! the changed mapping alone; the weights and Adam's moments are kept, as the old mapping
 //! is the best start the net has. Until the first pattern after the alarm there is nothing
-//! to train on and the net answers as before.
+//! to train on and the net answers as before. Under `change_recovery correct` the net's
+//! weights and Adam's state at the start of each of the last 200 trials are kept
+//! ([`checkpoints`]), and an alarm sets them back to those before the trial the change is
+//! dated to, and drops the buffered patterns since: what the net learned of the changed
+//! readings before the alarm does not stay in the net the correction carries them back to.
 
 mod adam;
+mod checkpoints;
 mod learner;
 mod network;
 mod replay_buffer;

@@ -1,16 +1,19 @@
 //! The dynamic simulator on arms other than the OSCAR-6: the Franka Panda from its real
 //! URDF (meshes as convex hulls, seven joints, the fingers held) and the hand-made UR-style
 //! arm hold a pose under gravity, end a move where the kinematic model ends it (as do the
-//! UR5 and the xArm7 of the public collection, EYEHAND_ROBOT_DATA), and run lin5 trials; lowering the Panda's hand (its seventh body) onto a box stops on it
-//! in both simulators. (The hand touching the Panda's own links is a unit test of the
-//! contact rule, robot/clearance.rs: no move that keeps the camera looking down brings it
-//! there within the Panda's limits.)
+//! UR5 and the xArm7 of the public collection, EYEHAND_ROBOT_DATA), and run lin5 trials;
+//! the SO-100, whose velocity limits lie below robot_speed, and the OSCAR-6, whose wrist
+//! follows two learned joints at once, keep every joint within its URDF velocity limit;
+//! lowering the Panda's hand (its seventh body) onto a box stops on it in both simulators.
+//! (The hand touching the Panda's own links is a unit test of the contact rule,
+//! robot/clearance.rs: no move that keeps the camera looking down brings it there within
+//! the Panda's limits.)
 
 use eyehand::experiment::setup::{fit_reach, load_arm};
 use eyehand::experiment::{run, Config, RunOptions};
 use eyehand::robot::{
     ArmModel, Drive, DynamicSettings, DynamicSim, FreeArm, Joints, KinematicSim, Obstacle,
-    ReachSpace, Simulator,
+    ReachSpace, Simulator, TrapezoidProfile,
 };
 use nalgebra::{Point3, Vector3};
 use rand::SeedableRng;
@@ -159,6 +162,41 @@ fn public_arms_settle_where_the_kinematic_model_ends_their_moves() {
             .space;
         eight_moves_settle(&model, &space);
     }
+}
+
+#[test]
+fn moves_keep_every_joint_within_its_urdf_velocity_limit() {
+    // The SO-100 limits every joint to 57.3°/s (1 rad/s), below the default robot_speed of
+    // 90°/s: its moves are paced to its limits, so eight of them settle with no joint
+    // beyond its limit (unpaced, nearly every tick of a move was a fault).
+    let robots = robot_data().join("robots");
+    let config = Config::default_config();
+    let so100 = robots.join("so_arm_description/urdf/so100.urdf");
+    let mut model = load_arm(&config, Some(&so100)).unwrap().model;
+    let space = fit_reach(&config, &mut model).unwrap().space;
+    eight_moves_settle(&model, &space);
+    // The OSCAR-6's θ5 keeps the camera looking down against θ2 and θ3 together (θ5 = 90° +
+    // θ2 − θ3): raising θ2 by 30° while θ3 drops by 30° at 90°/s would turn it at up to
+    // 147°/s, beyond its 114.6°/s.
+    let model = ArmModel::oscar6();
+    let settings = DynamicSettings::default();
+    let start = Vector3::new(0.0, 10.0, 70.0).map(f64::to_radians);
+    let delta = Vector3::new(0.0, 30.0, -30.0).map(f64::to_radians);
+    let unpaced = TrapezoidProfile::new(delta.amax(), settings.moves.speed, settings.moves.accel);
+    let mut kinematic = KinematicSim::new(model.clone(), settings.moves);
+    let mut dynamic = DynamicSim::new(model, settings);
+    kinematic.place(&start).unwrap();
+    dynamic.place(&start).unwrap();
+    let planned = kinematic.execute(&delta);
+    let done = dynamic.execute(&delta);
+    let off = (done.executed - planned.executed).amax();
+    assert!(
+        done.settled && off < 2.0 * settings.settle_position_tol,
+        "{done:?}"
+    );
+    assert!(planned.duration > unpaced.duration(), "{planned:?}");
+    let work = dynamic.work();
+    assert_eq!(work.speed_faults, 0, "{work:?}");
 }
 
 #[test]

@@ -9,7 +9,7 @@ pub(crate) mod contact_free;
 pub(crate) mod contact_march;
 pub(crate) mod floor;
 mod part;
-mod reaches;
+pub(crate) mod reaches;
 pub(crate) mod world;
 
 pub use contact_free::{ContactRule, Touch, CONTACT_MARGIN};

@@ -2,7 +2,7 @@
 //! bring them down or together: the bounds the floor and contact rules march by.
 
 use super::collision::Elements;
-use crate::robot::{ArmModel, Controlled, Shape, MAX_JOINTS};
+use crate::robot::{ArmModel, Controlled, Joints, Shape, MAX_JOINTS};
 use nalgebra::{Isometry3, Vector3};
 
 /// How far points of the arm can be from the joints' axes (m), for the floor rule's bounds.
@@ -23,6 +23,18 @@ impl Default for Reaches {
             joint: [0.0; MAX_JOINTS],
             body: [[0.0; MAX_JOINTS + 1]; MAX_JOINTS],
         }
+    }
+}
+
+impl Reaches {
+    /// How fast (m/s) a point of body `j` (1 for link 1) can come closer to body `i < j`
+    /// (0: the base, or anything fixed in the world) with the joints turning at `speeds`
+    /// (rad/s): each joint between them, its speed times how far body j reaches from its
+    /// axis.
+    pub(crate) fn closing_speed(&self, speeds: &Joints, i: usize, j: usize) -> f64 {
+        (i..j.min(speeds.len()))
+            .map(|k| speeds[k].abs() * self.body[k][j])
+            .sum()
     }
 }
 

@@ -8,6 +8,7 @@
 use super::builder::Arm;
 use crate::robot::contact::clearance::contact_pairs;
 use crate::robot::contact::collision::body_elements;
+use crate::robot::contact::reaches::{reaches, Reaches};
 use crate::robot::{ArmModel, Joints, Obstacle, MAX_JOINTS};
 use rapier3d_f64::math::Vector;
 use rapier3d_f64::parry::bounding_volume::{Aabb, BoundingVolume};
@@ -28,9 +29,16 @@ const TOUCH: f64 = 1e-3;
 const HELD_BACK: f64 = 0.1 * std::f64::consts::PI / 180.0;
 /// The floor's interaction group (bodies take groups 0 to [`MAX_JOINTS`]).
 const FLOOR: u32 = MAX_JOINTS as u32 + 1;
-/// Room (m) around each body's bounding box within which Rapier looks for contacts: more
-/// than its prediction distance (2 mm), so a contact about to form is seen forming.
+/// Room (m) around each body's bounding box within which Rapier looks for contacts, so a
+/// contact about to form is seen forming.
 const LOOK_WITHIN: f64 = 0.005;
+/// A contact Rapier finds closer than this (m), beyond how far the next tick could close it,
+/// puts the arm near it: that tick is stepped by Rapier in sub-ticks, its contact
+/// constraints acting. Rapier reports contacts up to its prediction distance (2 cm) away;
+/// counting them all would step in sub-ticks every tick of an arm whose links pass each
+/// other at a steady gap of a centimetre or two (the UR arms' wrist links two apart, their
+/// base and upper arm).
+const NEAR: f64 = LOOK_WITHIN;
 
 /// What the links may touch: the pairs of bodies the shared rule lets meet, the floor and
 /// the obstacles' bounding boxes.
@@ -40,6 +48,8 @@ pub(super) struct ContactScope {
     on: bool,
     /// Bodies (0 the base) that may touch each other.
     pairs: Vec<(usize, usize)>,
+    /// How far each body reaches from each joint's axis, to bound how fast a gap closes.
+    reaches: Reaches,
     /// The floor's height (m; negative infinity for none).
     floor_z: f64,
     /// The obstacles' boxes in the world.
@@ -51,6 +61,7 @@ impl Default for ContactScope {
         ContactScope {
             on: true,
             pairs: Vec::new(),
+            reaches: Reaches::default(),
             floor_z: f64::NEG_INFINITY,
             obstacles: Vec::new(),
         }
@@ -68,6 +79,7 @@ impl Arm {
         filters[0] = Group::empty();
         let elements: Vec<_> = (0..=model.dof()).map(|k| body_elements(model, k)).collect();
         self.scope.pairs = contact_pairs(model, &elements);
+        self.scope.reaches = reaches(model, &elements[1..]);
         for &(i, j) in &self.scope.pairs {
             filters[i].insert(Group::from_bits_retain(1 << j));
             filters[j].insert(Group::from_bits_retain(1 << i));
@@ -150,6 +162,34 @@ impl Arm {
     /// joint lags `set_point` (rad) by more than [`HELD_BACK`].
     pub(super) fn held_back(&self, set_point: &Joints) -> bool {
         self.depth > -TOUCH && (*set_point - self.joints()).amax() > HELD_BACK
+    }
+
+    /// True when a contact Rapier found at the last look is within [`NEAR`] of closing, on
+    /// top of how far the joints' speeds could close it in a tick of `dt` (s).
+    pub(super) fn near_contact(&self, dt: f64) -> bool {
+        if self.depth == f64::NEG_INFINITY {
+            return false;
+        }
+        let speeds = self.speeds();
+        let body = |handle| self.colliders.iter().position(|c| *c == Some(handle));
+        self.world.contact_pairs().any(|pair| {
+            let Some((_, contact)) = pair.find_deepest_contact() else {
+                return false;
+            };
+            let (i, j) = match (body(pair.collider1), body(pair.collider2)) {
+                (Some(a), Some(b)) => (a.min(b), a.max(b)),
+                (Some(k), None) | (None, Some(k)) => (0, k),
+                (None, None) => return false,
+            };
+            contact.dist < NEAR + dt * self.scope.reaches.closing_speed(&speeds, i, j)
+        })
+    }
+
+    /// Takes how far each body reaches from each joint's axis from `model` as it is now (a
+    /// stretched link reaches further).
+    pub(super) fn refresh_reaches(&mut self, model: &ArmModel) {
+        let elements: Vec<_> = (1..=model.dof()).map(|k| body_elements(model, k)).collect();
+        self.scope.reaches = reaches(model, &elements);
     }
 
     /// How deep (m) the deepest contact Rapier found last is; negative infinity for none.

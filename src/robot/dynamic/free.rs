@@ -7,6 +7,7 @@ use super::energy::Energy;
 use super::faults::SpeedFault;
 use super::servo_law::SetPoint;
 use super::settings::DynamicSettings;
+use crate::robot::kinematic::pace::paced_profile;
 use crate::robot::{ArmModel, Joints, RobotError, TrapezoidProfile};
 
 /// What the servos do while the arm runs.
@@ -18,7 +19,8 @@ pub enum Drive {
     Hold,
     /// The servos move every joint from the start pose to these angles (rad) along the
     /// straight joint-space line, under the trapezoidal profile of the settings' speed
-    /// and acceleration for the joint with the farthest to go (as a step move does, with
+    /// and acceleration for the joint with the farthest to go, slowed where a joint would
+    /// turn faster than its URDF velocity limit (as a step move does, with
     /// its velocity and acceleration fed forward), then hold them. A contact that holds the
     /// arm back stops the move where the arm is, which the servos then hold (as the dynamic
     /// simulator stops a move).
@@ -82,8 +84,10 @@ impl FreeArm {
         if !contacts {
             arm.remove_contacts();
         }
-        let moves = settings.moves;
-        let profile = TrapezoidProfile::new((goal - *start).amax(), moves.speed, moves.accel);
+        let (moves, line) = (settings.moves, goal - *start);
+        let limits = model.joints().iter().map(|joint| joint.velocity);
+        let rates = line.map(f64::abs);
+        let profile = paced_profile(line.amax(), moves.speed, moves.accel, &rates, limits);
         Ok(FreeArm {
             arm,
             model,

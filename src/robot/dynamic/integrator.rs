@@ -4,8 +4,9 @@
 //! the joint limits as stops; the bodies are then placed where the model's kinematics puts
 //! them (for the camera), and Rapier looks for contacts where a bounding box comes near
 //! something (contacts.rs). Where a joint has dry friction, the tick is integrated again
-//! under the friction the joints' equations give it (dry_friction.rs); while a
-//! link is near something, Rapier steps it in sub-ticks of at most 1 ms with at least 4
+//! under the friction the joints’ equations give it (dry_friction.rs); while a
+//! link is near something (within 5 mm, on top of how far the joints' speeds could close
+//! the gap in a tick: contacts.rs), Rapier steps it in sub-ticks of at most 1 ms with at least 4
 //! solver iterations, the servo law run at each (its contact constraints act there), the
 //! servos holding the arm where it is for the rest of the tick once a contact holds it
 //! back from its set-point.
@@ -67,7 +68,7 @@ impl Arm {
         set_point: Option<&SetPoint>,
         settings: &DynamicSettings,
     ) {
-        if self.depth > f64::NEG_INFINITY {
+        if self.near_contact(settings.dt) {
             return self.step_in_contact(model, set_point, settings);
         }
         let (q, v) = (self.joints(), self.speeds());

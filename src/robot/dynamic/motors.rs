@@ -37,7 +37,7 @@ impl Arm {
         settings: &DynamicSettings,
     ) {
         let dt = settings.dt;
-        let touching = self.depth > f64::NEG_INFINITY;
+        let touching = self.near_contact(dt);
         let substeps = match touching {
             true => settings.rapier_substeps.max(contact_substeps(dt)),
             false => settings.rapier_substeps.max(1),

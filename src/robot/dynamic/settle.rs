@@ -4,7 +4,7 @@
 use super::faults::SpeedFault;
 use super::servo_law::SetPoint;
 use super::sim::{DynamicSim, SimCounters};
-use crate::robot::{Controlled, Joints, Simulator, TrapezoidProfile};
+use crate::robot::{Controlled, Joints, Simulator};
 
 impl DynamicSim {
     /// One control tick: the servos sent to `set_point`, the arm stepped.
@@ -55,13 +55,13 @@ impl DynamicSim {
     }
 
     /// Feeds the move from set-point `start` along `delta` (θ1..θ3) to the servos under the
-    /// trapezoidal profile, one tick per step, until a contact stops it: the steps taken,
+    /// plan's trapezoidal profile (paced so that no joint is sent faster than its URDF
+    /// velocity limit), one tick per step, until a contact stops it: the steps taken,
     /// and whether a contact stopped it. Each tick sends the set-point the step ends at,
     /// with its speed and acceleration there (fed forward), so the arm arrives with the
     /// profile instead of lagging behind it.
     pub(super) fn follow(&mut self, start: &Joints, delta: &Controlled) -> (usize, bool) {
-        let moves = self.settings.moves;
-        let profile = TrapezoidProfile::new(delta.amax(), moves.speed, moves.accel);
+        let profile = self.plan.last_profile();
         let dt = self.settings.dt;
         let ticks = (profile.duration() / dt).ceil() as usize;
         let from = self.model().controlled_of(start);

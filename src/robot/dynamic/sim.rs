@@ -256,6 +256,7 @@ impl Simulator for DynamicSim {
             collider.set_shape(contact_compound(&elements));
         }
         self.arm.seen[link] = (!elements.is_empty()).then(|| compound(&elements));
+        self.arm.refresh_reaches(model);
         self.arm.refresh_bodies();
         self.settle();
         Ok(())

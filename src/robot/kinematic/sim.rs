@@ -2,6 +2,7 @@
 //! is instant in wall time; its simulated duration follows the trapezoidal profile.
 
 use super::motion::{last_holding, limit_stop_fraction, TrapezoidProfile};
+use super::pace::{paced_profile, pieces, turn_rates};
 use crate::robot::contact::clearance::ArmGeometry;
 use crate::robot::contact::collision::{body_elements, MoveStart};
 use crate::robot::contact::floor::FloorRule;
@@ -34,6 +35,8 @@ pub struct KinematicSim {
     /// The bodies for the self-collision and obstacle rule.
     geometry: ArmGeometry,
     work: SimWork,
+    /// The last move's profile in time.
+    profile: TrapezoidProfile,
     /// The last move, when the poses along moves are kept (for frames taken during them).
     last_move: Option<LastMove>,
     /// Whether the poses along moves are kept.
@@ -66,6 +69,7 @@ impl KinematicSim {
             obstacles: Vec::new(),
             geometry: ArmGeometry::default(),
             work: SimWork::default(),
+            profile: TrapezoidProfile::new(0.0, settings.speed, settings.accel),
             last_move: None,
             keep_moves: false,
         };
@@ -112,6 +116,44 @@ impl KinematicSim {
             Vector3::from_fn(|i, _| joints[learned[i]].lower),
             Vector3::from_fn(|i, _| joints[learned[i]].upper),
         )
+    }
+
+    /// The profile of a move along `executed` from the arm as it is now: `robot_speed`,
+    /// slowed where a joint of the chain, learned or following the wrist's solution, would
+    /// turn faster than its URDF velocity limit (pace.rs), the wrist sampled along the line
+    /// as the dynamic simulator's set-points follow it (held where it has no solution).
+    fn paced(&self, executed: &Controlled) -> TrapezoidProfile {
+        let distance = executed.amax();
+        let start = self.here.pose.joints;
+        let mut near = start;
+        let learned = self.model.learned();
+        let rates = turn_rates(&start, pieces(distance), |s| {
+            let pose = self
+                .model
+                .pose_near(&(self.here.theta + executed * s), &near);
+            if pose.wrist_found {
+                near = pose.joints;
+                return near;
+            }
+            let held = |j: usize| match learned.contains(&j) {
+                true => pose.joints[j],
+                false => f64::NAN,
+            };
+            Joints::from_fn(start.len(), held)
+        });
+        let limits = self.model.joints().iter().map(|joint| joint.velocity);
+        paced_profile(
+            distance,
+            self.settings.speed,
+            self.settings.accel,
+            &rates,
+            limits,
+        )
+    }
+
+    /// The profile of the last move (the one the dynamic simulator's set-points follow).
+    pub(crate) fn last_profile(&self) -> TrapezoidProfile {
+        self.profile
     }
 
     /// The last fraction of the way along `delta` at which the wrist still has a solution
@@ -206,12 +248,12 @@ impl Simulator for KinematicSim {
             end_pose = self.model.pose_near(&after, &self.here.pose.joints);
         }
         let near = self.here.pose.joints;
-        self.here = MoveStart::at(&self.model, end_pose);
         let executed = after - theta;
+        let profile = self.paced(&executed);
+        self.here = MoveStart::at(&self.model, end_pose);
         self.nearest = (self.nearest - self.geometry.closing(&self.model, &executed)).max(0.0);
         report.executed = executed;
-        let profile =
-            TrapezoidProfile::new(executed.amax(), self.settings.speed, self.settings.accel);
+        self.profile = profile;
         report.duration = profile.duration();
         if self.keep_moves {
             self.last_move = Some(LastMove {

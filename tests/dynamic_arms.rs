@@ -201,14 +201,17 @@ fn moves_keep_every_joint_within_its_urdf_velocity_limit() {
 
 #[test]
 fn lin5_runs_on_the_dynamic_panda() {
-    // 40 trials, seed 1 (about a second in the test profile): measured 2 failed trials,
-    // no settle time-out, the mean distance 87.8 mm after step 1 and 2.5 mm after step 5.
+    // 40 trials, seed 1 (about a second in the test profile): measured 1 failed trial,
+    // no settle time-out, the mean distance 58.1 mm after step 1 and 2.3 mm after step 5.
     let data = tempfile::tempdir().unwrap();
     let mut config = Config::default_config();
     for (name, value) in PANDA.sets() {
         config.assign(name, &value).unwrap();
     }
     config.assign("sim", "dynamic").unwrap();
+    // The study's standoff: the sized one (15 cm here) loses more young trials' objects
+    // from the image (7 of these 40 against 1: docs/ARMS.md), which is not this test's point.
+    config.assign("standoff", "20").unwrap();
     config.trials = 40;
     config.seed = 1;
     config.check().unwrap();

@@ -11,11 +11,17 @@ use crate::robot::Joints;
 pub(crate) const LIMIT_SHARE: f64 = 0.99;
 
 /// Pieces per radian of the lead joint's turn in which a move's line is sampled for the
-/// following joints' rates (one every 1.15°: about two control ticks of a move at 90°/s).
-const PIECES_PER_RAD: f64 = 50.0;
+/// following joints' rates (one every 3.6°: about seven control ticks of a move at 90°/s).
+const PIECES_PER_RAD: f64 = 16.0;
 
 /// The most pieces a move's line is sampled in.
 const MOST_PIECES: usize = 128;
+/// Pieces a long move's line is sampled in first: a move whose coarse rates, grown by
+/// [`COARSE_MARGIN`], keep every joint within its limit is not sampled finely (most moves;
+/// on the OSCAR-6, whose wrist follows θ2 and θ3 linearly, the coarse rates are exact).
+pub(crate) const COARSE_PIECES: usize = 4;
+/// How much faster than its coarse sampling shows a joint may turn somewhere along a move.
+pub(crate) const COARSE_MARGIN: f64 = 1.1;
 
 /// The profile of a move whose lead joint turns `distance` (rad) at up to `speed` (rad/s),
 /// accelerating at `accel` (rad/s²), where each joint k turns at most `rates[k]` (rad per
@@ -141,6 +147,6 @@ mod tests {
         assert_eq!(rates[1], 0.0);
         assert_eq!(pieces(0.0), 1);
         assert_eq!(pieces(10.0), MOST_PIECES);
-        assert_eq!(pieces(0.1), 5);
+        assert_eq!(pieces(0.1), 2);
     }
 }

@@ -2,7 +2,7 @@
 //! is instant in wall time; its simulated duration follows the trapezoidal profile.
 
 use super::motion::{last_holding, limit_stop_fraction, TrapezoidProfile};
-use super::pace::{paced_profile, pieces, turn_rates};
+use super::pace::{paced_profile, pieces, turn_rates, COARSE_MARGIN, COARSE_PIECES};
 use crate::robot::contact::clearance::ArmGeometry;
 use crate::robot::contact::collision::{body_elements, MoveStart};
 use crate::robot::contact::floor::FloorRule;
@@ -122,12 +122,39 @@ impl KinematicSim {
     /// slowed where a joint of the chain, learned or following the wrist's solution, would
     /// turn faster than its URDF velocity limit (pace.rs), the wrist sampled along the line
     /// as the dynamic simulator's set-points follow it (held where it has no solution).
+    /// A long move is first sampled in [`COARSE_PIECES`]; where even its rates grown by
+    /// [`COARSE_MARGIN`] keep every joint within its limit, it runs at `robot_speed`
+    /// without the fine sampling.
     fn paced(&self, executed: &Controlled) -> TrapezoidProfile {
         let distance = executed.amax();
+        let limits = || self.model.joints().iter().map(|joint| joint.velocity);
+        let profile = |rates: &Joints| {
+            paced_profile(
+                distance,
+                self.settings.speed,
+                self.settings.accel,
+                rates,
+                limits(),
+            )
+        };
+        let fine = pieces(distance);
+        if fine > COARSE_PIECES {
+            let coarse = self.turn_rates_along(executed, COARSE_PIECES) * COARSE_MARGIN;
+            let unpaced = TrapezoidProfile::new(distance, self.settings.speed, self.settings.accel);
+            if profile(&coarse) == unpaced {
+                return unpaced;
+            }
+        }
+        profile(&self.turn_rates_along(executed, fine))
+    }
+
+    /// Each joint's fastest turn per whole move along `executed` from the arm as it is now,
+    /// sampled in `n` pieces (pace.rs's `turn_rates`).
+    fn turn_rates_along(&self, executed: &Controlled, n: usize) -> Joints {
         let start = self.here.pose.joints;
         let mut near = start;
         let learned = self.model.learned();
-        let rates = turn_rates(&start, pieces(distance), |s| {
+        turn_rates(&start, n, |s| {
             let pose = self
                 .model
                 .pose_near(&(self.here.theta + executed * s), &near);
@@ -140,15 +167,7 @@ impl KinematicSim {
                 false => f64::NAN,
             };
             Joints::from_fn(start.len(), held)
-        });
-        let limits = self.model.joints().iter().map(|joint| joint.velocity);
-        paced_profile(
-            distance,
-            self.settings.speed,
-            self.settings.accel,
-            &rates,
-            limits,
-        )
+        })
     }
 
     /// The profile of the last move (the one the dynamic simulator's set-points follow).

@@ -10,7 +10,7 @@
 //! the Panda's limits.)
 
 use eyehand::experiment::setup::{fit_reach, load_arm};
-use eyehand::experiment::{run, Config, RunOptions};
+use eyehand::experiment::{run, Config, RunOptions, Source, Sources};
 use eyehand::robot::{
     ArmModel, Drive, DynamicSettings, DynamicSim, FreeArm, Joints, KinematicSim, Obstacle,
     ReachSpace, Simulator, TrapezoidProfile,
@@ -209,13 +209,15 @@ fn lin5_runs_on_the_dynamic_panda() {
         config.assign(name, &value).unwrap();
     }
     config.assign("sim", "dynamic").unwrap();
-    // The study's standoff: the sized one (15 cm here) loses more young trials' objects
-    // from the image (7 of these 40 against 1: docs/ARMS.md), which is not this test's point.
-    config.assign("standoff", "20").unwrap();
+    // The study's standoff, given as a program would: the one sized to the Panda loses more
+    // young trials' objects from the image (7 of these 40 against 1), not this test's point.
+    let mut sources = Sources::default();
+    sources.record("standoff", Source::Program);
     config.trials = 40;
     config.seed = 1;
     config.check().unwrap();
     let options = RunOptions {
+        sources,
         urdf: Some(PANDA.urdf()),
         ..RunOptions::new(config, data.path())
     };

@@ -124,25 +124,37 @@ fn rank_one_updates_match_a_batch_solve() {
         let train = data(60, 3);
         let features = features(40, &ls, 1.5);
         let mut posterior = trained(&features, noise, forgetting, &train);
-        let d = features.len();
-        // A = λⁿ σn² I + Σ λⁿ⁻ᵗ φₜφₜᵀ, b = Σ λⁿ⁻ᵗ φₜ yₜᵀ.
-        let n = train.len() as i32;
-        let mut a = DMatrix::from_diagonal_element(d, d, forgetting.powi(n) * noise * noise);
-        let mut b = DMatrix::zeros(d, 3);
-        let mut phi = DVector::zeros(d);
-        for (t, (u, y)) in train.iter().enumerate() {
-            features.write(u, &mut phi);
-            let weight = forgetting.powi(n - 1 - t as i32);
-            a += &phi * phi.transpose() * weight;
-            b += &phi * y.transpose() * weight;
-        }
-        let batch = a.cholesky().unwrap().solve(&b);
+        let batch = batch_weights(&features, &train, noise, forgetting, |_| true);
         let gap = (posterior.weights() - &batch).amax();
         assert!(
             gap < 1e-9 * batch.amax().max(1.0),
             "λ {forgetting}: off by {gap}"
         );
     }
+}
+
+/// The weights a batch solve gives the patterns of `train` that `kept(t)` keeps, each
+/// weighed as the posterior forgets: A = λⁿ σn² I + Σ λⁿ⁻ᵗ φₜφₜᵀ, b = Σ λⁿ⁻ᵗ φₜ yₜᵀ, n
+/// counting every pattern of `train`.
+fn batch_weights(
+    features: &Features,
+    train: &[(Input, Vector3<f64>)],
+    noise: f64,
+    forgetting: f64,
+    kept: impl Fn(usize) -> bool,
+) -> DMatrix<f64> {
+    let d = features.len();
+    let n = train.len() as i32;
+    let mut a = DMatrix::from_diagonal_element(d, d, forgetting.powi(n) * noise * noise);
+    let mut b = DMatrix::zeros(d, 3);
+    let mut phi = DVector::zeros(d);
+    for (t, (u, y)) in train.iter().enumerate().filter(|&(t, _)| kept(t)) {
+        features.write(u, &mut phi);
+        let weight = forgetting.powi(n - 1 - t as i32);
+        a += &phi * phi.transpose() * weight;
+        b += &phi * y.transpose() * weight;
+    }
+    a.cholesky().unwrap().solve(&b)
 }
 
 #[test]
@@ -167,16 +179,7 @@ fn patterns_taken_out_again_leave_the_batch_solve_of_the_others() {
             features.write(u, &mut phi);
             assert!(posterior.remove(&phi, y, tickets[t]));
         }
-        let n = train.len() as i32;
-        let mut a = DMatrix::from_diagonal_element(d, d, forgetting.powi(n) * noise * noise);
-        let mut b = DMatrix::zeros(d, 3);
-        for (t, (u, y)) in train.iter().enumerate().filter(|&(t, _)| !out(t)) {
-            features.write(u, &mut phi);
-            let weight = forgetting.powi(n - 1 - t as i32);
-            a += &phi * phi.transpose() * weight;
-            b += &phi * y.transpose() * weight;
-        }
-        let batch = a.cholesky().unwrap().solve(&b);
+        let batch = batch_weights(&features, &train, noise, forgetting, |t| !out(t));
         let gap = (posterior.weights() - &batch).amax();
         assert!(
             gap < 1e-8 * batch.amax().max(1.0),

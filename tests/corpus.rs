@@ -105,24 +105,38 @@ const ARMS: &[Arm] = &[
         sets: &["camera_mount=0,0,0,180,0,0"],
         verdict: Verdict::Learns,
     },
+    // Along −x (or ±y) at the link's origin, the wrist roll's axis, the camera sits at the
+    // surface of `wrist_link` (its roll servo), which hides the object half a millimetre in
+    // front of it; the refusal names the mount 5 cm out of the arm (along the link's −z,
+    // beside the jaw), which learns (the next case).
     Arm {
         urdf: "so_arm_description/urdf/so101.urdf",
         sets: &[],
-        verdict: Verdict::Refused(&["the camera on `gripper_link` cannot look down"]),
+        verdict: Verdict::Refused(&[
+            "the camera on `gripper_link` cannot look down",
+            "a camera looking along the link's -x axis and moved 5 cm out of the arm along its \
+             -z axis works: with camera_mount 0,0,-0.05,0,-90,0",
+        ]),
     },
-    // Along −x (or ±y) at the link's origin, the wrist roll's axis, the camera sits at the
-    // surface of `wrist_link` (its roll servo), which hides the object half a millimetre in
-    // front of it; 5 cm out along the link's −z, beside the jaw, it learns.
     Arm {
         urdf: "so_arm_description/urdf/so101.urdf",
         sets: &["camera_mount=0,0,-0.05,0,-90,0"],
         verdict: Verdict::Learns,
     },
-    // One arm of a humanoid, as the collection cuts it out.
+    // One arm of a humanoid, as the collection cuts it out: the refusal names the wrist
+    // joint whose limits stop it, and what each other axis of the link met.
     Arm {
         urdf: "talos_data/robots/talos_left_arm.urdf",
         sets: &[],
-        verdict: Verdict::Refused(&["the wrist could not look down at 82%"]),
+        verdict: Verdict::Refused(&[
+            "the wrist could not look down at 82% (at 20% it would have to turn \
+             `arm_left_2_joint` outside its limits, 0°..165°; at 62% no angles of its joints \
+             turn the camera down)",
+            "no other axis of the camera link does either (along -z: no reach space fits",
+            "along x: no reach space fits, the wrist looking down at 100% of the poses sampled",
+            "along y: the wrist cannot turn it down): as its learned joints are, no camera on \
+             this link looking along one of its axes lets the arm work looking down",
+        ]),
     },
 ];
 

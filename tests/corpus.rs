@@ -124,7 +124,8 @@ const ARMS: &[Arm] = &[
         verdict: Verdict::Learns,
     },
     // One arm of a humanoid, as the collection cuts it out: the refusal names the wrist
-    // joint whose limits stop it, and what each other axis of the link met.
+    // joint whose limits stop it, what each other axis of the link met, the joints learned
+    // and those left to the wrist, and the entries a user can change.
     Arm {
         urdf: "talos_data/robots/talos_left_arm.urdf",
         sets: &[],
@@ -134,8 +135,12 @@ const ARMS: &[Arm] = &[
              turn the camera down)",
             "no other axis of the camera link does either (along -z: no reach space fits",
             "along x: no reach space fits, the wrist looking down at 100% of the poses sampled",
-            "along y: the wrist cannot turn it down): as its learned joints are, no camera on \
-             this link looking along one of its axes lets the arm work looking down",
+            "along y: the wrist cannot turn it down): no camera on this link looking along one \
+             of its axes lets the arm work looking down with `arm_left_3_joint`, \
+             `arm_left_4_joint`, `arm_left_6_joint` learned (the others, `arm_left_2_joint`, \
+             `arm_left_5_joint`, `arm_left_7_joint`, left to turn it down); to use this arm, \
+             name other joints for it to learn with learned_joints, another link for the \
+             camera with camera_link, or say how the camera is mounted with camera_mount",
         ]),
     },
 ];

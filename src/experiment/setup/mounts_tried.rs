@@ -66,6 +66,9 @@ pub struct NoOtherMount {
     /// Each mount tried (the link's axis the camera looked along, and how far it was
     /// moved out of the arm where it was) and why it did not do, in the order tried.
     pub tried: Vec<(String, String)>,
+    /// The joints the arm learns, and the other joints of its chain, left to turn the
+    /// camera down (URDF names); both empty when the arm could not be read with any mount.
+    pub joints: (Vec<String>, Vec<String>),
 }
 
 impl std::fmt::Display for NoOtherMount {
@@ -75,11 +78,24 @@ impl std::fmt::Display for NoOtherMount {
             .iter()
             .map(|(mount, why)| format!("along {mount}: {why}"))
             .collect();
+        let named = |joints: &[String]| {
+            let named: Vec<String> = joints.iter().map(|j| format!("`{j}`")).collect();
+            named.join(", ")
+        };
+        let joints = match &self.joints {
+            (learned, others) if !learned.is_empty() => format!(
+                " with {} learned (the others, {}, left to turn it down)",
+                named(learned),
+                named(others)
+            ),
+            _ => String::new(),
+        };
         write!(
             f,
-            "no other axis of the camera link does either ({}): as its learned joints are, \
-             no camera on this link looking along one of its axes lets the arm work looking \
-             down; if the camera is mounted otherwise, say how with camera_mount",
+            "no other axis of the camera link does either ({}): no camera on this link looking \
+             along one of its axes lets the arm work looking down{joints}; to use this arm, \
+             name other joints for it to learn with learned_joints, another link for the \
+             camera with camera_link, or say how the camera is mounted with camera_mount",
             tried.join("; ")
         )
     }

@@ -171,7 +171,32 @@ fn other_mount(
             )),
         }
     }
+    search.joints = joints(config, urdf);
     Err(search)
+}
+
+/// The joints the arm of `urdf` with `config` learns and the other joints of its chain
+/// (URDF names), as the arm is read with the config's mount or, where that cannot be read,
+/// with the first of [`TURNS`] that can; both empty when none can.
+fn joints(config: &Config, urdf: Option<&Path>) -> (Vec<String>, Vec<String>) {
+    let mounts = std::iter::once(config.camera_mount.rpy_deg).chain(TURNS.map(|(rpy, _)| rpy));
+    let model = mounts.into_iter().find_map(|rpy_deg| {
+        let mut turned = config.clone();
+        turned.camera_mount.rpy_deg = rpy_deg;
+        load_arm(&turned, urdf).ok()
+    });
+    let Some(model) = model.map(|arm| arm.model) else {
+        return (Vec::new(), Vec::new());
+    };
+    let learned = model.learned();
+    let name = |j: usize| model.joints()[j].name.clone();
+    (
+        learned.iter().map(|&j| name(j)).collect(),
+        (0..model.dof())
+            .filter(|j| !learned.contains(j))
+            .map(name)
+            .collect(),
+    )
 }
 
 /// The arm of `urdf` with `config` and the camera mounted at `mount`, once its checks pass

@@ -143,6 +143,23 @@ const ARMS: &[Arm] = &[
              camera with camera_link, or say how the camera is mounted with camera_mount",
         ]),
     },
+    // With its shoulder's second joint, upper arm roll and elbow learned and a floor 1.2 m
+    // below, along −z (and ±y) the arm passes every check made before a run, but no
+    // pre-learning move is made and the learner answers zero moves: a mount with which the
+    // arm never moves is no proposal.
+    Arm {
+        urdf: "talos_data/robots/talos_left_arm.urdf",
+        sets: &[
+            "learned_joints=arm_left_2_joint,arm_left_3_joint,arm_left_4_joint",
+            "floor_z=-120",
+        ],
+        verdict: Verdict::Refused(&[
+            "looks back into the arm",
+            "no other axis of the camera link does either (along -z: the arm stays at its \
+             start in each of its first 200 trials;",
+            "along y: the arm stays at its start in each of its first 200 trials)",
+        ]),
+    },
 ];
 
 fn robots() -> PathBuf {

@@ -15,6 +15,9 @@ pub(super) enum Unfit {
     /// More than half of the short run's first trials failed (how many), or it could not
     /// be made (`None`).
     Failed(Option<usize>),
+    /// The arm stayed at its start in every one of the short run's first trials: the
+    /// learner, given no pattern, answered zero moves.
+    Still,
 }
 
 impl std::fmt::Display for Unfit {
@@ -24,6 +27,10 @@ impl std::fmt::Display for Unfit {
                 write!(f, "it fails {failed} of its first {TRIED_TRIALS} trials")
             }
             Unfit::Failed(None) => write!(f, "its first trials cannot be run"),
+            Unfit::Still => write!(
+                f,
+                "the arm stays at its start in each of its first {TRIED_TRIALS} trials"
+            ),
             Unfit::Refused(refusal) => write!(f, "{}", refused_in_short(refusal)),
         }
     }

@@ -1,8 +1,8 @@
 //! Another mount for a camera refused as the camera link's z axis points it: the link's
 //! other axes tried in turn, then, along those from which the arm hid the object at the
 //! pre-learning starts, the camera moved out of the arm; the first mount with which the arm
-//! passes every check made before a run and most of a short run's first trials succeed is
-//! what the refusal then proposes.
+//! passes every check made before a run, most of a short run's first trials succeed and
+//! the arm moves in them is what the refusal then proposes.
 
 use crate::camera::NotSeen;
 use crate::experiment::run::trial_driver::TrialDriver;
@@ -10,7 +10,7 @@ use crate::experiment::setup::mounts_tried::{NoOtherMount, Unfit};
 use crate::experiment::setup::start_check::PrelearningFault;
 use crate::experiment::setup::{arm_settings, load_arm};
 use crate::experiment::{
-    CameraMount, Config, Event, PreflightError, RunError, RunSetup, Source, Sources,
+    CameraMount, Config, Event, PreflightError, RunError, RunSetup, Source, Sources, STILL_DEG,
 };
 use crate::robot::description::{DescriptionError, DescriptionErrorKind as Kind};
 use crate::robot::{ArmModel, ReachSpace};
@@ -199,9 +199,9 @@ fn joints(config: &Config, urdf: Option<&Path>) -> (Vec<String>, Vec<String>) {
     )
 }
 
-/// The arm of `urdf` with `config` and the camera mounted at `mount`, once its checks pass
-/// and at most half of its first `TRIED_TRIALS` trials fail: its reach space and how many
-/// failed.
+/// The arm of `urdf` with `config` and the camera mounted at `mount`, once its checks pass,
+/// at most half of its first `TRIED_TRIALS` trials fail and the arm moves in one of them at
+/// least: its reach space and how many failed.
 fn tried(
     config: &Config,
     urdf: Option<&Path>,
@@ -212,9 +212,11 @@ fn tried(
     let mut tried = config.clone();
     tried.camera_mount = mount;
     let setup = RunSetup::checked(tried, urdf, events.to_vec(), sources).map_err(Unfit::Refused)?;
-    match failed_first_trials(&setup) {
-        Some(failed) if 2 * failed <= TRIED_TRIALS => Ok((setup.reach, failed)),
-        failed => Err(Unfit::Failed(failed)),
+    match first_trials(&setup) {
+        Some((failed, _)) if 2 * failed > TRIED_TRIALS => Err(Unfit::Failed(Some(failed))),
+        Some((_, 0)) => Err(Unfit::Still),
+        Some((failed, _)) => Ok((setup.reach, failed)),
+        None => Err(Unfit::Failed(None)),
     }
 }
 
@@ -277,17 +279,19 @@ fn nearest_axis(v: &Vector3<f64>) -> ([f64; 3], &'static str) {
         .expect("six axes")
 }
 
-/// How many of the first [`TRIED_TRIALS`] trials of `setup` fail (events left out);
-/// `None` when its learner cannot be built or a trial stops the run.
-fn failed_first_trials(setup: &RunSetup) -> Option<usize> {
+/// How many of the first [`TRIED_TRIALS`] trials of `setup` fail, and in how many the arm
+/// moves from its start (events left out); `None` when its learner cannot be built or a
+/// trial stops the run.
+fn first_trials(setup: &RunSetup) -> Option<(usize, usize)> {
     let mut driver =
         TrialDriver::start(setup.trial_loop(), setup.learner(None).ok()?, Vec::new()).ok()?;
-    let mut failed = 0;
+    let (mut failed, mut moved) = (0, 0);
     for trial in 1..=TRIED_TRIALS {
         let outcome = driver.next(trial, &mut |_, _| {}).ok()?;
         failed += usize::from(outcome.failure.is_some());
+        moved += usize::from(outcome.moved_deg >= STILL_DEG);
     }
-    Some(failed)
+    Some((failed, moved))
 }
 
 /// True when `refusal` is about where the camera looks: no wrist pose turns it down, it

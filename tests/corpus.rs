@@ -105,24 +105,60 @@ const ARMS: &[Arm] = &[
         sets: &["camera_mount=0,0,0,180,0,0"],
         verdict: Verdict::Learns,
     },
+    // Along −x (or ±y) at the link's origin, the wrist roll's axis, the camera sits at the
+    // surface of `wrist_link` (its roll servo), which hides the object half a millimetre in
+    // front of it; the refusal names the mount 5 cm out of the arm (along the link's −z,
+    // beside the jaw), which learns (the next case).
     Arm {
         urdf: "so_arm_description/urdf/so101.urdf",
         sets: &[],
-        verdict: Verdict::Refused(&["the camera on `gripper_link` cannot look down"]),
+        verdict: Verdict::Refused(&[
+            "the camera on `gripper_link` cannot look down",
+            "a camera looking along the link's -x axis and moved 5 cm out of the arm along its \
+             -z axis works: with camera_mount 0,0,-0.05,0,-90,0",
+        ]),
     },
-    // Along −x (or ±y) at the link's origin, the wrist roll's axis, the camera sits at the
-    // surface of `wrist_link` (its roll servo), which hides the object half a millimetre in
-    // front of it; 5 cm out along the link's −z, beside the jaw, it learns.
     Arm {
         urdf: "so_arm_description/urdf/so101.urdf",
         sets: &["camera_mount=0,0,-0.05,0,-90,0"],
         verdict: Verdict::Learns,
     },
-    // One arm of a humanoid, as the collection cuts it out.
+    // One arm of a humanoid, as the collection cuts it out: the refusal names the wrist
+    // joint whose limits stop it, what each other axis of the link met, the joints learned
+    // and those left to the wrist, and the entries a user can change.
     Arm {
         urdf: "talos_data/robots/talos_left_arm.urdf",
         sets: &[],
-        verdict: Verdict::Refused(&["the wrist could not look down at 82%"]),
+        verdict: Verdict::Refused(&[
+            "the wrist could not look down at 82% (at 20% it would have to turn \
+             `arm_left_2_joint` outside its limits, 0°..165°; at 62% no angles of its joints \
+             turn the camera down)",
+            "no other axis of the camera link does either (along -z: no reach space fits",
+            "along x: no reach space fits, the wrist looking down at 100% of the poses sampled",
+            "along y: the wrist cannot turn it down): no camera on this link looking along one \
+             of its axes lets the arm work looking down with `arm_left_3_joint`, \
+             `arm_left_4_joint`, `arm_left_6_joint` learned (the others, `arm_left_2_joint`, \
+             `arm_left_5_joint`, `arm_left_7_joint`, left to turn it down); to use this arm, \
+             name other joints for it to learn with learned_joints, another link for the \
+             camera with camera_link, or say how the camera is mounted with camera_mount",
+        ]),
+    },
+    // With its shoulder's second joint, upper arm roll and elbow learned and a floor 1.2 m
+    // below, along −z (and ±y) the arm passes every check made before a run, but no
+    // pre-learning move is made and the learner answers zero moves: a mount with which the
+    // arm never moves is no proposal.
+    Arm {
+        urdf: "talos_data/robots/talos_left_arm.urdf",
+        sets: &[
+            "learned_joints=arm_left_2_joint,arm_left_3_joint,arm_left_4_joint",
+            "floor_z=-120",
+        ],
+        verdict: Verdict::Refused(&[
+            "looks back into the arm",
+            "no other axis of the camera link does either (along -z: the arm stays at its \
+             start in each of its first 200 trials;",
+            "along y: the arm stays at its start in each of its first 200 trials)",
+        ]),
     },
 ];
 

@@ -125,7 +125,8 @@ fn run_case(name: &str, value: &str, config: Config, data: &Path) -> Outcome {
             RunError::Preflight(_)
             | RunError::Urdf(_)
             | RunError::ArmEntry { .. }
-            | RunError::OtherMount { .. },
+            | RunError::OtherMount { .. }
+            | RunError::NoOtherMount { .. },
         ) => Outcome::RefusedUpFront,
         Err(e) => {
             assert!(

@@ -68,7 +68,8 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
     // A camera refused as its link's z axis points it: which other axis would do.
     let refused =
         |refusal: String, looks: bool| match proposed_mount(&config, urdf, &[], &sources, looks) {
-            Some(other) => bad_input(format!("{refusal}; {other}")),
+            Some(Ok(other)) => bad_input(format!("{refusal}; {other}")),
+            Some(Err(search)) => bad_input(format!("{refusal}; {search}")),
             None => bad_input(refusal),
         };
     let loaded =
@@ -83,7 +84,7 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
         ReachSetting::Given(_) => None,
     };
     let space = match &fit {
-        Some(fit) => fit.as_ref().map(|fit| fit.space).map_err(|why| *why),
+        Some(fit) => fit.as_ref().map(|fit| fit.space).map_err(|why| why.clone()),
         None => reach_space(&config, &mut model),
     }
     .map_err(|why| {

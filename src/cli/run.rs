@@ -104,6 +104,7 @@ pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
         | RunError::ArmEntry { .. }
         | RunError::Preflight(_)
         | RunError::OtherMount { .. }
+        | RunError::NoOtherMount { .. }
         | RunError::Event { .. } => bad_input(e),
         _ => failed(e),
     })?;

@@ -181,6 +181,7 @@ fn run_one_cell(folder: &StudyFolder, index: usize, stop: StopRequest) -> Result
             | RunError::ArmEntry { .. }
             | RunError::Preflight(_)
             | RunError::OtherMount { .. }
+            | RunError::NoOtherMount { .. }
             | RunError::Event { .. }),
         )) => Err(bad_input(e)),
         Err(e) => Err(failed(e)),

@@ -27,5 +27,5 @@ pub use model::{
     ArmModel, ArmPose, ArmSettings, BaseLink, Branch, CameraLink, Centre, Controlled, Frames,
     Joints, LearnedJoints, LinkBody, PoseGrid, RevoluteJoint, Wrist, MAX_JOINTS,
 };
-pub use reach::{ReachFit, ReachFitFailure, ReachSpace};
+pub use reach::{ReachFit, ReachFitFailure, ReachSpace, WristLimit};
 pub use simulator::{MoveReport, MoveSettings, SimWork, Simulator};

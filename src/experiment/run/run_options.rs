@@ -4,7 +4,7 @@
 use crate::experiment::output::summary::RunSummary;
 use crate::experiment::plot::PlotError;
 use crate::experiment::run::interrupt::StopRequest;
-use crate::experiment::setup::OtherMount;
+use crate::experiment::setup::{NoOtherMount, OtherMount};
 use crate::experiment::verdict::failures::FailureTally;
 use crate::experiment::{Config, Event, PreflightError, RunFolderError, RunSetup, Sources};
 use crate::learn::LearnError;
@@ -105,7 +105,16 @@ pub enum RunError {
         /// Why the arm is refused as its camera is mounted.
         refusal: Box<RunError>,
         /// The mount with which it passes.
-        other: OtherMount,
+        other: Box<OtherMount>,
+    },
+    /// The camera, looking along its link's z axis (`camera_mount` left at its default),
+    /// is refused, and so it is along every other axis of the link tried.
+    #[error("{refusal}; {search}")]
+    NoOtherMount {
+        /// Why the arm is refused as its camera is mounted.
+        refusal: Box<RunError>,
+        /// The other mounts tried and why each did not do.
+        search: NoOtherMount,
     },
     /// No run folder could be made.
     #[error(transparent)]

@@ -4,6 +4,7 @@
 mod arm;
 pub(super) mod events;
 mod learners;
+mod mounts_tried;
 mod other_mount;
 pub(super) mod preflight;
 pub(super) mod run_request;
@@ -20,6 +21,7 @@ pub use learners::{
     lin8_settings, lwpr_settings, mlp_settings, nnw_settings, pattern_settings,
     single_model_watch_settings,
 };
+pub use mounts_tried::NoOtherMount;
 pub use other_mount::{proposed_mount, refused_where_it_looks, refuses_where_it_looks, OtherMount};
 pub use sizing::{
     size_readings_to_arm, size_standoff_to_arm, sized_standoff_cm, MIN_SIZED_STANDOFF_CM,

@@ -97,9 +97,13 @@ impl RunSetup {
         RunSetup::checked(config.clone(), urdf, events.clone(), sources).map_err(|refusal| {
             let looks = refused_where_it_looks(&refusal);
             match proposed_mount(&config, urdf, &events, sources, looks) {
-                Some(other) => RunError::OtherMount {
+                Some(Ok(other)) => RunError::OtherMount {
                     refusal: Box::new(refusal),
-                    other,
+                    other: Box::new(other),
+                },
+                Some(Err(search)) => RunError::NoOtherMount {
+                    refusal: Box::new(refusal),
+                    search,
                 },
                 None => refusal,
             }

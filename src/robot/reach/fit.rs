@@ -41,14 +41,34 @@ pub struct ReachFit {
     pub usable: usize,
 }
 
+/// A wrist joint whose limits keep the camera from looking down: at how many sampled poses
+/// the wrist's solution turns it outside them.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct WristLimit {
+    /// The joint.
+    pub joint: String,
+    /// Its lower limit (°).
+    pub lower_deg: f64,
+    /// Its upper limit (°).
+    pub upper_deg: f64,
+    /// Sampled poses at which the wrist's solution turns it outside its limits (the
+    /// first wrist joint that is).
+    pub poses: usize,
+}
+
 /// Why no reach space fits an arm: how many of the sampled shoulder–elbow poses each
 /// condition turned away, and how many were left.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct ReachFitFailure {
     /// Shoulder–elbow poses sampled.
     pub sampled: usize,
     /// Poses at which no wrist pose inside the limits keeps the camera looking down.
     pub no_wrist: usize,
+    /// Of those, poses at which no angles of the wrist's joints turn the camera down.
+    pub no_wrist_solution: usize,
+    /// The wrist joint whose limits turned away most of those poses (its solution found,
+    /// but outside them), if any did.
+    pub wrist_limit: Option<WristLimit>,
     /// Poses free of contact on other branches of the arm's solutions than the largest
     /// (the elbow or the shoulder the other way round), or at an edge between two.
     pub other_branch: usize,
@@ -64,9 +84,25 @@ pub struct ReachFitFailure {
 impl std::fmt::Display for ReachFitFailure {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let share = |n: usize| 100.0 * n as f64 / self.sampled.max(1) as f64;
+        let unsolved = match self.no_wrist_solution {
+            0 => String::new(),
+            n => format!(
+                "; at {:.0}% no angles of its joints turn the camera down",
+                share(n)
+            ),
+        };
+        let limit = self.wrist_limit.as_ref().map_or(String::new(), |limit| {
+            format!(
+                " (at {:.0}% it would have to turn `{}` outside its limits, {:.0}°..{:.0}°{unsolved})",
+                share(limit.poses),
+                limit.joint,
+                limit.lower_deg,
+                limit.upper_deg,
+            )
+        });
         write!(
             f,
-            "of {} shoulder-elbow poses sampled, the wrist could not look down at {:.0}%, \
+            "of {} shoulder-elbow poses sampled, the wrist could not look down at {:.0}%{limit}, \
              a link was at the floor at {:.0}%, the links touched each other at {:.0}% \
              (closer than 1 cm counts; the shoulder and elbow were sampled 10° inside their \
              limits) and {:.0}% lay on other branches of the arm's solutions than the \
@@ -255,9 +291,15 @@ fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) 
     };
     let contact = ContactRule::new(model, floor_z);
     let mut free = vec![false; STEPS * STEPS];
+    let mut beyond = vec![0; model.dof()];
     let centres = grid.centres(model, |cell, pose, fits| {
         if !fits {
             tally.no_wrist += 1;
+            if pose.wrist_found {
+                beyond[model.wrist_joint_at_fault(pose)] += 1;
+            } else {
+                tally.no_wrist_solution += 1;
+            }
             return;
         }
         match contact.touch(model, pose) {
@@ -266,6 +308,7 @@ fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) 
             None => free[cell] = true,
         }
     });
+    tally.wrist_limit = wrist_limit(model, &beyond);
     (
         Samples {
             grid,
@@ -274,4 +317,17 @@ fn reached_points(model: &ArmModel, floor_z: f64) -> (Samples, ReachFitFailure) 
         },
         tally,
     )
+}
+
+/// The joint of `model` that `beyond` (per joint: poses whose wrist solution turns it
+/// outside its limits) counts most often, if any.
+fn wrist_limit(model: &ArmModel, beyond: &[usize]) -> Option<WristLimit> {
+    let (j, &poses) = beyond.iter().enumerate().max_by_key(|(_, n)| **n)?;
+    let joint = &model.joints()[j];
+    (poses > 0).then(|| WristLimit {
+        joint: joint.name.clone(),
+        lower_deg: joint.lower.to_degrees(),
+        upper_deg: joint.upper.to_degrees(),
+        poses,
+    })
 }

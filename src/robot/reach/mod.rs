@@ -5,5 +5,5 @@ mod fit;
 mod grid;
 mod space;
 
-pub use fit::{ReachFit, ReachFitFailure};
+pub use fit::{ReachFit, ReachFitFailure, WristLimit};
 pub use space::ReachSpace;

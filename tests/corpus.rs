@@ -144,9 +144,9 @@ const ARMS: &[Arm] = &[
         ]),
     },
     // With its shoulder's second joint, upper arm roll and elbow learned and a floor 1.2 m
-    // below, along −z (and ±y) the arm passes every check made before a run, but no
-    // pre-learning move is made and the learner answers zero moves: a mount with which the
-    // arm never moves is no proposal.
+    // below, along −z (and ±y) a space fits but the camera does not reach its middle, where
+    // the pre-learning moves end: with no pre-learning pattern the learner would answer zero
+    // moves, so the run is refused and such a mount is no proposal.
     Arm {
         urdf: "talos_data/robots/talos_left_arm.urdf",
         sets: &[
@@ -155,9 +155,24 @@ const ARMS: &[Arm] = &[
         ],
         verdict: Verdict::Refused(&[
             "looks back into the arm",
-            "no other axis of the camera link does either (along -z: the arm stays at its \
-             start in each of its first 200 trials;",
-            "along y: the arm stays at its start in each of its first 200 trials)",
+            "no other axis of the camera link does either (along -z: the middle of the \
+             space it fits is not reached looking down;",
+            "along y: the middle of the space it fits is not reached looking down)",
+        ]),
+    },
+    // The same arm with the camera along −z, as a user would try it: refused before a run
+    // (every other check passes, and a run would learn nothing: it never moves).
+    Arm {
+        urdf: "talos_data/robots/talos_left_arm.urdf",
+        sets: &[
+            "learned_joints=arm_left_2_joint,arm_left_3_joint,arm_left_4_joint",
+            "floor_z=-120",
+            "camera_mount=0,0,0,180,0,0",
+        ],
+        verdict: Verdict::Refused(&[
+            "no pre-learning move can be made: the camera cannot reach the middle of the \
+             reach space",
+            "a learner given no pattern answers zero moves",
         ]),
     },
 ];

@@ -63,6 +63,9 @@ fn refused_in_short(refusal: &RunError) -> String {
                 ..
             }),
         ) => "the arm hides the object from the pre-learning starts".into(),
+        (_, RunError::Preflight(PreflightError::NoPrelearningPose { .. })) => {
+            "the middle of the space it fits is not reached looking down".into()
+        }
         _ => refusal.to_string(),
     }
 }

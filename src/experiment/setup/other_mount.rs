@@ -306,6 +306,7 @@ pub fn refused_where_it_looks(refusal: &RunError) -> bool {
             PreflightError::NoReachSpace(_)
                 | PreflightError::Unreachable { .. }
                 | PreflightError::Prelearning { .. }
+                | PreflightError::NoPrelearningPose { .. }
         ),
         _ => false,
     }

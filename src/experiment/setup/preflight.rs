@@ -72,6 +72,14 @@ pub enum PreflightError {
         /// What is wrong with it.
         fault: PrelearningFault,
     },
+    /// The camera cannot reach the pre-learning goal (the middle of the reach space)
+    /// looking down: no pre-learning move can be made, and a learner that starts with no
+    /// pattern answers zero moves.
+    #[error("no pre-learning move can be made: the camera cannot reach the middle of the reach space ({:.1}, {:.1}, {:.1} cm) looking down, and a learner given no pattern answers zero moves: it would learn nothing (reach_space, learned_joints, camera_mount, camera_link)", .goal_cm[0], .goal_cm[1], .goal_cm[2])]
+    NoPrelearningPose {
+        /// The pre-learning goal: where the camera ends each pre-learning move (cm).
+        goal_cm: [f64; 3],
+    },
     /// The arm cannot reach (enough of) its reach space.
     #[error(
         "{reachable} of {sampled} sampled reach-space points are reachable by this arm with the camera looking down{} (at least {:.0}% are needed)",

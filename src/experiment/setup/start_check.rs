@@ -91,15 +91,19 @@ fn check_targets_free(
     Ok(())
 }
 
-/// At least [`MIN_PRELEARNING_MOVES`] of the pre-learning moves must start free of contact,
-/// see the object and not be stopped.
+/// The camera must reach the pre-learning goal looking down, and at least
+/// [`MIN_PRELEARNING_MOVES`] of the pre-learning moves must start free of contact, see the
+/// object and not be stopped.
 fn check_prelearning(
     sim: &mut dyn Simulator,
     camera: &dyn Camera,
     reach: &ReachSpace,
 ) -> Result<(), PreflightError> {
     let Some((object, moves)) = prelearning_moves(sim.model(), camera.model(), reach) else {
-        return Ok(());
+        let goal = reach.prelearning_goal() / M_PER_CM;
+        return Err(PreflightError::NoPrelearningPose {
+            goal_cm: goal.coords.into(),
+        });
     };
     let mut first_fault = None;
     let mut made = 0;

@@ -252,17 +252,18 @@ impl Simulator for KinematicSim {
             report.stopped_by_limit = Some(self.model.wrist_joint_at_fault(&end_pose));
             fraction = self.wrist_stop(delta, fraction);
         }
+        let sweep = self.gains.sweep(&self.model, &self.here, delta, fraction);
         let floor = self.floor.stop(
             &self.model,
             &self.here,
-            delta,
+            &sweep,
             fraction,
             self.settings.floor_z,
         );
         let touch = self.geometry.contact_stop(
             &self.model,
             &self.here,
-            delta,
+            &sweep,
             floor.min(fraction),
             &self.obstacles,
             &mut self.nearest,
@@ -286,7 +287,8 @@ impl Simulator for KinematicSim {
         let executed = after - theta;
         let profile = self.paced(&executed, &end_pose.joints);
         self.here = MoveStart::at(&self.model, end_pose);
-        self.nearest = (self.nearest - self.geometry.closing(&self.model, &executed)).max(0.0);
+        let turns = self.gains.executed_turns(&sweep, &executed, fraction);
+        self.nearest = (self.nearest - self.geometry.closing(&turns)).max(0.0);
         report.executed = executed;
         self.profile = profile;
         report.duration = profile.duration();

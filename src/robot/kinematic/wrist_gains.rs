@@ -1,9 +1,16 @@
-//! How the joints the wrist solves turn with the learned joints, worked out once per arm:
-//! where they follow the learned joints linearly (the OSCAR-6's θ5 against θ2 and θ3, the
-//! Panda's joint 6), each one's slopes, which give a move's exact turns.
+//! How the joints the wrist solves turn with the learned joints, the bounds the floor and
+//! contact rules march by and a move's pace: where they follow them linearly (the
+//! OSCAR-6's θ5 against θ2 and θ3, the public collection's Panda's joint 6), each one's
+//! slopes, worked out once per arm, which give a move's exact turns; otherwise (the
+//! SO-100's, the xArm7's, the UR arms' and the shipped Panda's wrists) each move's turns
+//! sampled along its line, with a margin.
 
-use crate::robot::{ArmModel, Controlled, Joints, MAX_JOINTS};
+use super::pace::pieces;
+use crate::robot::contact::collision::MoveStart;
+use crate::robot::contact::reaches::Sweep;
+use crate::robot::{ArmModel, Controlled, Joints, Wrist, MAX_JOINTS};
 use nalgebra::{Isometry3, Matrix3, Vector3};
+use std::f64::consts::{PI, TAU};
 
 /// Probes per learned joint across its range ([`RevoluteJoint::one_turn`]): the wrist's
 /// slopes are compared on a grid of `PROBES³` poses.
@@ -17,6 +24,20 @@ const LINEAR_SPREAD: f64 = 1e-12;
 const SNAP: f64 = 1e-9;
 /// See [`SNAP`].
 const SNAP_TOLERANCE: f64 = 1e-12;
+/// How much faster than its slopes give a linear wrist solved by Newton steps is taken to
+/// turn: room for its slopes' spread over the grid ([`LINEAR_SPREAD`]) and its solve's
+/// tolerance, many times over. (A wrist solved in closed form needs none: see
+/// [`WristGains::sweep`].)
+const LINEAR_MARGIN: f64 = 1e-6;
+/// How much faster than its samples show (its turn over a piece, its slopes at each
+/// sample) a wrist that does not follow linearly is taken to turn anywhere along a move.
+/// Against each move's wrist solved in 200 steps (300 seeded moves of up to 0.4 rad a
+/// joint, seed 1, the test below): no turn beyond it on the SO-100, the UR5 or the shipped
+/// Panda; on the xArm7, 18 moves turn its joint 5 faster still, where they pass close by
+/// its wrist's singular pose (joint 5 at 0): it swings there at up to 97 rad per whole
+/// move (a learned joint turns at most 0.4) for a hundredth or two of the move, which
+/// samples a piece per 3.6° apart miss.
+const SAMPLED_MARGIN: f64 = 1.5;
 /// How far a linear wrist's turn over a move may differ from its slopes' answer before the
 /// move is taken to have wrapped a wrist angle by a whole turn (rad).
 const WRAP_TOLERANCE: f64 = 1e-6;
@@ -32,6 +53,9 @@ pub(crate) struct WristGains {
     /// learned joints linearly (1 for a learned joint against itself, 0 for a joint held
     /// at rest).
     slope: Option<Slopes>,
+    /// What each joint's turn from the slopes is grown by: 1 + [`LINEAR_MARGIN`] for a
+    /// joint a wrist solves by Newton steps, 1 for the others.
+    grow: [f64; MAX_JOINTS],
     /// The joints of the chain.
     len: usize,
 }
@@ -57,9 +81,61 @@ impl WristGains {
             }
             slope
         });
+        let numerical = !matches!(model.wrist(), Wrist::OneJoint(_));
+        let grow = std::array::from_fn(|k| match numerical && model.wrist().sets(k) {
+            true => 1.0 + LINEAR_MARGIN,
+            false => 1.0,
+        });
         WristGains {
             slope,
+            grow,
             len: model.dof(),
+        }
+    }
+
+    /// The move from the arm at `start` by `delta` up to the fraction `up_to` of it, with
+    /// how fast each joint can turn along it (rad per whole move): a learned joint by its
+    /// share; a linear wrist's joint by each learned joint's share times its slope's size,
+    /// added up, grown by [`LINEAR_MARGIN`] where the wrist is solved by Newton steps;
+    /// another wrist's joint as fast as its samples show, in a piece per 3.6° of the lead
+    /// joint (`pace::pieces`), grown by [`SAMPLED_MARGIN`] — near the wrist's singular
+    /// poses it may turn faster still between them; a joint held at rest not at all.
+    ///
+    /// A wrist in closed form (one joint, [`Wrist::OneJoint`]) that is linear is its
+    /// rest angle plus the learned pitch joints' angles, each signed (the OSCAR-6's
+    /// θ5 = 90° + θ2 − θ3 on a straight wrist): its slopes are exactly the snapped 0 and
+    /// ±1, and its turn over any part of a move, |δθ2 − δθ3| on the OSCAR-6, is at most
+    /// what they give, |δθ2| + |δθ3|, up to the rounding of its angle. So it is not grown:
+    /// on the OSCAR-6 these are the turns its floor and contact rules have always marched
+    /// by, bit for bit (its golden runs).
+    pub(crate) fn sweep(
+        &self,
+        model: &ArmModel,
+        start: &MoveStart,
+        delta: &Controlled,
+        up_to: f64,
+    ) -> Sweep {
+        let turns = match &self.slope {
+            Some(slope) => self.gained(slope, delta),
+            None => sampled_turns(model, start, delta, up_to),
+        };
+        Sweep {
+            delta: *delta,
+            turns,
+        }
+    }
+
+    /// How fast (rad per whole move) each joint can turn in the move `executed`, the
+    /// fraction `fraction` of `sweep`'s.
+    pub(crate) fn executed_turns(
+        &self,
+        sweep: &Sweep,
+        executed: &Controlled,
+        fraction: f64,
+    ) -> [f64; MAX_JOINTS] {
+        match &self.slope {
+            Some(slope) => self.gained(slope, executed),
+            None => sweep.turns.map(|turn| turn * fraction),
         }
     }
 
@@ -84,6 +160,72 @@ impl WristGains {
         }
         Some(turns)
     }
+
+    /// Each joint's turn in the move by `delta` with slopes `slope`: each learned joint's
+    /// turn times the slope's size, added up, grown by [`grow`](Self::grow).
+    fn gained(&self, slope: &Slopes, delta: &Controlled) -> [f64; MAX_JOINTS] {
+        let turn = delta.map(f64::abs);
+        std::array::from_fn(|k| {
+            let s = slope[k];
+            (s[0].abs() * turn[0] + s[1].abs() * turn[1] + s[2].abs() * turn[2]) * self.grow[k]
+        })
+    }
+}
+
+/// How fast (rad per whole move by `delta`) each joint turns along the move from `start`
+/// up to the fraction `up_to`: the learned joints by their share, each wrist joint as fast
+/// as the samples in `pace::pieces` show (a piece's turn, whole turns of a wrapped angle
+/// aside, and its slopes at each sample) grown by [`SAMPLED_MARGIN`].
+fn sampled_turns(
+    model: &ArmModel,
+    start: &MoveStart,
+    delta: &Controlled,
+    up_to: f64,
+) -> [f64; MAX_JOINTS] {
+    let mut turns = [0.0; MAX_JOINTS];
+    for (i, &j) in model.learned().iter().enumerate() {
+        turns[j] = delta[i].abs();
+    }
+    let wrist = |k: &usize| model.wrist().sets(*k);
+    let mut fastest = |k: usize, rate: f64| turns[k] = turns[k].max(rate * SAMPLED_MARGIN);
+    let take_slopes = |q: &Joints, fastest: &mut dyn FnMut(usize, f64)| {
+        if let Some(slopes) = slopes_at(model, q) {
+            for k in (0..model.dof()).filter(wrist) {
+                let s = slopes[k];
+                fastest(
+                    k,
+                    (s[0] * delta[0] + s[1] * delta[1] + s[2] * delta[2]).abs(),
+                );
+            }
+        }
+    };
+    let mut last = start.pose.wrist_found.then_some(start.pose.joints);
+    if let Some(q) = &last {
+        take_slopes(q, &mut fastest);
+    }
+    if up_to <= 0.0 {
+        return turns;
+    }
+    let n = pieces(delta.amax() * up_to);
+    let mut near = start.pose.joints;
+    for piece in 1..=n {
+        let s = up_to * piece as f64 / n as f64;
+        let pose = model.pose_near(&(start.theta + delta * s), &near);
+        if !pose.wrist_found {
+            last = None;
+            continue;
+        }
+        near = pose.joints;
+        take_slopes(&near, &mut fastest);
+        if let Some(before) = last {
+            for k in (0..model.dof()).filter(wrist) {
+                let turn = (near[k] - before[k] + PI).rem_euclid(TAU) - PI;
+                fastest(k, turn.abs() * n as f64 / up_to);
+            }
+        }
+        last = Some(near);
+    }
+    turns
 }
 
 /// `s`, or the multiple of [`SNAP`] it lies within [`SNAP_TOLERANCE`] of.
@@ -178,5 +320,99 @@ mod tests {
         let mut wrapped = end;
         wrapped[4] -= std::f64::consts::TAU;
         assert_eq!(gains.linear_turns(&delta, &start, &wrapped), None);
+    }
+
+    #[test]
+    fn the_oscar6_sweep_turns_theta5_by_theta2_and_theta3_together_bit_for_bit() {
+        // The turns its floor and contact rules march by, as they always were.
+        let model = ArmModel::oscar6();
+        let gains = WristGains::new(&model);
+        let from = Controlled::new(0.1, 0.4, -0.6);
+        let start = MoveStart::at(&model, model.pose_of(&from));
+        for delta in [
+            Controlled::new(0.3, -0.2, 0.5),
+            Controlled::new(-1e-7, 3e-5, 0.1),
+            Controlled::new(0.0, -0.0, 0.25),
+        ] {
+            let turns = gains.sweep(&model, &start, &delta, 1.0).turns;
+            let mut old = [0.0; MAX_JOINTS];
+            (old[0], old[1], old[2]) = (delta.x.abs(), delta.y.abs(), delta.z.abs());
+            old[4] = delta.y.abs() + delta.z.abs();
+            assert_eq!(turns.map(f64::to_bits), old.map(f64::to_bits), "{delta:?}");
+        }
+    }
+
+    /// The arm of `urdf` in the public collection at the default arm settings (its
+    /// `share/example-robot-data` folder named by `EYEHAND_ROBOT_DATA`, as tests/corpus.rs
+    /// reads it; the test fails without it).
+    fn corpus_arm(urdf: &str) -> ArmModel {
+        let folder = std::env::var_os("EYEHAND_ROBOT_DATA")
+            .expect("EYEHAND_ROBOT_DATA names the public robot collection (scripts/test-all.sh)");
+        let path = std::path::Path::new(&folder).join("robots").join(urdf);
+        crate::robot::description::load_urdf(&path).expect("the arm loads")
+    }
+
+    /// The fastest each wrist joint turns (rad per whole move) in any 1/`STEPS` of the move
+    /// by `delta` from `from`, solved step by step as the dynamic simulator's set-points
+    /// follow it (whole turns of a wrapped angle aside; 0 for the other joints), or `None`
+    /// where the wrist loses its solution on the way.
+    fn densest_turns(model: &ArmModel, from: &Controlled, delta: &Controlled) -> Option<Joints> {
+        const STEPS: usize = 200;
+        let mut before = model.pose_of(from).joints;
+        let mut fastest = Joints::zeros(model.dof());
+        for step in 1..=STEPS {
+            let pose = model.pose_near(&(from + delta * (step as f64 / STEPS as f64)), &before);
+            if !pose.wrist_found {
+                return None;
+            }
+            for k in (0..model.dof()).filter(|&k| model.wrist().sets(k)) {
+                let turn = (pose.joints[k] - before[k] + PI).rem_euclid(TAU) - PI;
+                fastest[k] = fastest[k].max(turn.abs() * STEPS as f64);
+            }
+            before = pose.joints;
+        }
+        Some(fastest)
+    }
+
+    #[test]
+    fn a_wrist_joint_turning_faster_than_theta2_and_theta3_stays_within_its_sweep() {
+        // The SO-100's wrist (its joints 4 and 5, solved by Newton steps) does not follow
+        // its learned joints linearly: its sweep is sampled. Over seeded moves of up to
+        // 0.4 rad a joint from poses across the learned joints' ranges, a wrist joint
+        // turns faster than the second and third learned joints together (the bound the
+        // floor and contact rules once took for every arm) in many, and never faster than
+        // its sweep says.
+        use rand::{Rng, SeedableRng};
+        let model = corpus_arm("so_arm_description/urdf/so100.urdf");
+        let gains = WristGains::new(&model);
+        assert!(gains.slope.is_none(), "the SO-100's wrist is linear");
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
+        let ranges = model.learned().map(|j| model.joints()[j].one_turn());
+        let (mut moves, mut faster, mut beyond) = (0, 0, Vec::new());
+        while moves < 300 {
+            let from = Controlled::from_fn(|i, _| rng.random_range(ranges[i].0..ranges[i].1));
+            let delta = Controlled::from_fn(|_, _| rng.random_range(-0.4..0.4));
+            let start = MoveStart::at(&model, model.pose_of(&from));
+            if !start.pose.wrist_found {
+                continue;
+            }
+            let Some(dense) = densest_turns(&model, &from, &delta) else {
+                continue;
+            };
+            moves += 1;
+            let turns = gains.sweep(&model, &start, &delta, 1.0).turns;
+            let together = delta.y.abs() + delta.z.abs();
+            faster += usize::from(dense.iter().any(|&turn| turn > together + 1e-9));
+            if (0..model.dof()).any(|k| dense[k] > turns[k] + 1e-9) {
+                beyond.push((from, delta, dense, turns));
+            }
+        }
+        assert!(faster > 30, "{faster} of {moves} moves beyond θ2 + θ3");
+        assert!(
+            beyond.is_empty(),
+            "{} beyond the sweep: {:?}",
+            beyond.len(),
+            beyond.first()
+        );
     }
 }

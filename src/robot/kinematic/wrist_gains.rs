@@ -2,7 +2,7 @@
 //! contact rules march by and a move's pace: where they follow them linearly (the
 //! OSCAR-6's θ5 against θ2 and θ3, the public collection's Panda's joint 6), each one's
 //! slopes, worked out once per arm, which give a move's exact turns; otherwise (the
-//! SO-100's, the xArm7's, the UR arms' and the shipped Panda's wrists) each move's turns
+//! SO-100's, the xArm7's, the UR5's and the shipped Panda's wrists) each move's turns
 //! sampled along its line, with a margin.
 
 use super::pace::pieces;

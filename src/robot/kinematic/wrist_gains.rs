@@ -101,16 +101,16 @@ impl WristGains {
     /// share; a linear wrist's joint by each learned joint's share times its slope's size,
     /// added up, grown by [`LINEAR_MARGIN`] where the wrist is solved by Newton steps;
     /// another wrist's joint as fast as its samples show, in a piece per 3.6° of the lead
-    /// joint (`pace::pieces`), grown by [`SAMPLED_MARGIN`] — near the wrist's singular
-    /// poses it may turn faster still between them; a joint held at rest not at all.
+    /// joint (`pace::pieces`, a crossing of a two-joint wrist's singular pose bisected),
+    /// grown by [`SAMPLED_MARGIN`] — near the wrist's singular poses it may turn faster
+    /// still between them; a joint held at rest not at all.
     ///
     /// A wrist in closed form (one joint, [`Wrist::OneJoint`]) that is linear is its
     /// rest angle plus the learned pitch joints' angles, each signed (the OSCAR-6's
     /// θ5 = 90° + θ2 − θ3 on a straight wrist): its slopes are exactly the snapped 0 and
     /// ±1, and its turn over any part of a move, |δθ2 − δθ3| on the OSCAR-6, is at most
     /// what they give, |δθ2| + |δθ3|, up to the rounding of its angle. So it is not grown:
-    /// on the OSCAR-6 these are the turns its floor and contact rules have always marched
-    /// by, bit for bit (its golden runs).
+    /// on the OSCAR-6 these are, bit for bit, the turns its golden runs were recorded with.
     pub(crate) fn sweep(
         &self,
         model: &ArmModel,
@@ -399,7 +399,7 @@ mod tests {
 
     #[test]
     fn the_oscar6_sweep_turns_theta5_by_theta2_and_theta3_together_bit_for_bit() {
-        // The turns its floor and contact rules march by, as they always were.
+        // The turns its golden runs were recorded with: θ5 by |δθ2| + |δθ3|.
         let model = ArmModel::oscar6();
         let gains = WristGains::new(&model);
         let from = Controlled::new(0.1, 0.4, -0.6);
@@ -474,7 +474,7 @@ mod tests {
     }
 
     /// How many of `moves` turn a wrist joint faster than the second and third learned
-    /// joints together (the bound the floor and contact rules once took for every arm),
+    /// joints together (the OSCAR-6's bound, not one on other arms),
     /// and how many faster than their sweep says.
     fn beyond(moves: &[(Controlled, Joints, Joints)]) -> (usize, usize) {
         let faster = |(delta, dense, _): &&(Controlled, Joints, Joints)| {

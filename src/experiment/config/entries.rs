@@ -122,7 +122,10 @@ config_entries! {
     min_feedback_steps: usize = 5, "", All, Rule::Any;
     /// A pose pair is a learning pattern only if at least one joint moved this much.
     minimal_joint_move: f64 = PatternSettings::default().minimal_joint_move, "°", All, Within(0.0, 10.0);
-    /// Top joint speed of a move's trapezoidal profile.
+    /// Top joint speed of a move's trapezoidal profile (of the learned joint with the
+    /// farthest to go); a move runs slower where a joint, learned or following the wrist,
+    /// would otherwise turn faster than 99% of its URDF velocity limit (servo_mode continuous
+    /// aside: it chases its goal at this speed).
     robot_speed: f64 = dynamic().moves.speed.to_degrees(), "°/s", All, Within(0.1, 3600.0);
     /// Joint acceleration of a move's trapezoidal profile.
     robot_accel: f64 = dynamic().moves.accel.to_degrees(), "°/s²", All, Within(1.0, 100_000.0);

@@ -3,10 +3,10 @@
 
 use super::clearance::{ArmGeometry, MAX_BODIES};
 use super::collision::MoveStart;
-use super::reaches::joint_turns;
+use super::reaches::Sweep;
 use super::world::Obstacle;
 use crate::robot::kinematic::motion::last_holding;
-use crate::robot::{ArmModel, Controlled};
+use crate::robot::{ArmModel, MAX_JOINTS};
 
 /// The shortest step of the march (a fraction of the move).
 const MIN_MARCH: f64 = 1e-3;
@@ -15,10 +15,11 @@ const MIN_MARCH: f64 = 1e-3;
 const KNOWN_GAP_MARGIN: f64 = 1e-9;
 
 impl ArmGeometry {
-    /// The most the move by `delta` can bring any pair of bodies together (m): what the
-    /// bodies' distance bound at the start, less this, still bounds at its end.
-    pub(crate) fn closing(&self, model: &ArmModel, delta: &Controlled) -> f64 {
-        self.closing_at(&body_rates(model, delta))
+    /// The most a move whose joints turn by `turns` ([`Sweep::turns`]) can bring any pair
+    /// of bodies together (m): what the bodies' distance bound at the start, less this,
+    /// still bounds at its end.
+    pub(crate) fn closing(&self, turns: &[f64; MAX_JOINTS]) -> f64 {
+        self.closing_at(&body_rates(turns))
     }
 
     /// [`closing`](Self::closing) with the bodies' joints turning at `rates`.
@@ -29,13 +30,12 @@ impl ArmGeometry {
             .fold(0.0, f64::max)
     }
 
-    /// How far along the controlled move from every joint at `start` by `delta` (fractions
-    /// up to `up_to`) the arm gets before two of its bodies or a link and an obstacle touch: `up_to` when
-    /// none do, or when they already touch at the start. Marches in steps no pair can close
-    /// in, then bisects the contact. A point of body j moves, relative to body i, no faster
-    /// than the turns of the joints between them times its reach from their axes; the
-    /// learned joints turn by their share of the move, a wrist joint by at most θ2's and
-    /// θ3's turns together (θ5 on the OSCAR-6), the other joints stay.
+    /// How far along the controlled move from every joint at `start` along `sweep`
+    /// (fractions of `sweep.delta` up to `up_to`) the arm gets before two of its bodies or
+    /// a link and an obstacle touch: `up_to` when none do, or when they already touch at
+    /// the start. Marches in steps no pair can close in, then bisects the contact. A point
+    /// of body j moves, relative to body i, no faster than the turns of the joints between
+    /// them ([`Sweep::turns`]) times its reach from their axes.
     ///
     /// `nearest` is a lower bound (m) on every pair's distance at the start, 0 when none is
     /// known: where it exceeds what the whole move can close and there are no obstacles,
@@ -45,15 +45,15 @@ impl ArmGeometry {
         &self,
         model: &ArmModel,
         start: &MoveStart,
-        delta: &Controlled,
+        sweep: &Sweep,
         up_to: f64,
         obstacles: &[Obstacle],
         nearest: &mut f64,
     ) -> f64 {
-        let theta = &start.theta;
+        let (theta, delta) = (&start.theta, &sweep.delta);
         // A numerical wrist starts from the last pose looked at.
         let near = std::cell::Cell::new(start.pose.joints);
-        let rates = body_rates(model, delta);
+        let rates = body_rates(&sweep.turns);
         if obstacles.is_empty()
             && *nearest > 0.0
             && *nearest > self.closing_at(&rates) * up_to + KNOWN_GAP_MARGIN
@@ -91,10 +91,9 @@ impl ArmGeometry {
     }
 }
 
-/// How fast (rad per move) each body's own joint turns in the move by `delta` (see
-/// [`joint_turns`]): body k hangs from joint k - 1; the base (body 0) stays.
-pub(super) fn body_rates(model: &ArmModel, delta: &Controlled) -> [f64; MAX_BODIES] {
-    let turns = joint_turns(model, delta);
+/// How fast (rad per move) each body's own joint turns with the joints turning at `turns`
+/// ([`Sweep::turns`]): body k hangs from joint k - 1; the base (body 0) stays.
+pub(super) fn body_rates(turns: &[f64; MAX_JOINTS]) -> [f64; MAX_BODIES] {
     std::array::from_fn(|body| body.checked_sub(1).map_or(0.0, |joint| turns[joint]))
 }
 
@@ -105,9 +104,12 @@ mod tests {
     #[test]
     fn a_carried_distance_bound_gives_the_stops_a_fresh_look_gives() {
         use crate::robot::contact::collision::MoveStart;
+        use crate::robot::kinematic::wrist_gains::WristGains;
+        use crate::robot::Controlled;
         use rand::{Rng, SeedableRng};
         let model = ArmModel::oscar6();
         let geometry = ArmGeometry::new(&model);
+        let gains = WristGains::new(&model);
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
         let (lower, upper): (Vec<f64>, Vec<f64>) = model
             .learned()
@@ -121,9 +123,10 @@ mod tests {
             // Large moves and small corrections, as a trial makes them.
             let delta = (goal - theta) * [1.0, 0.01, 0.001][rng.random_range(0..3)];
             let start = MoveStart::at(&model, model.pose_of(&theta));
-            skipped += usize::from(carried > geometry.closing(&model, &delta) + KNOWN_GAP_MARGIN);
-            let fresh = geometry.contact_stop(&model, &start, &delta, 1.0, &[], &mut 0.0);
-            let kept = geometry.contact_stop(&model, &start, &delta, 1.0, &[], &mut carried);
+            let sweep = gains.sweep(&model, &start, &delta, 1.0);
+            skipped += usize::from(carried > geometry.closing(&sweep.turns) + KNOWN_GAP_MARGIN);
+            let fresh = geometry.contact_stop(&model, &start, &sweep, 1.0, &[], &mut 0.0);
+            let kept = geometry.contact_stop(&model, &start, &sweep, 1.0, &[], &mut carried);
             assert_eq!(
                 fresh.to_bits(),
                 kept.to_bits(),
@@ -132,7 +135,8 @@ mod tests {
             stops += usize::from(fresh < 1.0);
             let executed = delta * fresh;
             theta += executed;
-            carried = (carried - geometry.closing(&model, &executed)).max(0.0);
+            let turns = gains.executed_turns(&sweep, &executed, fresh);
+            carried = (carried - geometry.closing(&turns)).max(0.0);
         }
         assert!(
             skipped > 100 && stops > 0,

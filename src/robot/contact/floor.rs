@@ -2,9 +2,9 @@
 //! where a move first would bring one below the floor.
 
 use super::collision::{body_elements, Elements, MoveStart};
-use super::reaches::{first_tilt, joint_turns, reaches, sinking_speed, sinking_speeds, Reaches};
+use super::reaches::{first_tilt, reaches, sinking_speed, sinking_speeds, Reaches, Sweep};
 use crate::robot::kinematic::motion::last_holding;
-use crate::robot::{ArmModel, Controlled, Frames, Joints, Shape, MAX_JOINTS};
+use crate::robot::{ArmModel, Frames, Joints, Shape, MAX_JOINTS};
 use nalgebra::{Isometry3, Vector3};
 
 /// The floor's default height (m, world frame): the bottom of the lowest target — the
@@ -86,8 +86,9 @@ impl FloorRule {
             })
     }
 
-    /// How far along the controlled move from every joint at `start` by `delta` (fractions
-    /// up to `up_to`) the arm gets before a link or the camera would go below `floor` (m):
+    /// How far along the controlled move from every joint at `start` along `sweep`
+    /// (fractions of `sweep.delta` up to `up_to`) the arm gets before a link or the camera
+    /// would go below `floor` (m):
     /// `up_to` when none does, or when the arm starts below it. Marches in steps that cannot
     /// skip a dip (each no longer than every link's own clearance over its own sinking speed
     /// allows), then bisects the crossing.
@@ -95,12 +96,12 @@ impl FloorRule {
         &self,
         model: &ArmModel,
         start: &MoveStart,
-        delta: &Controlled,
+        sweep: &Sweep,
         up_to: f64,
         floor: f64,
     ) -> f64 {
         let (bodies, reaches) = (&self.bodies, &self.reaches);
-        let theta = &start.theta;
+        let (theta, delta) = (&start.theta, &sweep.delta);
         // A numerical wrist starts from the last pose looked at.
         let near = std::cell::Cell::new(start.pose.joints);
         // Each link's gap over the floor (m) at fraction `s`, NaN where the wrist fails.
@@ -114,7 +115,7 @@ impl FloorRule {
             }
         };
         let clearance = |s: f64| lowest_gap(&gaps(s), bodies.len());
-        let speeds = link_sinking_speeds(model, reaches, delta);
+        let speeds = link_sinking_speeds(model, reaches, &sweep.turns);
         if start.pose.wrist_found && self.clear_of_floor(start, &speeds, up_to, floor) {
             return up_to;
         }
@@ -127,7 +128,7 @@ impl FloorRule {
         };
         let links = bodies.len();
         let lowest = lowest_gap(&gap, links);
-        if lowest.is_nan() || lowest < 0.0 || sinking_speed(model, reaches, delta) == 0.0 {
+        if lowest.is_nan() || lowest < 0.0 || sinking_speed(model, reaches, &sweep.turns) == 0.0 {
             return up_to;
         }
         while s < up_to {
@@ -183,20 +184,20 @@ fn nan_or_min(a: f64, b: f64) -> f64 {
     }
 }
 
-/// How fast (m per unit fraction of the move by `delta`) each link can sink (entry k for
-/// link k + 1): its joints' turns times its own reaches ([`Reaches::body`]).
+/// How fast (m per unit fraction of a move) each link can sink (entry k for link k + 1)
+/// with the joints turning at `turns` ([`Sweep::turns`]): its joints' turns times its own
+/// reaches ([`Reaches::body`]).
 fn link_sinking_speeds(
     model: &ArmModel,
     reaches: &Reaches,
-    delta: &Controlled,
+    turns: &[f64; MAX_JOINTS],
 ) -> [f64; MAX_JOINTS] {
-    let turns = joint_turns(model, delta);
     let tilt = first_tilt(model);
     let mut speeds = [0.0; MAX_JOINTS];
     // Link k moves with the joints before it alone.
     for (i, speed) in speeds.iter_mut().enumerate().take(model.dof()) {
         let k = i + 1;
-        *speed = sinking_speeds(&turns, tilt, k, |joint| reaches.body[joint][k]);
+        *speed = sinking_speeds(turns, tilt, k, |joint| reaches.body[joint][k]);
     }
     speeds
 }
@@ -272,10 +273,13 @@ mod tests {
 
     #[test]
     fn no_point_of_the_arm_or_of_a_link_sinks_faster_than_the_bounds_assume() {
+        use crate::robot::kinematic::wrist_gains::WristGains;
+        use crate::robot::Controlled;
         use rand::{Rng, SeedableRng};
         let model = ArmModel::oscar6();
         let bodies: Vec<_> = (1..=6).map(|k| body_elements(&model, k)).collect();
         let reaches = reaches(&model, &bodies);
+        let gains = WristGains::new(&model);
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
         let (lower, upper): (Vec<f64>, Vec<f64>) = model
             .learned()
@@ -289,9 +293,10 @@ mod tests {
         for _ in 0..200 {
             let (from, to) = (draw(), draw());
             let delta = to - from;
-            let turns = joint_turns(&model, &delta);
+            let start = MoveStart::at(&model, model.pose_of(&from));
+            let turns = gains.sweep(&model, &start, &delta, 1.0).turns;
             // The whole arm's bound, then each link's own (link k: `bodies[k - 1]`).
-            let mut speeds = vec![sinking_speed(&model, &reaches, &delta)];
+            let mut speeds = vec![sinking_speed(&model, &reaches, &turns)];
             speeds
                 .extend((1..=6).map(|k| {
                     sinking_speeds(&turns, first_tilt(&model), k, |j| reaches.body[j][k])

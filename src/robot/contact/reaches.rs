@@ -71,27 +71,24 @@ pub(crate) fn reaches(model: &ArmModel, bodies: &[Elements]) -> Reaches {
     }
 }
 
-/// How far (rad) each joint of the chain can turn in the move by `delta`: the learned joints
-/// by their share of the move, each joint the wrist solves by at most θ2's and θ3's turns
-/// together, the others not at all.
-pub(crate) fn joint_turns(model: &ArmModel, delta: &Controlled) -> [f64; MAX_JOINTS] {
-    let wrist_turn = delta.y.abs() + delta.z.abs();
-    std::array::from_fn(
-        |joint| match model.learned().iter().position(|&j| j == joint) {
-            Some(i) => delta[i].abs(),
-            None if model.wrist().sets(joint) => wrist_turn,
-            None => 0.0,
-        },
-    )
+/// A move's line from the arm where it starts, and how far each joint of the chain can turn
+/// along it (`WristGains::sweep`): the bounds the floor and contact rules march by.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Sweep {
+    /// The learned joints' move (rad).
+    pub delta: Controlled,
+    /// How fast (rad per whole move by `delta`) each joint can turn anywhere along it: the
+    /// learned joints by their share of the move, the wrist's joints as fast as it makes
+    /// them, the others not at all.
+    pub turns: [f64; MAX_JOINTS],
 }
 
-/// How fast (m per unit fraction of the move by `delta`) any point of the arm can sink:
-/// each joint's turn ([`joint_turns`]) times its reach. The first joint's axis is fixed in
-/// the world: a turn about it lowers a point by at most its reach times the sine of the
-/// axis's angle to the vertical (nothing for a base yaw).
-pub(super) fn sinking_speed(model: &ArmModel, reaches: &Reaches, delta: &Controlled) -> f64 {
-    let turns = joint_turns(model, delta);
-    sinking_speeds(&turns, first_tilt(model), model.dof(), |joint| {
+/// How fast (m per unit fraction of a move) any point of the arm can sink with its joints
+/// turning at `turns` ([`Sweep::turns`]): each joint's turn times its reach. The first
+/// joint's axis is fixed in the world: a turn about it lowers a point by at most its reach
+/// times the sine of the axis's angle to the vertical (nothing for a base yaw).
+pub(super) fn sinking_speed(model: &ArmModel, reaches: &Reaches, turns: &[f64; MAX_JOINTS]) -> f64 {
+    sinking_speeds(turns, first_tilt(model), model.dof(), |joint| {
         reaches.joint[joint]
     })
 }

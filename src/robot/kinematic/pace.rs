@@ -22,6 +22,11 @@ const MOST_PIECES: usize = 128;
 pub(crate) const COARSE_PIECES: usize = 4;
 /// How much faster than its coarse sampling shows a joint may turn somewhere along a move.
 pub(crate) const COARSE_MARGIN: f64 = 1.1;
+/// The most sampling can make a joint's turn per whole move exceed its exact turn (rad):
+/// the rounding of the sampled angles (about 1e-15 rad each) times at most [`MOST_PIECES`],
+/// with room. A move whose exact turns, grown by this, keep every joint within its limit
+/// runs at `robot_speed` whatever its sampling would show.
+pub(crate) const SAMPLING_SLACK: f64 = 1e-9;
 
 /// The profile of a move whose lead joint turns `distance` (rad) at up to `speed` (rad/s),
 /// accelerating at `accel` (rad/s²), where each joint k turns at most `rates[k]` (rad per

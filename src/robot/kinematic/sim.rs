@@ -2,7 +2,10 @@
 //! is instant in wall time; its simulated duration follows the trapezoidal profile.
 
 use super::motion::{last_holding, limit_stop_fraction, TrapezoidProfile};
-use super::pace::{paced_profile, pieces, turn_rates, COARSE_MARGIN, COARSE_PIECES};
+use super::pace::{
+    paced_profile, pieces, turn_rates, COARSE_MARGIN, COARSE_PIECES, SAMPLING_SLACK,
+};
+use super::wrist_gains::WristGains;
 use crate::robot::contact::clearance::ArmGeometry;
 use crate::robot::contact::collision::{body_elements, MoveStart};
 use crate::robot::contact::floor::FloorRule;
@@ -34,6 +37,8 @@ pub struct KinematicSim {
     obstacles: Vec<Obstacle>,
     /// The bodies for the self-collision and obstacle rule.
     geometry: ArmGeometry,
+    /// How the wrist's joints turn with the learned ones.
+    gains: WristGains,
     work: SimWork,
     /// The last move's profile in time.
     profile: TrapezoidProfile,
@@ -68,6 +73,7 @@ impl KinematicSim {
             seen_shapes: Default::default(),
             obstacles: Vec::new(),
             geometry: ArmGeometry::default(),
+            gains: WristGains::default(),
             work: SimWork::default(),
             profile: TrapezoidProfile::new(0.0, settings.speed, settings.accel),
             last_move: None,
@@ -87,6 +93,7 @@ impl KinematicSim {
     fn refresh_collision(&mut self) {
         self.floor = FloorRule::new(&self.model);
         self.geometry = ArmGeometry::new(&self.model);
+        self.gains = WristGains::new(&self.model);
         let seen = self.model.dof();
         self.seen_shapes = std::array::from_fn(|k| {
             let base;
@@ -122,11 +129,15 @@ impl KinematicSim {
     /// slowed where a joint of the chain, learned or following the wrist's solution, would
     /// turn faster than its URDF velocity limit (pace.rs), the wrist sampled along the line
     /// as the dynamic simulator's set-points follow it (held where it has no solution).
-    /// A long move is first sampled in [`COARSE_PIECES`]; where even its rates grown by
-    /// [`COARSE_MARGIN`] keep every joint within its limit, it runs at `robot_speed`
-    /// without the fine sampling.
-    fn paced(&self, executed: &Controlled) -> TrapezoidProfile {
+    /// Where the wrist follows the learned joints linearly, the move's exact turns from
+    /// the start to `end` (every joint there), grown by what sampling can add
+    /// ([`SAMPLING_SLACK`]), may show that no joint comes near its limit: then it runs at
+    /// `robot_speed` unsampled. Otherwise a long move is first sampled in
+    /// [`COARSE_PIECES`]; where even its rates grown by [`COARSE_MARGIN`] keep every joint
+    /// within its limit, it runs at `robot_speed` without the fine sampling.
+    fn paced(&self, executed: &Controlled, end: &Joints) -> TrapezoidProfile {
         let distance = executed.amax();
+        let unpaced = TrapezoidProfile::new(distance, self.settings.speed, self.settings.accel);
         let limits = || self.model.joints().iter().map(|joint| joint.velocity);
         let profile = |rates: &Joints| {
             paced_profile(
@@ -137,10 +148,15 @@ impl KinematicSim {
                 limits(),
             )
         };
+        let start = &self.here.pose.joints;
+        if let Some(turns) = self.gains.linear_turns(executed, start, end) {
+            if profile(&turns.map(|turn| turn + SAMPLING_SLACK)) == unpaced {
+                return unpaced;
+            }
+        }
         let fine = pieces(distance);
         if fine > COARSE_PIECES {
             let coarse = self.turn_rates_along(executed, COARSE_PIECES) * COARSE_MARGIN;
-            let unpaced = TrapezoidProfile::new(distance, self.settings.speed, self.settings.accel);
             if profile(&coarse) == unpaced {
                 return unpaced;
             }
@@ -236,17 +252,18 @@ impl Simulator for KinematicSim {
             report.stopped_by_limit = Some(self.model.wrist_joint_at_fault(&end_pose));
             fraction = self.wrist_stop(delta, fraction);
         }
+        let sweep = self.gains.sweep(&self.model, &self.here, delta, fraction);
         let floor = self.floor.stop(
             &self.model,
             &self.here,
-            delta,
+            &sweep,
             fraction,
             self.settings.floor_z,
         );
         let touch = self.geometry.contact_stop(
             &self.model,
             &self.here,
-            delta,
+            &sweep,
             floor.min(fraction),
             &self.obstacles,
             &mut self.nearest,
@@ -268,9 +285,10 @@ impl Simulator for KinematicSim {
         }
         let near = self.here.pose.joints;
         let executed = after - theta;
-        let profile = self.paced(&executed);
+        let profile = self.paced(&executed, &end_pose.joints);
         self.here = MoveStart::at(&self.model, end_pose);
-        self.nearest = (self.nearest - self.geometry.closing(&self.model, &executed)).max(0.0);
+        let turns = self.gains.executed_turns(&sweep, &executed, fraction);
+        self.nearest = (self.nearest - self.geometry.closing(&turns)).max(0.0);
         report.executed = executed;
         self.profile = profile;
         report.duration = profile.duration();

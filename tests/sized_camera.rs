@@ -1,8 +1,9 @@
 //! The camera's scale on a public table-top arm, the SO-100 of PyPI's `example-robot-data`
 //! (its `share/example-robot-data` folder named by `EYEHAND_ROBOT_DATA`): the standoff
 //! left at its default is sized to the fitted reach space, the object lies that far below
-//! the camera at the target, `ik` reaches the targets with it, lin5 learns with it, and
-//! `info` and `eyehand reach` say it was fitted to the arm.
+//! the camera at the target, cz's boundaries keep the target's reading a third of the way
+//! up their range, the minimal joint move keeps its default, `ik` reaches the targets with
+//! it, lin5 learns with it, and `info` and `eyehand reach` say it was fitted to the arm.
 
 use eyehand::camera::CameraModel;
 use eyehand::experiment::setup::{sized_standoff_cm, MIN_SIZED_STANDOFF_CM};
@@ -41,6 +42,17 @@ fn the_so100s_object_lies_the_sized_standoff_below_its_targets() {
     assert_eq!(
         setup.config.source_of("standoff", &setup.sources),
         Source::Fitted
+    );
+    // The minimal joint move is an angle whose best value does not follow the arm's size:
+    // it keeps the study's.
+    assert_eq!(
+        setup.config.source_of("minimal_joint_move", &setup.sources),
+        Source::Default
+    );
+    let (low, high) = setup.config.boundary(4);
+    assert!(
+        (-low / (high - low) - 1.0 / 3.0).abs() < 1e-12,
+        "cz's boundaries {low}..{high}"
     );
     let radius = CameraModel::default().object_radius;
     let mut trials = setup.trial_loop();
@@ -109,14 +121,14 @@ fn reach_prints_the_sized_standoff_and_a_given_one_is_kept() {
     let line = reach(&[]);
     assert!(line.contains(&format!("{sized:.1} cm")), "{line}");
     assert!(line.contains("sized to the fitted space"), "{line}");
-    let line = reach(&["standoff=15"]);
+    let line = reach(&["standoff=16"]);
     assert!(
-        line.contains("15.0 cm") && line.contains("given: --set"),
+        line.contains("16.0 cm") && line.contains("given: --set"),
         "{line}"
     );
     let given = setup(Config {
-        standoff: 15.0,
+        standoff: 16.0,
         ..Config::default_config()
     });
-    assert_eq!(given.config.standoff, 15.0);
+    assert_eq!(given.config.standoff, 16.0);
 }

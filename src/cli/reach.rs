@@ -6,7 +6,7 @@ use crate::control::prelearning_moves;
 use crate::experiment::setup::{
     camera_model, fit_reach, fitted_boundaries, learned_ranges, load_arm, proposed_mount,
     reach_space, refuses_where_it_looks, size_readings_to_arm, size_standoff_to_arm,
-    BOUNDARY_MARGIN_DEG, MIN_SIZED_STANDOFF_CM,
+    BOUNDARY_MARGIN_DEG, FULL_STANDOFF_HEIGHT_CM, MIN_SIZED_STANDOFF_CM,
 };
 use crate::experiment::{
     contact_stopped_moves, fit_reach_space_to_arm, target_poses_in_contact, Config, PreflightError,
@@ -171,7 +171,7 @@ pub(super) fn reach(args: ReachArgs) -> Result<(), Failure> {
     say(&report)
 }
 
-/// The standoff and cz's upper boundary a run of this arm takes over `space`: sized to the
+/// The standoff and cz's boundaries a run of this arm takes over `space`: sized to the
 /// space where the config leaves them at their defaults on a fitted space of its own arm.
 fn standoff_line(
     config: &mut Config,
@@ -185,7 +185,7 @@ fn standoff_line(
     }
     let how = match config.source_of("standoff", sources) {
         Source::Fitted => format!(
-            "sized to the fitted space: the study's 20 cm times its height over the study's 52 cm, {MIN_SIZED_STANDOFF_CM}..20 cm; a run of this arm takes it unless the config gives its own"
+            "sized to the fitted space: the study's 20 cm times its height over {FULL_STANDOFF_HEIGHT_CM} cm, {MIN_SIZED_STANDOFF_CM}..20 cm; a run of this arm takes it unless the config gives its own"
         ),
         Source::Default => "the study's".to_string(),
         given => format!("given: {given}"),
@@ -195,8 +195,8 @@ fn standoff_line(
         space.z_max / M_PER_CM - config.standoff,
     );
     Ok(format!(
-        "standoff             {:.1} cm above the object's centre at the target ({how}): the object's centre at z {low:.1}..{high:.1} cm; cz's upper boundary {}",
-        config.standoff, config.boundary_4_high
+        "standoff             {:.1} cm above the object's centre at the target ({how}): the object's centre at z {low:.1}..{high:.1} cm; cz's boundaries {} {}",
+        config.standoff, config.boundary_4_low, config.boundary_4_high
     ))
 }
 

@@ -97,7 +97,10 @@ config_entries! {
     boundary_3_low: f64 = lin5().bounds[3].0, "pixels", BOUNDED, BOUNDARY;
     /// Input boundary 3 (cy), high end.
     boundary_3_high: f64 = lin5().bounds[3].1, "pixels", BOUNDED, BOUNDARY;
-    /// Input boundary 4 (cz, from the blob's area), low end.
+    /// Input boundary 4 (cz, from the blob's area), low end (both ends left at their
+    /// defaults on a URDF other than the shipped one: the high end scaled by its reach
+    /// space's height over the standoff, this end with it where the standoff is below 20 cm,
+    /// as `eyehand reach` prints).
     boundary_4_low: f64 = lin5().bounds[4].0, "", BOUNDED, BOUNDARY;
     /// Input boundary 4 (cz), high end.
     boundary_4_high: f64 = lin5().bounds[4].1, "", BOUNDED, BOUNDARY;

@@ -25,7 +25,8 @@ pub enum Source {
     /// Code that built the config itself (a test, a Python script), not a file or flag.
     Program,
     /// Worked out from the arm, for an entry left at its default on an arm other than
-    /// the shipped OSCAR-6 (`reach_space`, `boundary_0_*`, `boundary_1_*`).
+    /// the shipped OSCAR-6 (`reach_space`, `boundary_0_*`, `boundary_1_*`, `standoff`,
+    /// `boundary_4_*`).
     Fitted,
 }
 

@@ -24,7 +24,8 @@ pub use learners::{
 pub use mounts_tried::NoOtherMount;
 pub use other_mount::{proposed_mount, refused_where_it_looks, refuses_where_it_looks, OtherMount};
 pub use sizing::{
-    size_readings_to_arm, size_standoff_to_arm, sized_standoff_cm, MIN_SIZED_STANDOFF_CM,
+    size_readings_to_arm, size_standoff_to_arm, sized_standoff_cm, FULL_STANDOFF_HEIGHT_CM,
+    MIN_SIZED_STANDOFF_CM,
 };
 
 use super::{CameraKind, Config, ObstacleBox, SimKind};

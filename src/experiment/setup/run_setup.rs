@@ -86,7 +86,7 @@ impl RunSetup {
     /// left at their defaults that describe the OSCAR-6 are fitted to the arm instead:
     /// `reach_space` (to `auto`), the boundaries of θ2 and θ3 ([`fitted_boundaries`]), the
     /// `standoff` over a fitted space
-    /// ([`sized_standoff_cm`](crate::experiment::setup::sized_standoff_cm)) and the upper boundary of cz
+    /// ([`sized_standoff_cm`](crate::experiment::setup::sized_standoff_cm)) and the boundaries of cz
     /// ([`size_readings_to_arm`]). The run's start is checked with them.
     pub fn new(
         config: Config,

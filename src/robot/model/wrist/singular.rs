@@ -14,7 +14,7 @@ use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 /// which it is near its singularity (the xArm7's joint 6 within 2.9° of 0).
 const SINGULAR: f64 = 0.05;
 /// The tilt (rad) across its well-turned direction a wrist near its singularity may leave
-/// (0.006°: the xArm7's rounded URDF leaves up to 7·10⁻⁶ rad).
+/// (0.006°: the xArm7's URDF rounds π/2 by 3.7·10⁻⁶ rad at six joints).
 const LOOSE_RAD: f64 = 1e-4;
 
 /// What a two-joint wrist near its singularity does next.

@@ -3,7 +3,8 @@
 //! arm hold a pose under gravity, end a move where the kinematic model ends it (as do the
 //! UR5 and the xArm7 of the public collection, EYEHAND_ROBOT_DATA), and run lin5 trials;
 //! the SO-100, whose velocity limits lie below robot_speed, and the OSCAR-6, whose wrist
-//! follows two learned joints at once, keep every joint within its URDF velocity limit;
+//! follows two learned joints at once, keep every joint within its URDF velocity limit, as
+//! does the xArm7's two-joint wrist passing its singularity;
 //! lowering the Panda's hand (its seventh body) onto a box stops on it in both simulators.
 //! (The hand touching the Panda's own links is a unit test of the contact rule,
 //! robot/clearance.rs: no move that keeps the camera looking down brings it there within

@@ -3,7 +3,8 @@
 //! arm hold a pose under gravity, end a move where the kinematic model ends it (as do the
 //! UR5 and the xArm7 of the public collection, EYEHAND_ROBOT_DATA), and run lin5 trials;
 //! the SO-100, whose velocity limits lie below robot_speed, and the OSCAR-6, whose wrist
-//! follows two learned joints at once, keep every joint within its URDF velocity limit;
+//! follows two learned joints at once, keep every joint within its URDF velocity limit, as
+//! does the xArm7's two-joint wrist passing its singularity;
 //! lowering the Panda's hand (its seventh body) onto a box stops on it in both simulators.
 //! (The hand touching the Panda's own links is a unit test of the contact rule,
 //! robot/clearance.rs: no move that keeps the camera looking down brings it there within
@@ -269,4 +270,45 @@ fn lowering_the_panda_hand_onto_a_box_stops_on_it_in_both_simulators() {
         heights[0] > bare_height + 0.1,
         "{heights:?} against {bare_height}"
     );
+}
+
+#[test]
+fn the_xarm7_wrist_passes_its_singularity_within_its_velocity_limits() {
+    // The xArm7's joint 6 passes 0 where its forearm points straight down (θ2 close to θ4
+    // here, joint 3 held at 0): joints 5 and 6 then tilt the camera the same way, and the
+    // URDF's rounded rpy (1.5708 for π/2) leaves the arm a hair off planar. Solved exactly,
+    // joint 5 whirls by up to 180° within a few ticks of such a move or hops between its
+    // two solutions (these four moves: 2 speed faults, joint 5 at 227°/s against its
+    // 180°/s); near the singularity the wrist leaves the tilt across it (under 1e-4 rad)
+    // and joint 5 stays put.
+    let robots = robot_data().join("robots");
+    let config = Config::default_config();
+    let urdf = robots.join("xarm_description/urdf/xarm7.urdf");
+    let model = load_arm(&config, Some(&urdf)).unwrap().model;
+    let settings = DynamicSettings::default();
+    let mut kinematic = KinematicSim::new(model.clone(), settings.moves);
+    let mut dynamic = DynamicSim::new(model.clone(), settings);
+    let deg = |x: f64, y: f64, z: f64| Vector3::new(x, y, z).map(f64::to_radians);
+    let start = deg(78.0, 26.2, 27.0);
+    kinematic.place(&start).unwrap();
+    dynamic.place(&start).unwrap();
+    // Across θ2 = θ4 and back, at different base yaws.
+    for delta in [
+        deg(1.6, 0.02, -1.5),
+        deg(-20.0, 5.0, 12.0),
+        deg(10.0, -3.0, -15.0),
+        deg(-30.0, 3.0, 14.0),
+    ] {
+        let (planned, done) = (kinematic.execute(&delta), dynamic.execute(&delta));
+        assert!(done.settled, "{done:?}");
+        let off = (kinematic.joints() - dynamic.joints()).amax();
+        assert!(
+            off < 2.0 * settings.settle_position_tol,
+            "{planned:?} {done:?}"
+        );
+        let optical = kinematic.camera_pose().rotation * Vector3::z();
+        assert!(optical.z < -(1.0 - 0.5e-8), "tilted: {optical}");
+    }
+    let work = dynamic.work();
+    assert_eq!(work.speed_faults, 0, "{work:?}");
 }

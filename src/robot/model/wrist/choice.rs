@@ -93,8 +93,9 @@ impl Wrist {
     }
 
     /// How many of a grid of shoulder–elbow poses (the base yaw in the middle of its
-    /// limits) this wrist looks down at inside its limits, with its other joints at `rest`;
-    /// `trial` is the model, its rest angles and wrist set here.
+    /// limits) this wrist looks down at inside its limits, exactly even near a singularity
+    /// (its rest angles the start), with its other joints at `rest`; `trial` is the model,
+    /// its rest angles and wrist set here.
     fn score(&self, trial: &mut ArmModel, rest: &Joints) -> usize {
         trial.rest = *rest;
         trial.wrist = *self;
@@ -108,7 +109,10 @@ impl Wrist {
         for i in 0..SCORE_STEPS {
             for k in 0..SCORE_STEPS {
                 let theta = Controlled::new(middle.x, at(s, i), at(e, k));
-                if trial.wrist_fits(&trial.pose_of(&theta)) {
+                let level = trial.with_learned(&theta);
+                let frames = trial.link_frames(&level);
+                let pose = self.solve_as(trial, &theta, frames, &trial.rest, true);
+                if trial.wrist_fits(&pose) {
                     found += 1;
                 }
             }

@@ -9,6 +9,7 @@ mod choice;
 mod follow;
 mod look_down;
 mod newton;
+mod singular;
 
 pub(crate) use look_down::tilt_angle;
 
@@ -69,13 +70,29 @@ impl Wrist {
     }
 
     /// The pose for learned angles `theta`, given the joint frames `level_frames` with
-    /// every other joint at rest; a numerical wrist starts from the wrist angles of `near`.
+    /// every other joint at rest; a numerical wrist starts from the wrist angles of `near`
+    /// (and, near a two-joint wrist's singularity, looks down as far as it turns well:
+    /// singular.rs).
     pub(super) fn solve(
         &self,
         model: &ArmModel,
         theta: &Controlled,
         level_frames: Frames,
         near: &Joints,
+    ) -> ArmPose {
+        self.solve_as(model, theta, level_frames, near, false)
+    }
+
+    /// [`Wrist::solve`], a numerical wrist looking down within [`TOLERANCE_RAD`] even near
+    /// its singularity when `exact` (as the wrist is chosen: a joint turning about the
+    /// optical axis does not count as a wrist joint).
+    fn solve_as(
+        &self,
+        model: &ArmModel,
+        theta: &Controlled,
+        level_frames: Frames,
+        near: &Joints,
+        exact: bool,
     ) -> ArmPose {
         let mut joints = model.with_learned(theta);
         match *self {
@@ -122,10 +139,10 @@ impl Wrist {
                 for j in self.solved() {
                     joints[j] = near[j];
                 }
-                let mut flange = newton(model, self, &prefix, &mut joints);
+                let mut flange = newton(model, self, &prefix, &mut joints, exact);
                 if flange.is_none() && near != &model.rest {
                     joints = model.with_learned(theta);
-                    flange = newton(model, self, &prefix, &mut joints);
+                    flange = newton(model, self, &prefix, &mut joints, exact);
                 }
                 let found = flange.is_some();
                 if found {

@@ -1,6 +1,7 @@
 //! Newton steps on a numerical wrist's joints until the optical axis points straight down.
 
 use super::look_down::{tilt, tilting};
+use super::singular::{near_singular, NearSingular};
 use super::{Wrist, TOLERANCE_RAD};
 use crate::robot::model::{ArmModel, Joints};
 use nalgebra::{Isometry3, Matrix3, Vector3};
@@ -13,13 +14,15 @@ const MAX_STEP_RAD: f64 = 0.5;
 const DAMPING: f64 = 1e-12;
 
 /// Newton steps on the solved wrist joints of `q` until the optical axis points straight
-/// down; the flange's pose when it does. `prefix` is the frame before the first solved
+/// down (near a two-joint wrist's singularity, unless `exact`: as far as it turns it well,
+/// singular.rs); the flange's pose when it does. `prefix` is the frame before the first solved
 /// joint, which the wrist does not move.
 pub(super) fn newton(
     model: &ArmModel,
     wrist: &Wrist,
     prefix: &Isometry3<f64>,
     q: &mut Joints,
+    exact: bool,
 ) -> Option<Isometry3<f64>> {
     let Wrist::Numerical { joints, count } = *wrist else {
         return None;
@@ -46,6 +49,19 @@ pub(super) fn newton(
         let mut jacobian = Matrix3::zeros();
         for (s, axis) in axes.iter().enumerate().take(count) {
             jacobian.set_column(s, &tilting(axis, &optical));
+        }
+        if count == 2 && !exact {
+            match near_singular(&jacobian, &optical, &error) {
+                Some(NearSingular::Done) => return Some(pose),
+                Some(NearSingular::Step(step)) => {
+                    let scale = (MAX_STEP_RAD / step.amax()).min(1.0);
+                    for s in 0..2 {
+                        q[joints[s]] += step[s] * scale;
+                    }
+                    continue;
+                }
+                None => {}
+            }
         }
         // Damped least squares (unused columns are 0 and held by the damping).
         let normal = jacobian.transpose() * jacobian

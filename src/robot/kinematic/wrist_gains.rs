@@ -181,7 +181,8 @@ impl WristGains {
 /// aside, and its slopes at each sample) grown by [`SAMPLED_MARGIN`]. Where a two-joint
 /// wrist passes its singular poses between two samples (the side its two joints' tilts
 /// lie on turns over), the crossing is bisected [`CROSSING_BISECTIONS`] times, each half's
-/// turn taken: the wrist swings fastest there.
+/// turn taken: the wrist swings fastest there. Each wrist joint's turn is at least the
+/// second and third learned joints' turns together ([`drift_floor`]).
 fn sampled_turns(
     model: &ArmModel,
     start: &MoveStart,
@@ -221,7 +222,23 @@ fn sampled_turns(
         }
         last = Some((s, q, side));
     }
+    drift_floor(model, delta, &mut samples.turns);
     samples.turns
+}
+
+/// Raises each wrist joint's sampled turn in `turns` to at least the second and third
+/// learned joints' turns together (`delta`'s). Near a two-joint wrist's singular pose its
+/// weak joint drifts with the pose it is solved from (the tilt across it is left, up to
+/// `LOOSE_RAD`), which samples a piece apart cannot see: on the xArm7, 5 of 300 seeded
+/// moves turned joint 5 by 0.007–0.08 rad against a sampled 0.0001–0.003, each under half
+/// this floor.
+fn drift_floor(model: &ArmModel, delta: &Controlled, turns: &mut [f64; MAX_JOINTS]) {
+    let floor = delta.y.abs() + delta.z.abs();
+    for (k, turn) in turns.iter_mut().enumerate().take(model.dof()) {
+        if model.wrist().sets(k) {
+            *turn = turn.max(floor);
+        }
+    }
 }
 
 /// The wrist's turns found so far along a move (see [`sampled_turns`]).
@@ -503,14 +520,14 @@ mod tests {
     #[test]
     fn the_xarm7s_wrist_swinging_past_its_singular_pose_stays_within_its_sweep() {
         // The xArm7's wrist (its joints 5 and 6) sits near its singular pose, joint 5 at 0:
-        // where a move passes it, joint 5 swings at up to 97 rad per whole move for a
-        // hundredth of the move or two, between the samples a piece per 3.6° apart. The
-        // crossing's bisection finds the swing in all of the 19 of these 300 moves but one,
-        // whose joint 5 swings out and back within a piece (its sweep says 17.8).
+        // where a move passes it, the crossing's bisection finds the swing, and near it the
+        // weak joint's drift with the pose it is solved from stays under the second and
+        // third learned joints' turns together (drift_floor); without that floor 5 of
+        // these 300 moves turn joint 5 beyond their sampled sweep.
         let model = corpus_arm("xarm_description/urdf/xarm7.urdf");
         assert!(WristGains::new(&model).slope.is_none(), "linear");
         let (faster, outside) = beyond(&seeded_moves(&model, 300));
         assert!(faster > 15, "{faster} of 300 moves beyond θ2 + θ3");
-        assert!(outside <= 1, "{outside} of 300 moves beyond their sweep");
+        assert_eq!(outside, 0, "moves beyond their sweep");
     }
 }

@@ -16,9 +16,6 @@ pub const STILL_DEG: f64 = 0.001;
 /// The share of moves stopped by a contact from which a run that learned nothing names
 /// contacts as the likely cause.
 const MOSTLY_STOPPED: f64 = 0.5;
-/// The fewest last trials that must all have failed for a run to have learned nothing by
-/// its failures (a short run's window of one trial would judge it by its last alone).
-const MIN_FAILED_WINDOW: usize = 3;
 
 /// How a run learned nothing (`summary.json`'s `not_learned.kind`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -144,7 +141,6 @@ impl LearningWatch {
     /// The first of the ways to learn nothing that the run shows, in words.
     fn what_failed(&self, end: &RunEnd) -> Option<(NotLearnedKind, String)> {
         let window_start = self.window_start(end.window);
-        let failed_start = self.window_start(end.window.max(MIN_FAILED_WINDOW));
         if self.finished == 0 {
             Some((
                 NotLearnedKind::NoTrialFinished,
@@ -155,12 +151,12 @@ impl LearningWatch {
                 NotLearnedKind::EveryTrialFailed,
                 format!("all {} trials failed ({})", self.finished, end.failures),
             ))
-        } else if self.last_succeeded.is_none_or(|t| t < failed_start) {
+        } else if self.last_succeeded.is_none_or(|t| t < window_start) {
             Some((
                 NotLearnedKind::EveryTrialFailed,
                 format!(
                     "each of the last {} trials failed ({} of {} in all: {})",
-                    self.finished + 1 - failed_start,
+                    self.finished + 1 - window_start,
                     end.failures.total(),
                     self.finished,
                     end.failures
@@ -351,15 +347,6 @@ mod tests {
             "{verdict:?}"
         );
         assert!(verdict.reason.contains("lose the object"), "{verdict:?}");
-        // A short run's window of one trial: its last trial failing alone is no verdict.
-        assert_eq!(
-            watch.verdict(&end(&failures, 1)).map(|v| v.kind),
-            Some(NotLearnedKind::EveryTrialFailed)
-        );
-        watch.trial_done(6, &outcome(2.0, 2.0), &moving, 0.01);
-        watch.trial_done(7, &lost, &moving, 0.01);
-        failures.left_the_image = 4;
-        assert_eq!(watch.verdict(&end(&failures, 1)), None);
         assert_eq!(
             LearningWatch::default()
                 .verdict(&end(&failures, 1))

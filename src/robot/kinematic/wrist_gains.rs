@@ -8,8 +8,9 @@
 use super::pace::pieces;
 use crate::robot::contact::collision::MoveStart;
 use crate::robot::contact::reaches::Sweep;
+use crate::robot::model::tilting;
 use crate::robot::{ArmModel, Controlled, Joints, Wrist, MAX_JOINTS};
-use nalgebra::{Isometry3, Matrix3, Vector3};
+use nalgebra::{Matrix3, Vector3};
 use std::f64::consts::{PI, TAU};
 
 /// Probes per learned joint across its range ([`RevoluteJoint::one_turn`]): the wrist's
@@ -33,10 +34,9 @@ const LINEAR_MARGIN: f64 = 1e-6;
 /// sample) a wrist that does not follow linearly is taken to turn anywhere along a move.
 /// Against each move's wrist solved in 200 steps (300 seeded moves of up to 0.4 rad a
 /// joint, seed 1, the tests below): no turn beyond it on the SO-100, the UR5 or the shipped
-/// Panda; on the xArm7, with the crossings of its wrist's singular pose bisected
-/// ([`CROSSING_BISECTIONS`]), 1 move (of 19 that cross it) swings joint 5 out and back
-/// within a piece faster still, at 97 rad per whole move against 17.8 (without the
-/// bisection, 18 moves).
+/// Panda; on the xArm7 none with the crossings of its wrist's singular pose bisected
+/// ([`CROSSING_BISECTIONS`]) and the floor of [`drift_floor`] (without the floor, 5 moves
+/// whose joint 5 drifts near that pose).
 const SAMPLED_MARGIN: f64 = 1.5;
 /// How many times a piece in which the line of a move crosses its wrist's singular poses
 /// is halved toward the crossing.
@@ -85,10 +85,13 @@ impl WristGains {
             slope
         });
         let numerical = !matches!(model.wrist(), Wrist::OneJoint(_));
-        let grow = std::array::from_fn(|k| match numerical && model.wrist().sets(k) {
-            true => 1.0 + LINEAR_MARGIN,
-            false => 1.0,
-        });
+        let mut grow = [1.0; MAX_JOINTS];
+        if numerical {
+            model
+                .wrist()
+                .solved()
+                .for_each(|k| grow[k] = 1.0 + LINEAR_MARGIN);
+        }
         WristGains {
             slope,
             grow,
@@ -102,8 +105,8 @@ impl WristGains {
     /// added up, grown by [`LINEAR_MARGIN`] where the wrist is solved by Newton steps;
     /// another wrist's joint as fast as its samples show, in a piece per 3.6° of the lead
     /// joint (`pace::pieces`, a crossing of a two-joint wrist's singular pose bisected),
-    /// grown by [`SAMPLED_MARGIN`] — near the wrist's singular poses it may turn faster
-    /// still between them; a joint held at rest not at all.
+    /// grown by [`SAMPLED_MARGIN`] and at least the second and third learned joints' turns
+    /// together ([`drift_floor`]); a joint held at rest not at all.
     ///
     /// A wrist in closed form (one joint, [`Wrist::OneJoint`]) that is linear is its
     /// rest angle plus the learned pitch joints' angles, each signed (the OSCAR-6's
@@ -234,10 +237,8 @@ fn sampled_turns(
 /// this floor.
 fn drift_floor(model: &ArmModel, delta: &Controlled, turns: &mut [f64; MAX_JOINTS]) {
     let floor = delta.y.abs() + delta.z.abs();
-    for (k, turn) in turns.iter_mut().enumerate().take(model.dof()) {
-        if model.wrist().sets(k) {
-            *turn = turn.max(floor);
-        }
+    for k in model.wrist().solved() {
+        turns[k] = turns[k].max(floor);
     }
 }
 
@@ -271,7 +272,7 @@ impl Samples<'_> {
         let (slopes, side) = wrist_at(self.model, q);
         if let Some(slopes) = slopes {
             let d = self.delta;
-            for k in (0..self.model.dof()).filter(|&k| self.model.wrist().sets(k)) {
+            for k in self.model.wrist().solved() {
                 let s = slopes[k];
                 self.fastest(k, (s[0] * d[0] + s[1] * d[1] + s[2] * d[2]).abs());
             }
@@ -281,7 +282,7 @@ impl Samples<'_> {
 
     /// Takes each wrist joint's turn from `qa` at fraction `a` to `qb` at `b`.
     fn piece(&mut self, a: f64, qa: &Joints, b: f64, qb: &Joints) {
-        for k in (0..self.model.dof()).filter(|&k| self.model.wrist().sets(k)) {
+        for k in self.model.wrist().solved() {
             let turn = (qb[k] - qa[k] + PI).rem_euclid(TAU) - PI;
             self.fastest(k, turn.abs() / (b - a));
         }
@@ -351,16 +352,14 @@ fn slopes_at(model: &ArmModel, q: &Joints) -> Option<Slopes> {
 /// optical axis against the cross product of the two joints' tilts (its sign turns over
 /// where the line of a move passes its singular poses); NaN for another.
 fn wrist_at(model: &ArmModel, q: &Joints) -> (Option<Slopes>, f64) {
-    let mut pose = Isometry3::identity();
-    let mut axes = [Vector3::zeros(); MAX_JOINTS];
-    for (k, joint) in model.joints().iter().enumerate() {
-        pose *= joint.transform(q[k]);
-        axes[k] = pose.rotation * joint.axis.into_inner();
-    }
-    let optical = (pose * model.camera_mount()).rotation * Vector3::z();
-    let tilting = |k: usize| axes[k] - optical * optical.dot(&axes[k]);
+    let frames = model.link_frames(q);
+    let optical = (frames.last() * model.camera_mount()).rotation * Vector3::z();
+    let tilting = |k: usize| {
+        let axis = frames[k].rotation * model.joints()[k].axis.into_inner();
+        tilting(&axis, &optical)
+    };
     let (mut solved, mut count) = ([0; 3], 0);
-    for k in (0..model.dof()).filter(|&k| model.wrist().sets(k)).take(3) {
+    for k in model.wrist().solved().take(3) {
         solved[count] = k;
         count += 1;
     }
@@ -457,7 +456,7 @@ mod tests {
             if !pose.wrist_found {
                 return None;
             }
-            for k in (0..model.dof()).filter(|&k| model.wrist().sets(k)) {
+            for k in model.wrist().solved() {
                 let turn = (pose.joints[k] - before[k] + PI).rem_euclid(TAU) - PI;
                 fastest[k] = fastest[k].max(turn.abs() * STEPS as f64);
             }
@@ -506,13 +505,18 @@ mod tests {
         )
     }
 
+    /// [`beyond`] over 300 seeded moves of the collection's arm `urdf`, whose wrist does
+    /// not follow its learned joints linearly (its sweep is sampled).
+    fn sampled_beyond(urdf: &str) -> (usize, usize) {
+        let model = corpus_arm(urdf);
+        assert!(WristGains::new(&model).slope.is_none(), "linear");
+        beyond(&seeded_moves(&model, 300))
+    }
+
     #[test]
     fn a_wrist_joint_turning_faster_than_theta2_and_theta3_stays_within_its_sweep() {
-        // The SO-100's wrist (its joints 4 and 5, solved by Newton steps) does not follow
-        // its learned joints linearly: its sweep is sampled.
-        let model = corpus_arm("so_arm_description/urdf/so100.urdf");
-        assert!(WristGains::new(&model).slope.is_none(), "linear");
-        let (faster, outside) = beyond(&seeded_moves(&model, 300));
+        // The SO-100's wrist: its joints 4 and 5, solved by Newton steps.
+        let (faster, outside) = sampled_beyond("so_arm_description/urdf/so100.urdf");
         assert!(faster > 30, "{faster} of 300 moves beyond θ2 + θ3");
         assert_eq!(outside, 0, "moves beyond their sweep");
     }
@@ -524,9 +528,7 @@ mod tests {
         // weak joint's drift with the pose it is solved from stays under the second and
         // third learned joints' turns together (drift_floor); without that floor 5 of
         // these 300 moves turn joint 5 beyond their sampled sweep.
-        let model = corpus_arm("xarm_description/urdf/xarm7.urdf");
-        assert!(WristGains::new(&model).slope.is_none(), "linear");
-        let (faster, outside) = beyond(&seeded_moves(&model, 300));
+        let (faster, outside) = sampled_beyond("xarm_description/urdf/xarm7.urdf");
         assert!(faster > 15, "{faster} of 300 moves beyond θ2 + θ3");
         assert_eq!(outside, 0, "moves beyond their sweep");
     }

@@ -15,6 +15,7 @@ pub(crate) use branch::side_of;
 pub use branch::{Branch, Centre, PoseGrid};
 pub use build::{ArmSettings, BaseLink, CameraLink, LearnedJoints};
 pub use frames::Frames;
+pub(crate) use wrist::tilting;
 pub use wrist::Wrist;
 
 use super::RobotError;

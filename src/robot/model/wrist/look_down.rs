@@ -30,7 +30,7 @@ pub(crate) fn tilt_angle(camera: &Isometry3<f64>) -> f64 {
 }
 
 /// The part of a joint's turn about `axis` that tilts the optical axis `optical`.
-pub(super) fn tilting(axis: &Vector3<f64>, optical: &Vector3<f64>) -> Vector3<f64> {
+pub(crate) fn tilting(axis: &Vector3<f64>, optical: &Vector3<f64>) -> Vector3<f64> {
     axis - optical * optical.dot(axis)
 }
 

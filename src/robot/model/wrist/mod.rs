@@ -11,7 +11,7 @@ mod look_down;
 mod newton;
 mod singular;
 
-pub(crate) use look_down::tilt_angle;
+pub(crate) use look_down::{tilt_angle, tilting};
 
 use super::{ArmModel, ArmPose, Controlled, Frames, Joints};
 use nalgebra::{Isometry3, Vector3};
@@ -59,8 +59,8 @@ impl Wrist {
         self.solved().any(|j| j == joint)
     }
 
-    /// The joints this wrist sets.
-    fn solved(&self) -> impl Iterator<Item = usize> + '_ {
+    /// The joints this wrist sets, nearest the base first.
+    pub(crate) fn solved(&self) -> impl Iterator<Item = usize> + '_ {
         let (slice, count): (&[usize], usize) = match self {
             Wrist::None => (&[], 0),
             Wrist::OneJoint(j) => (std::slice::from_ref(j), 1),

@@ -4,8 +4,7 @@
 //! that is not finite, and none may run longer than its bound.
 
 use eyehand::experiment::{
-    declarations, run, Config, Declaration, NotLearnedKind, Rule, RunError, RunOptions, Scope,
-    SimKind,
+    declarations, run, Config, Declaration, NotLearnedKind, Rule, RunOptions, Scope, SimKind,
 };
 use eyehand::learn::Method;
 use rand::{Rng, SeedableRng};
@@ -121,13 +120,7 @@ fn non_finite_word(folder: &Path) -> Option<String> {
 /// Runs one case and says how it ended.
 fn run_case(name: &str, value: &str, config: Config, data: &Path) -> Outcome {
     match run(&RunOptions::new(config, data)) {
-        Err(
-            RunError::Preflight(_)
-            | RunError::Urdf(_)
-            | RunError::ArmEntry { .. }
-            | RunError::OtherMount { .. }
-            | RunError::NoOtherMount { .. },
-        ) => Outcome::RefusedUpFront,
+        Err(e) if e.refused_before_work() => Outcome::RefusedUpFront,
         Err(e) => {
             assert!(
                 !e.to_string().is_empty(),

@@ -3,9 +3,7 @@
 use super::{bad_input, failed, say, Failure};
 use crate::experiment::report::ReportOptions;
 use crate::experiment::show::TrialRange;
-use crate::experiment::{
-    self, CameraKind, Event, RunError, RunRequest, RunResult, SimKind, StopRequest,
-};
+use crate::experiment::{self, CameraKind, Event, RunRequest, RunResult, SimKind, StopRequest};
 use crate::learn::Method;
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -99,14 +97,9 @@ pub(super) fn run(args: RunArgs) -> Result<(), Failure> {
     let mut options = args.request()?.options().map_err(bad_input)?;
     let stop = StopRequest::on_signals().map_err(|e| failed(format!("signal handlers: {e}")))?;
     options.stop = stop.clone();
-    let result = experiment::run(&options).map_err(|e| match e {
-        RunError::Urdf(_)
-        | RunError::ArmEntry { .. }
-        | RunError::Preflight(_)
-        | RunError::OtherMount { .. }
-        | RunError::NoOtherMount { .. }
-        | RunError::Event { .. } => bad_input(e),
-        _ => failed(e),
+    let result = experiment::run(&options).map_err(|e| match e.refused_before_work() {
+        true => bad_input(e),
+        false => failed(e),
     })?;
     say(&format!("{}\n", result.folder.display()))?;
     if !quiet {

@@ -8,7 +8,7 @@ use crate::experiment::study::{
     sweep_plan, write_slurm_script, CellLauncher, CellRunError, CompareRequest, LocalRunEnd,
     Setting, SlurmOptions, StudyError, StudyFolder, StudyKind, StudyPlan,
 };
-use crate::experiment::{Event, RunError, StopRequest};
+use crate::experiment::{Event, StopRequest};
 use crate::learn::Method;
 use std::path::PathBuf;
 
@@ -176,14 +176,7 @@ fn run_one_cell(folder: &StudyFolder, index: usize, stop: StopRequest) -> Result
             }
         }
         Err(CellRunError::Study(e)) => Err(study_failure(e)),
-        Err(CellRunError::Run(
-            e @ (RunError::Urdf(_)
-            | RunError::ArmEntry { .. }
-            | RunError::Preflight(_)
-            | RunError::OtherMount { .. }
-            | RunError::NoOtherMount { .. }
-            | RunError::Event { .. }),
-        )) => Err(bad_input(e)),
+        Err(CellRunError::Run(e)) if e.refused_before_work() => Err(bad_input(e)),
         Err(e) => Err(failed(e)),
     }
 }

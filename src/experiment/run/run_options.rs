@@ -141,6 +141,23 @@ pub enum RunError {
     Plot(#[from] PlotError),
 }
 
+impl RunError {
+    /// True when the run was refused before any work, for its input: its URDF, an arm
+    /// entry, a check made before a run (with or without another camera mount to propose)
+    /// or an event the robot cannot undergo. The command line calls these bad input.
+    pub fn refused_before_work(&self) -> bool {
+        matches!(
+            self,
+            RunError::Urdf(_)
+                | RunError::ArmEntry { .. }
+                | RunError::Preflight(_)
+                | RunError::OtherMount { .. }
+                | RunError::NoOtherMount { .. }
+                | RunError::Event { .. }
+        )
+    }
+}
+
 /// A finished run: where its files are, and its summary.
 #[derive(Debug, Clone)]
 pub struct RunResult {
